@@ -1,0 +1,59 @@
+/**************************************************************************/
+/*  png_writer.cpp                                                        */
+/**************************************************************************/
+/* godot-area: 8-bit RGBA PNG writer (libpng simplified API).             */
+
+#include "drivers/png/png_writer.h"
+
+#include "core/error/error_macros.h"
+
+#include <png.h>
+
+#include <cstring>
+
+static bool _png_write_fail(String *r_error, const String &p_message) {
+	if (r_error) {
+		*r_error = p_message;
+	}
+	ERR_PRINT(p_message);
+	return false;
+}
+
+bool PNGWriter::save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, const String &p_path, String *r_error) {
+	if (p_path.empty()) {
+		return _png_write_fail(r_error, "Cannot write PNG: the file path is empty.");
+	}
+	if (p_width <= 0 || p_height <= 0) {
+		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": image size %dx%d is empty or negative.", p_path.c_str(), p_width, p_height));
+	}
+	const size_t expected = (size_t)p_width * (size_t)p_height * 4;
+	if (p_rgba8.size() != expected) {
+		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": %dx%d RGBA needs %zu bytes, got %zu.", p_path.c_str(), p_width, p_height, expected, p_rgba8.size()));
+	}
+
+	png_image image;
+	std::memset(&image, 0, sizeof(image));
+	image.version = PNG_IMAGE_VERSION;
+	image.width = (png_uint_32)p_width;
+	image.height = (png_uint_32)p_height;
+	image.format = PNG_FORMAT_RGBA; // 8-bit, sRGB-encoded.
+	const int ok = png_image_write_to_file(&image, p_path.c_str(), 0, p_rgba8.data(), 0, nullptr);
+	if (!ok) {
+		const String reason = image.message[0] ? String(image.message) : String("unknown libpng error");
+		png_image_free(&image);
+		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": %s.", p_path.c_str(), reason.c_str()));
+	}
+	png_image_free(&image);
+	return true;
+}
+
+bool PNGWriter::save(const Image &p_image, const String &p_path, String *r_error, float p_exposure_ev, Tonemap::Mode p_mode) {
+	if (p_image.is_empty()) {
+		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": the image is empty.", p_path.c_str()));
+	}
+	const std::vector<uint8_t> bytes = Tonemap::apply(p_image, p_exposure_ev, p_mode);
+	if (bytes.empty()) {
+		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": tonemapping failed.", p_path.c_str()));
+	}
+	return save_rgba8(bytes, p_image.get_width(), p_image.get_height(), p_path, r_error);
+}
