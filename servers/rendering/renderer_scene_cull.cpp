@@ -1,0 +1,406 @@
+/**************************************************************************/
+/*  renderer_scene_cull.cpp                                               */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_scene_cull.h"
+
+#include "core/error/error_macros.h"
+#include "servers/rendering/rendering_server_globals.h"
+#include "servers/rendering/storage/environment_storage.h"
+#include "servers/rendering/storage/light_storage.h"
+#include "servers/rendering/storage/material_storage.h"
+#include "servers/rendering/storage/mesh_storage.h"
+
+#include <algorithm>
+#include <cmath>
+
+/* BOUNDS */
+
+bool RendererSceneCull::is_sphere_culled(const std::vector<Plane> &p_planes, const Vector3 &p_center, real_t p_radius) {
+	for (const Plane &plane : p_planes) {
+		if (plane.distance_to(p_center) > p_radius) {
+			return true;
+		}
+	}
+	return false;
+}
+
+bool RendererSceneCull::is_cone_culled(const std::vector<Plane> &p_planes, const Vector3 &p_apex, const Vector3 &p_axis, real_t p_range, real_t p_angle_degrees) {
+	// The lit volume of a spot is a spherical sector: points apex + s * u with s in [0, range] and u within
+	// the half-angle theta of the axis. Against an outward plane with normal n, its smallest signed distance is
+	//   distance(apex) + range * min(0, min_u n.u),  min_u n.u = cos(min(pi, alpha + theta)),  alpha = angle(n, axis),
+	// because the direction in the cap farthest from n is rotated from the axis towards -n by at most theta.
+	// The sector is outside when that minimum is still positive. Exact per plane, so it is as tight as
+	// plane-by-plane testing allows (tighter than both the range sphere and the cone's AABB).
+	const real_t theta = Math::deg_to_rad(std::fmin(std::fmax(p_angle_degrees, real_t(0)), real_t(180)));
+	for (const Plane &plane : p_planes) {
+		const real_t cos_alpha = Math::clamp(plane.normal.dot(p_axis), real_t(-1), real_t(1));
+		const real_t extent = std::acos(cos_alpha) + theta;
+		const real_t min_dot = extent >= real_t(Math::PI) ? real_t(-1) : std::cos(extent);
+		const real_t min_distance = plane.distance_to(p_apex) + p_range * std::fmin(real_t(0), min_dot);
+		if (min_distance > real_t(CMP_EPSILON)) {
+			return true;
+		}
+	}
+	return false;
+}
+
+/* CAMERA */
+
+RID RendererSceneCull::camera_allocate() {
+	return camera_owner.make_rid();
+}
+
+void RendererSceneCull::camera_set_perspective(RID p_camera, float p_fovy_degrees, float p_z_near, float p_z_far) {
+	Camera *camera = camera_owner.get_or_null(p_camera);
+	ERR_FAIL_NULL_MSG(camera, "Invalid camera RID.");
+	ERR_FAIL_COND_MSG(!std::isfinite(p_fovy_degrees) || p_fovy_degrees <= 0.0f || p_fovy_degrees >= 180.0f,
+			vformat("Camera field of view must be between 0 and 180 degrees (exclusive), got %s.", rtos(p_fovy_degrees).c_str()));
+	ERR_FAIL_COND_MSG(!std::isfinite(p_z_near) || !std::isfinite(p_z_far) || p_z_near <= 0.0f || p_z_far <= p_z_near,
+			vformat("Camera planes must satisfy 0 < near < far, got near %s, far %s.", rtos(p_z_near).c_str(), rtos(p_z_far).c_str()));
+	camera->fovy_degrees = p_fovy_degrees;
+	camera->z_near = p_z_near;
+	camera->z_far = p_z_far;
+}
+
+void RendererSceneCull::camera_set_transform(RID p_camera, const Transform3D &p_transform) {
+	Camera *camera = camera_owner.get_or_null(p_camera);
+	ERR_FAIL_NULL_MSG(camera, "Invalid camera RID.");
+	ERR_FAIL_COND_MSG(!p_transform.is_finite(), "Camera transform must be finite.");
+	camera->transform = p_transform;
+}
+
+void RendererSceneCull::camera_set_cull_mask(RID p_camera, uint32_t p_layers) {
+	Camera *camera = camera_owner.get_or_null(p_camera);
+	ERR_FAIL_NULL_MSG(camera, "Invalid camera RID.");
+	camera->cull_mask = p_layers;
+}
+
+void RendererSceneCull::camera_set_environment(RID p_camera, RID p_env) {
+	Camera *camera = camera_owner.get_or_null(p_camera);
+	ERR_FAIL_NULL_MSG(camera, "Invalid camera RID.");
+	ERR_FAIL_COND_MSG(p_env.is_valid() && !(RSG::environment_storage && RSG::environment_storage->is_environment(p_env)), "Invalid environment RID.");
+	camera->environment = p_env;
+}
+
+/* SCENARIO */
+
+RID RendererSceneCull::scenario_allocate() {
+	return scenario_owner.make_rid();
+}
+
+void RendererSceneCull::scenario_set_environment(RID p_scenario, RID p_env) {
+	Scenario *scenario = scenario_owner.get_or_null(p_scenario);
+	ERR_FAIL_NULL_MSG(scenario, "Invalid scenario RID.");
+	ERR_FAIL_COND_MSG(p_env.is_valid() && !(RSG::environment_storage && RSG::environment_storage->is_environment(p_env)), "Invalid environment RID.");
+	scenario->environment = p_env;
+}
+
+int RendererSceneCull::scenario_get_instance_count(RID p_scenario) const {
+	const Scenario *scenario = scenario_owner.get_or_null(p_scenario);
+	ERR_FAIL_NULL_V_MSG(scenario, 0, "Invalid scenario RID.");
+	return (int)scenario->instances.size();
+}
+
+void RendererSceneCull::_scenario_remove_instance(RID p_scenario, RID p_instance) {
+	Scenario *scenario = scenario_owner.get_or_null(p_scenario);
+	if (!scenario) {
+		return;
+	}
+	std::vector<RID> &list = scenario->instances;
+	list.erase(std::remove(list.begin(), list.end(), p_instance), list.end());
+}
+
+/* INSTANCE */
+
+RID RendererSceneCull::instance_allocate() {
+	return instance_owner.make_rid();
+}
+
+void RendererSceneCull::instance_set_base(RID p_instance, RID p_base) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	if (p_base.is_null()) {
+		instance->base = RID();
+		instance->base_type = RS::INSTANCE_NONE;
+		return;
+	}
+	if (RSG::mesh_storage && RSG::mesh_storage->owns_mesh(p_base)) {
+		instance->base_type = RS::INSTANCE_MESH;
+	} else if (RSG::light_storage && RSG::light_storage->owns_light(p_base)) {
+		instance->base_type = RS::INSTANCE_LIGHT;
+	} else {
+		ERR_FAIL_MSG("Instance base must be a mesh or a light RID; the base is unchanged.");
+	}
+	instance->base = p_base;
+}
+
+void RendererSceneCull::instance_set_scenario(RID p_instance, RID p_scenario) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	if (instance->scenario == p_scenario) {
+		return;
+	}
+	if (p_scenario.is_valid()) {
+		Scenario *scenario = scenario_owner.get_or_null(p_scenario);
+		ERR_FAIL_NULL_MSG(scenario, "Invalid scenario RID.");
+		_scenario_remove_instance(instance->scenario, p_instance);
+		scenario->instances.push_back(p_instance);
+	} else {
+		_scenario_remove_instance(instance->scenario, p_instance);
+	}
+	instance->scenario = p_scenario;
+}
+
+void RendererSceneCull::instance_set_transform(RID p_instance, const Transform3D &p_transform) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	ERR_FAIL_COND_MSG(!p_transform.is_finite(), "Instance transform must be finite; the old transform is kept.");
+	instance->transform = p_transform;
+}
+
+void RendererSceneCull::instance_set_visible(RID p_instance, bool p_visible) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	instance->visible = p_visible;
+}
+
+void RendererSceneCull::instance_set_layer_mask(RID p_instance, uint32_t p_mask) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	instance->layer_mask = p_mask;
+}
+
+void RendererSceneCull::instance_geometry_set_material_override(RID p_instance, RID p_material) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	ERR_FAIL_COND_MSG(p_material.is_valid() && !(RSG::material_storage && RSG::material_storage->owns_material(p_material)), "Invalid material RID for the material override.");
+	instance->material_override = p_material;
+}
+
+AABB RendererSceneCull::_instance_get_world_aabb(const Instance &p_instance) const {
+	switch (p_instance.base_type) {
+		case RS::INSTANCE_MESH:
+			if (RSG::mesh_storage && RSG::mesh_storage->owns_mesh(p_instance.base)) {
+				return p_instance.transform.xform(RSG::mesh_storage->mesh_get_aabb(p_instance.base));
+			}
+			break;
+		case RS::INSTANCE_LIGHT:
+			if (RSG::light_storage && RSG::light_storage->owns_light(p_instance.base) && RSG::light_storage->light_get_type(p_instance.base) != RS::LIGHT_DIRECTIONAL) {
+				return p_instance.transform.xform(RSG::light_storage->light_get_aabb(p_instance.base));
+			}
+			break;
+		case RS::INSTANCE_NONE:
+			break;
+	}
+	return AABB();
+}
+
+AABB RendererSceneCull::instance_get_aabb(RID p_instance) const {
+	const Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_V_MSG(instance, AABB(), "Invalid instance RID.");
+	return _instance_get_world_aabb(*instance);
+}
+
+RS::InstanceType RendererSceneCull::instance_get_base_type(RID p_instance) const {
+	const Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_V_MSG(instance, RS::INSTANCE_NONE, "Invalid instance RID.");
+	return instance->base_type;
+}
+
+/* LIFETIME */
+
+bool RendererSceneCull::free(RID p_rid) {
+	if (Instance *instance = instance_owner.get_or_null(p_rid)) {
+		_scenario_remove_instance(instance->scenario, p_rid);
+		instance_owner.free(p_rid);
+		return true;
+	}
+	if (camera_owner.owns(p_rid)) {
+		camera_owner.free(p_rid);
+		return true;
+	}
+	if (Scenario *scenario = scenario_owner.get_or_null(p_rid)) {
+		for (const RID &rid : scenario->instances) {
+			if (Instance *instance = instance_owner.get_or_null(rid)) {
+				instance->scenario = RID();
+			}
+		}
+		scenario_owner.free(p_rid);
+		return true;
+	}
+	return false;
+}
+
+void RendererSceneCull::notify_base_freed(RID p_base) {
+	for (const RID &rid : instance_owner.get_owned_list()) {
+		Instance *instance = instance_owner.get_or_null(rid);
+		if (instance && instance->base == p_base) {
+			instance->base = RID();
+			instance->base_type = RS::INSTANCE_NONE;
+		}
+		if (instance && instance->material_override == p_base) {
+			instance->material_override = RID();
+		}
+	}
+}
+
+void RendererSceneCull::notify_environment_freed(RID p_env) {
+	for (const RID &rid : camera_owner.get_owned_list()) {
+		Camera *camera = camera_owner.get_or_null(rid);
+		if (camera && camera->environment == p_env) {
+			camera->environment = RID();
+		}
+	}
+	for (const RID &rid : scenario_owner.get_owned_list()) {
+		Scenario *scenario = scenario_owner.get_or_null(rid);
+		if (scenario && scenario->environment == p_env) {
+			scenario->environment = RID();
+		}
+	}
+}
+
+/* CULLING */
+
+void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_env, const Color &p_default_clear, RenderSceneData::EnvironmentData &r_env) const {
+	r_env = RenderSceneData::EnvironmentData();
+	r_env.bg_color = p_default_clear;
+	const RendererEnvironmentStorage::Environment *env = nullptr;
+	if (RSG::environment_storage) {
+		env = RSG::environment_storage->environment_get(p_camera_env);
+		if (!env) {
+			env = RSG::environment_storage->environment_get(p_scenario_env);
+		}
+	}
+	if (!env) {
+		return; // Default clear colour, no ambient light.
+	}
+	r_env.has_environment = true;
+	switch (env->background) {
+		case RS::ENV_BG_COLOR:
+			r_env.background = RS::ENV_BG_COLOR;
+			r_env.bg_color = env->bg_color;
+			break;
+		case RS::ENV_BG_CLEAR_COLOR:
+			break;
+		default:
+			WARN_PRINT_ONCE("Only the CLEAR_COLOR and COLOR environment backgrounds are supported; using the default clear colour.");
+			break;
+	}
+	r_env.bg_energy = env->bg_energy;
+	r_env.ambient_source = env->ambient_source;
+	switch (env->ambient_source) {
+		case RS::ENV_AMBIENT_SOURCE_BG:
+			// With a colour background, the background lights the scene (colour times background energy).
+			r_env.ambient_color = r_env.bg_color;
+			r_env.ambient_energy = r_env.bg_energy;
+			break;
+		case RS::ENV_AMBIENT_SOURCE_COLOR:
+			r_env.ambient_color = env->ambient_color;
+			r_env.ambient_energy = env->ambient_energy;
+			break;
+		case RS::ENV_AMBIENT_SOURCE_SKY:
+			WARN_PRINT_ONCE("Sky ambient light is not supported; ambient light is disabled.");
+			r_env.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
+			break;
+		case RS::ENV_AMBIENT_SOURCE_DISABLED:
+			break;
+	}
+	if (r_env.ambient_source == RS::ENV_AMBIENT_SOURCE_DISABLED) {
+		r_env.ambient_color = Color(0, 0, 0, 1);
+		r_env.ambient_energy = 0.0f;
+	}
+}
+
+bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RenderSceneData &r_data) {
+	last_stats = CullStats();
+	const Camera *camera = camera_owner.get_or_null(p_camera);
+	ERR_FAIL_NULL_V_MSG(camera, false, "Invalid camera RID.");
+	const Scenario *scenario = scenario_owner.get_or_null(p_scenario);
+	ERR_FAIL_NULL_V_MSG(scenario, false, "Invalid scenario RID.");
+	ERR_FAIL_COND_V_MSG(p_width <= 0 || p_height <= 0, false, vformat("Viewport size %dx%d is invalid.", p_width, p_height));
+
+	r_data = RenderSceneData();
+	r_data.cam_transform = camera->transform;
+	r_data.cam_projection = Projection::create_perspective(camera->fovy_degrees, real_t(p_width) / real_t(p_height), camera->z_near, camera->z_far);
+	r_data.z_near = camera->z_near;
+	r_data.z_far = camera->z_far;
+	r_data.fovy_degrees = camera->fovy_degrees;
+	r_data.viewport_width = p_width;
+	r_data.viewport_height = p_height;
+	r_data.camera_cull_mask = camera->cull_mask;
+	_resolve_environment(camera->environment, scenario->environment, p_default_clear_color, r_data.environment);
+
+	const std::vector<Plane> planes = r_data.cam_projection.get_projection_planes(camera->transform);
+
+	for (const RID &rid : scenario->instances) {
+		const Instance *instance = instance_owner.get_or_null(rid);
+		if (!instance || !instance->visible) {
+			continue;
+		}
+		if (instance->base_type == RS::INSTANCE_MESH) {
+			if (!RSG::mesh_storage || !RSG::mesh_storage->owns_mesh(instance->base)) {
+				continue;
+			}
+			if ((instance->layer_mask & camera->cull_mask) == 0) {
+				continue;
+			}
+			const AABB aabb = _instance_get_world_aabb(*instance);
+			if (!aabb.intersects_convex_shape(planes)) {
+				last_stats.geometry_culled++;
+				continue;
+			}
+			RenderSceneData::GeometryInstance geometry;
+			geometry.instance = rid;
+			geometry.mesh = instance->base;
+			geometry.material_override = (RSG::material_storage && RSG::material_storage->owns_material(instance->material_override)) ? instance->material_override : RID();
+			geometry.transform = instance->transform;
+			geometry.aabb = aabb;
+			geometry.layer_mask = instance->layer_mask;
+			r_data.geometry.push_back(geometry);
+			last_stats.geometry_visible++;
+		} else if (instance->base_type == RS::INSTANCE_LIGHT) {
+			if (!RSG::light_storage || !RSG::light_storage->owns_light(instance->base)) {
+				continue;
+			}
+			RenderSceneData::LightInstance light;
+			light.instance = rid;
+			light.light = instance->base;
+			light.type = RSG::light_storage->light_get_type(instance->base);
+			light.transform = instance->transform;
+			if (light.type == RS::LIGHT_DIRECTIONAL) {
+				r_data.directional_lights.push_back(light);
+				last_stats.directional_lights++;
+				continue;
+			}
+			light.aabb = _instance_get_world_aabb(*instance);
+			const Vector3 scale = instance->transform.basis.get_scale();
+			const real_t range = RSG::light_storage->light_get_param(instance->base, RS::LIGHT_PARAM_RANGE) * std::fmax(scale.x, std::fmax(scale.y, scale.z));
+			bool culled;
+			if (light.type == RS::LIGHT_OMNI) {
+				culled = is_sphere_culled(planes, instance->transform.origin, range);
+			} else {
+				const Vector3 axis = (-instance->transform.basis.get_column(2)).normalized();
+				const real_t angle = RSG::light_storage->light_get_param(instance->base, RS::LIGHT_PARAM_SPOT_ANGLE);
+				culled = is_cone_culled(planes, instance->transform.origin, axis, range, angle);
+			}
+			if (culled) {
+				last_stats.lights_culled++;
+				continue;
+			}
+			r_data.lights.push_back(light);
+			last_stats.lights_visible++;
+		}
+	}
+	return true;
+}
+
+void RendererSceneCull::render_camera(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RS::ViewportDebugDraw p_debug_draw, RID p_render_target) {
+	ERR_FAIL_NULL_MSG(RSG::scene_render, "No scene renderer is set up.");
+	RenderSceneData data;
+	if (!build_render_scene_data(p_camera, p_scenario, p_width, p_height, p_default_clear_color, data)) {
+		return;
+	}
+	data.debug_draw = p_debug_draw;
+	RSG::scene_render->render_scene(data, p_render_target);
+}

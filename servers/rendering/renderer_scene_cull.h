@@ -1,0 +1,132 @@
+/**************************************************************************/
+/*  renderer_scene_cull.h                                                 */
+/**************************************************************************/
+/* godot-area: scenarios, cameras and instances, and per-viewport frustum */
+/* culling (Godot's RendererSceneCull, reduced: no BVH, no light/geometry */
+/* pairing). Bounds are recomputed from storage on every cull, so storage */
+/* changes (mesh surfaces, light range/angle) need no dependency tracking.*/
+/* Geometry is culled by its world AABB; omni lights by their range      */
+/* sphere; spot lights by the exact spherical-sector (cone) bound;       */
+/* directional lights are never culled.                                  */
+
+#pragma once
+
+#include "core/templates/rid_owner.h"
+#include "servers/rendering/renderer_scene_render.h"
+
+class RendererSceneCull {
+public:
+	struct Camera {
+		float fovy_degrees = 75.0f; // Godot's Camera3D defaults.
+		float z_near = 0.05f;
+		float z_far = 4000.0f;
+		Transform3D transform; // world_from_view.
+		uint32_t cull_mask = 0xFFFFF;
+		RID environment;
+	};
+
+	struct Scenario {
+		RID environment;
+		std::vector<RID> instances; // Insertion order (kept deterministic for tests and rendering).
+	};
+
+	struct Instance {
+		RS::InstanceType base_type = RS::INSTANCE_NONE;
+		RID base;
+		RID scenario;
+		Transform3D transform; // world_from_object.
+		bool visible = true;
+		uint32_t layer_mask = 1;
+		RID material_override;
+	};
+
+	// Counters of the last build_render_scene_data() call.
+	struct CullStats {
+		int geometry_visible = 0;
+		int geometry_culled = 0; // Outside the frustum (hidden or layer-masked instances are not counted).
+		int lights_visible = 0; // Omni and spot lights.
+		int lights_culled = 0;
+		int directional_lights = 0;
+	};
+
+private:
+	RID_Owner<Camera, true> camera_owner{ "Camera" };
+	RID_Owner<Scenario, true> scenario_owner{ "Scenario" };
+	RID_Owner<Instance, true> instance_owner{ "Instance" };
+	CullStats last_stats;
+
+	void _scenario_remove_instance(RID p_scenario, RID p_instance);
+	AABB _instance_get_world_aabb(const Instance &p_instance) const;
+	void _resolve_environment(RID p_camera_env, RID p_scenario_env, const Color &p_default_clear, RenderSceneData::EnvironmentData &r_env) const;
+
+public:
+	// Returns true when a sphere lies completely outside one of the (outward-facing) planes.
+	static bool is_sphere_culled(const std::vector<Plane> &p_planes, const Vector3 &p_center, real_t p_radius);
+	// Returns true when a spherical sector (cone of half-angle p_angle_degrees around unit p_axis,
+	// apex p_apex, capped at p_range) lies completely outside one of the planes.
+	static bool is_cone_culled(const std::vector<Plane> &p_planes, const Vector3 &p_apex, const Vector3 &p_axis, real_t p_range, real_t p_angle_degrees);
+
+	/* CAMERA */
+	// Creates a camera with Camera3D defaults.
+	RID camera_allocate();
+	// Sets a perspective projection (validated: 0 < fov < 180, 0 < near < far).
+	void camera_set_perspective(RID p_camera, float p_fovy_degrees, float p_z_near, float p_z_far);
+	// Sets world_from_view.
+	void camera_set_transform(RID p_camera, const Transform3D &p_transform);
+	// Sets the visible layers.
+	void camera_set_cull_mask(RID p_camera, uint32_t p_layers);
+	// Sets the camera environment override.
+	void camera_set_environment(RID p_camera, RID p_env);
+	// Returns true if p_rid is a camera.
+	bool is_camera(RID p_rid) const { return camera_owner.owns(p_rid); }
+
+	/* SCENARIO */
+	// Creates an empty scenario.
+	RID scenario_allocate();
+	// Sets the scenario environment.
+	void scenario_set_environment(RID p_scenario, RID p_env);
+	// Returns true if p_rid is a scenario.
+	bool is_scenario(RID p_rid) const { return scenario_owner.owns(p_rid); }
+	// Returns the number of instances in a scenario (0 if invalid).
+	int scenario_get_instance_count(RID p_scenario) const;
+
+	/* INSTANCE */
+	// Creates an instance with no base and no scenario.
+	RID instance_allocate();
+	// Sets the base (mesh or light RID of the current storages, or RID()).
+	void instance_set_base(RID p_instance, RID p_base);
+	// Moves the instance to a scenario (RID() removes it).
+	void instance_set_scenario(RID p_instance, RID p_scenario);
+	// Sets world_from_object.
+	void instance_set_transform(RID p_instance, const Transform3D &p_transform);
+	// Shows or hides.
+	void instance_set_visible(RID p_instance, bool p_visible);
+	// Sets render layers.
+	void instance_set_layer_mask(RID p_instance, uint32_t p_mask);
+	// Sets the material override.
+	void instance_geometry_set_material_override(RID p_instance, RID p_material);
+	// Returns the world AABB of the base (empty if none or directional).
+	AABB instance_get_aabb(RID p_instance) const;
+	// Returns the base type.
+	RS::InstanceType instance_get_base_type(RID p_instance) const;
+	// Returns true if p_rid is an instance.
+	bool is_instance(RID p_rid) const { return instance_owner.owns(p_rid); }
+
+	/* LIFETIME */
+	// Frees a camera, scenario or instance; returns false if p_rid is none of them.
+	// A freed scenario releases its instances (they stay alive, with no scenario).
+	bool free(RID p_rid);
+	// Detaches a freed base (mesh/light) from every instance that used it.
+	void notify_base_freed(RID p_base);
+	// Removes a freed environment from every camera and scenario that used it.
+	void notify_environment_freed(RID p_env);
+
+	/* CULLING */
+	// Culls p_scenario for p_camera at a p_width x p_height viewport and fills r_data.
+	// Returns false (with an error) for invalid RIDs or sizes.
+	bool build_render_scene_data(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RenderSceneData &r_data);
+	// Culls, then calls RSG::scene_render->render_scene() into p_render_target.
+	void render_camera(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RS::ViewportDebugDraw p_debug_draw, RID p_render_target);
+	// Counters of the last cull (tests read them).
+	const CullStats &get_last_cull_stats() const { return last_stats; }
+};

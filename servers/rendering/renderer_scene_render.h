@@ -1,0 +1,83 @@
+/**************************************************************************/
+/*  renderer_scene_render.h                                               */
+/**************************************************************************/
+/* godot-area: the abstract 3D renderer (Godot's RendererSceneRender) and */
+/* RenderSceneData, everything RendererSceneCull hands it for one camera  */
+/* and one frame. The Vulkan renderer (renderer_rd) and the dummy         */
+/* renderer implement it.                                                 */
+
+#pragma once
+
+#include "core/math/projection.h"
+#include "servers/rendering_server.h"
+
+// One frame of one viewport, after culling. Mesh and light RIDs refer to storage objects that are
+// alive during render_scene(). material_override is already checked (RID() = none); surface
+// materials read from mesh storage are not, so check owns_material() and use a default material.
+struct RenderSceneData {
+	// A visible mesh instance.
+	struct GeometryInstance {
+		RID instance; // Scene-cull instance RID (stable key for per-instance caches).
+		RID mesh; // Mesh storage RID.
+		RID material_override; // RID() when none.
+		Transform3D transform; // world_from_object.
+		AABB aabb; // World-space bound.
+		uint32_t layer_mask = 1; // Matched against light cull masks.
+	};
+
+	// A visible light (directional lights are never culled).
+	struct LightInstance {
+		RID instance; // Scene-cull instance RID.
+		RID light; // Light storage RID (read parameters from RSG::light_storage).
+		RS::LightType type = RS::LIGHT_OMNI;
+		Transform3D transform; // world_from_light; the light shines along its local -Z.
+		AABB aabb; // World-space bound (empty for directional lights).
+	};
+
+	// Background and ambient after resolving scenario/camera environments (camera wins).
+	// Colours are sRGB (node values) and energies are multipliers; the renderer linearises once.
+	struct EnvironmentData {
+		bool has_environment = false; // False: default clear colour, no ambient.
+		RS::EnvironmentBG background = RS::ENV_BG_CLEAR_COLOR;
+		Color bg_color = Color(0.3f, 0.3f, 0.3f, 1); // Resolved: default clear colour for CLEAR_COLOR.
+		float bg_energy = 1.0f;
+		RS::EnvironmentAmbientSource ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
+		Color ambient_color = Color(0, 0, 0, 1); // Resolved: for source BG, the background colour.
+		float ambient_energy = 0.0f; // Resolved: 0 when ambient is disabled.
+	};
+
+	Transform3D cam_transform; // world_from_view (camera-to-world).
+	Projection cam_projection; // OpenGL clip space; the RD renderer applies create_depth_correction().
+	float z_near = 0.05f;
+	float z_far = 4000.0f;
+	float fovy_degrees = 75.0f;
+	int viewport_width = 0;
+	int viewport_height = 0;
+	uint32_t camera_cull_mask = 0xFFFFF;
+	RS::ViewportDebugDraw debug_draw = RS::VIEWPORT_DEBUG_DRAW_DISABLED;
+
+	std::vector<GeometryInstance> geometry; // Visible geometry, scenario order.
+	std::vector<LightInstance> directional_lights; // All visible directional lights.
+	std::vector<LightInstance> lights; // Omni and spot lights that passed frustum culling.
+	EnvironmentData environment;
+};
+
+class RendererSceneRender {
+public:
+	// Renders p_data into p_render_target (the image readable with render_target_get_data()).
+	virtual void render_scene(const RenderSceneData &p_data, RID p_render_target) = 0;
+	// Creates an offscreen float RGBA render target of p_width x p_height (RID() on bad sizes).
+	virtual RID render_target_create(int p_width, int p_height) = 0;
+	// Frees a render target; returns false if p_rid is not one.
+	virtual bool render_target_free(RID p_rid) = 0;
+	// Returns true if p_rid is a render target of this renderer.
+	virtual bool owns_render_target(RID p_rid) const = 0;
+	// Reads back the last rendered image: width * height * 4 floats, linear RGBA, top row first.
+	virtual std::vector<float> render_target_get_data(RID p_render_target) = 0;
+	// GPU time per pass of the last rendered frame, as (pass name, milliseconds).
+	virtual std::vector<std::pair<String, double>> get_last_frame_profile() const = 0;
+	// When true, shade every light for every pixel instead of using clusters (test reference).
+	virtual void set_debug_force_all_lights(bool p_enable) = 0;
+
+	virtual ~RendererSceneRender() {}
+};

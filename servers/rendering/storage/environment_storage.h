@@ -1,0 +1,45 @@
+/**************************************************************************/
+/*  environment_storage.h                                                 */
+/**************************************************************************/
+/* godot-area: environment resources (Godot's RendererEnvironmentStorage, */
+/* a concrete CPU-only class shared by every backend).                    */
+
+#pragma once
+
+#include "core/templates/rid_owner.h"
+#include "servers/rendering_server.h"
+
+class RendererEnvironmentStorage {
+public:
+	// CPU record of one environment. Colours are sRGB (node values); the renderer linearises.
+	struct Environment {
+		RS::EnvironmentBG background = RS::ENV_BG_CLEAR_COLOR;
+		Color bg_color = Color(0, 0, 0, 1);
+		float bg_energy = 1.0f;
+		RS::EnvironmentAmbientSource ambient_source = RS::ENV_AMBIENT_SOURCE_BG;
+		Color ambient_color = Color(0, 0, 0, 1);
+		float ambient_energy = 1.0f;
+	};
+
+private:
+	RID_Owner<Environment, true> environment_owner{ "Environment" };
+
+public:
+	// Creates an environment with Godot's defaults.
+	RID environment_allocate();
+	// Frees an environment; returns false if p_rid is not one.
+	bool environment_free(RID p_rid);
+	// Returns true if p_rid is an environment.
+	bool is_environment(RID p_rid) const { return environment_owner.owns(p_rid); }
+	// Returns the record or nullptr (valid only during the current call).
+	const Environment *environment_get(RID p_rid) const { return environment_owner.get_or_null(p_rid); }
+
+	// Sets the background mode.
+	void environment_set_background(RID p_env, RS::EnvironmentBG p_bg);
+	// Sets the background colour (sRGB).
+	void environment_set_bg_color(RID p_env, const Color &p_color);
+	// Sets the background energy (finite, >= 0).
+	void environment_set_bg_energy(RID p_env, float p_multiplier);
+	// Sets ambient colour, source and energy (finite, >= 0).
+	void environment_set_ambient_light(RID p_env, const Color &p_color, RS::EnvironmentAmbientSource p_ambient, float p_energy);
+};

@@ -1,0 +1,103 @@
+/**************************************************************************/
+/*  light_storage.h                                                       */
+/**************************************************************************/
+/* godot-area: abstract light resource storage (Godot's                   */
+/* RendererLightStorage). Implemented on the CPU by                       */
+/* RendererDummy::LightStorage and on Vulkan by RendererRD::LightStorage. */
+/* Every setter of an implementation follows the storage pattern: look up */
+/* and null-check, validate (validate_param), return early if unchanged,  */
+/* bump the version only when culling or shadows are affected.            */
+
+#pragma once
+
+#include "servers/rendering_server.h"
+
+class RendererLightStorage {
+public:
+	// Storage defaults of each parameter for a light type (Godot's storage defaults, NOT node defaults).
+	static float get_default_param(RS::LightType p_type, RS::LightParam p_param);
+	// Checks a parameter value: finite, and non-negative where negative makes no sense
+	// (range, size, attenuation, spot angle 0..180, ...). Prints an error naming the parameter and
+	// returns false when the value must be rejected (the caller keeps the old value).
+	static bool validate_param(RS::LightParam p_param, float p_value);
+	// Returns the local-space bound of a light: omni cube of side 2 * range, spot cone AABB
+	// (along -Z; a sphere cube when the angle is 90 degrees or more), directional empty.
+	static AABB compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees);
+	// Returns the parameter's enum name ("LIGHT_PARAM_RANGE"), for messages.
+	static const char *get_param_name(RS::LightParam p_param);
+
+	// Creates a light of the given type with storage defaults.
+	virtual RID light_create(RS::LightType p_type) = 0;
+	// Frees a light; returns false if this storage does not own p_rid.
+	virtual bool light_free(RID p_rid) = 0;
+	// Returns true if p_rid is a light of this storage.
+	virtual bool owns_light(RID p_rid) const = 0;
+
+	// Sets one scalar parameter (validated).
+	virtual void light_set_param(RID p_light, RS::LightParam p_param, float p_value) = 0;
+	// Sets the colour (sRGB).
+	virtual void light_set_color(RID p_light, const Color &p_color) = 0;
+	// Enables shadows.
+	virtual void light_set_shadow(RID p_light, bool p_enabled) = 0;
+	// Makes the light negative.
+	virtual void light_set_negative(RID p_light, bool p_enable) = 0;
+	// Sets the layers the light affects.
+	virtual void light_set_cull_mask(RID p_light, uint32_t p_mask) = 0;
+	// Sets the layers that cast shadows.
+	virtual void light_set_shadow_caster_mask(RID p_light, uint32_t p_mask) = 0;
+	// Sets reverse-face shadow rendering.
+	virtual void light_set_reverse_cull_face_mode(RID p_light, bool p_enabled) = 0;
+	// Sets the bake mode.
+	virtual void light_set_bake_mode(RID p_light, RS::LightBakeMode p_mode) = 0;
+	// Sets distance fade parameters.
+	virtual void light_set_distance_fade(RID p_light, bool p_enabled, float p_begin, float p_shadow, float p_length) = 0;
+	// Sets the omni shadow mode.
+	virtual void light_omni_set_shadow_mode(RID p_light, RS::LightOmniShadowMode p_mode) = 0;
+	// Sets the directional shadow mode.
+	virtual void light_directional_set_shadow_mode(RID p_light, RS::LightDirectionalShadowMode p_mode) = 0;
+	// Sets PSSM split blending.
+	virtual void light_directional_set_blend_splits(RID p_light, bool p_enable) = 0;
+	// Sets the directional sky mode.
+	virtual void light_directional_set_sky_mode(RID p_light, RS::LightDirectionalSkyMode p_mode) = 0;
+
+	// Returns the type (LIGHT_DIRECTIONAL with an error for an invalid RID).
+	virtual RS::LightType light_get_type(RID p_light) const = 0;
+	// Returns one parameter (0 for an invalid RID or index).
+	virtual float light_get_param(RID p_light, RS::LightParam p_param) const = 0;
+	// Returns the colour (sRGB).
+	virtual Color light_get_color(RID p_light) const = 0;
+	// Returns whether shadows are enabled.
+	virtual bool light_has_shadow(RID p_light) const = 0;
+	// Returns whether the light is negative.
+	virtual bool light_is_negative(RID p_light) const = 0;
+	// Returns the cull mask.
+	virtual uint32_t light_get_cull_mask(RID p_light) const = 0;
+	// Returns the shadow caster mask.
+	virtual uint32_t light_get_shadow_caster_mask(RID p_light) const = 0;
+	// Returns the reverse-face shadow flag.
+	virtual bool light_get_reverse_cull_face_mode(RID p_light) const = 0;
+	// Returns the bake mode.
+	virtual RS::LightBakeMode light_get_bake_mode(RID p_light) const = 0;
+	// Returns whether distance fade is on.
+	virtual bool light_is_distance_fade_enabled(RID p_light) const = 0;
+	// Returns distance fade begin (m).
+	virtual float light_get_distance_fade_begin(RID p_light) const = 0;
+	// Returns distance fade shadow distance (m).
+	virtual float light_get_distance_fade_shadow(RID p_light) const = 0;
+	// Returns distance fade length (m).
+	virtual float light_get_distance_fade_length(RID p_light) const = 0;
+	// Returns the omni shadow mode.
+	virtual RS::LightOmniShadowMode light_omni_get_shadow_mode(RID p_light) const = 0;
+	// Returns the directional shadow mode.
+	virtual RS::LightDirectionalShadowMode light_directional_get_shadow_mode(RID p_light) const = 0;
+	// Returns PSSM split blending.
+	virtual bool light_directional_get_blend_splits(RID p_light) const = 0;
+	// Returns the directional sky mode.
+	virtual RS::LightDirectionalSkyMode light_directional_get_sky_mode(RID p_light) const = 0;
+	// Returns the local-space bound (see compute_light_aabb).
+	virtual AABB light_get_aabb(RID p_light) const = 0;
+	// Returns a counter bumped whenever culling or shadows are affected (cached shadows compare it).
+	virtual uint64_t light_get_version(RID p_light) const = 0;
+
+	virtual ~RendererLightStorage() {}
+};

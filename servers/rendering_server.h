@@ -1,0 +1,383 @@
+/**************************************************************************/
+/*  rendering_server.h                                                    */
+/**************************************************************************/
+/* godot-area: the rendering server API (Godot's RenderingServer, reduced).*/
+/* Pure virtual; RenderingServerDefault implements it. Scene nodes talk   */
+/* to rendering only through this class and RIDs. There is no render      */
+/* thread: every call runs directly on the caller's thread.               */
+/* Enum values follow Godot 4.7 order (they are saved in scene files).    */
+
+#pragma once
+
+#include "core/io/image.h"
+#include "core/math/aabb.h"
+#include "core/math/color.h"
+#include "core/math/transform_3d.h"
+#include "core/math/vector2.h"
+#include "core/math/vector3.h"
+#include "core/string/ustring.h"
+#include "core/templates/rid.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+class RenderingServer {
+	static RenderingServer *singleton;
+
+public:
+	// Returns the live server (set by the constructor of the implementation), or nullptr.
+	static RenderingServer *get_singleton() { return singleton; }
+
+	/* MESH API enums */
+
+	// Godot's vertex array slots. We pass a SurfaceData struct instead of packed arrays,
+	// so these only name the slots; ARRAY_VERTEX..ARRAY_TEX_UV and ARRAY_INDEX are supported.
+	enum ArrayType {
+		ARRAY_VERTEX,
+		ARRAY_NORMAL,
+		ARRAY_TANGENT,
+		ARRAY_COLOR,
+		ARRAY_TEX_UV,
+		ARRAY_TEX_UV2,
+		ARRAY_CUSTOM0,
+		ARRAY_CUSTOM1,
+		ARRAY_CUSTOM2,
+		ARRAY_CUSTOM3,
+		ARRAY_BONES,
+		ARRAY_WEIGHTS,
+		ARRAY_INDEX,
+		ARRAY_MAX
+	};
+
+	// One triangle-list surface (simplification of Godot's packed surface arrays).
+	// Every per-vertex array is either empty or has vertices.size() entries (tangents: 4 floats
+	// per vertex, xyz + binormal sign w). Empty indices mean a non-indexed list (3 vertices per triangle).
+	struct SurfaceData {
+		std::vector<Vector3> vertices; // ARRAY_VERTEX, object space.
+		std::vector<Vector3> normals; // ARRAY_NORMAL, optional.
+		std::vector<float> tangents; // ARRAY_TANGENT, optional, 4 per vertex.
+		std::vector<Color> colors; // ARRAY_COLOR, optional, linear.
+		std::vector<Vector2> uvs; // ARRAY_TEX_UV, optional.
+		std::vector<uint32_t> indices; // ARRAY_INDEX, optional, multiple of 3.
+		AABB aabb; // Output: mesh_add_surface() computes it from vertices (input is ignored).
+	};
+
+	/* MATERIAL API enums (values of StandardMaterial3D's enums) */
+
+	enum MaterialDiffuseMode {
+		MATERIAL_DIFFUSE_BURLEY, // Godot's default.
+		MATERIAL_DIFFUSE_LAMBERT,
+		MATERIAL_DIFFUSE_LAMBERT_WRAP,
+		MATERIAL_DIFFUSE_TOON,
+	};
+
+	enum MaterialSpecularMode {
+		MATERIAL_SPECULAR_SCHLICK_GGX, // Godot's default.
+		MATERIAL_SPECULAR_TOON,
+		MATERIAL_SPECULAR_DISABLED,
+	};
+
+	// Typed parameters of our one built-in material (StandardMaterial3D's subset), set as a whole
+	// with material_set_params(). Simpler than Godot's per-uniform material_set_param(name, Variant).
+	// Colours are sRGB as the inspector shows them; the renderer converts them to linear once.
+	struct MaterialParams {
+		Color albedo = Color(1, 1, 1, 1); // albedo_color (sRGB).
+		RID albedo_texture; // albedo_texture (texels sRGB-encoded, decoded by the renderer).
+		float roughness = 1.0f; // roughness, 0..1.
+		float metallic = 0.0f; // metallic, 0..1.
+		float specular = 0.5f; // metallic_specular, 0..1 (0.5 = 4% F0).
+		RID normal_texture; // normal_texture (linear, OpenGL convention +Y up); used when valid.
+		float normal_scale = 1.0f; // normal_scale.
+		Color emission = Color(0, 0, 0, 1); // emission (sRGB); black = off.
+		float emission_energy = 1.0f; // emission_energy_multiplier.
+		MaterialDiffuseMode diffuse_mode = MATERIAL_DIFFUSE_BURLEY;
+		MaterialSpecularMode specular_mode = MATERIAL_SPECULAR_SCHLICK_GGX;
+		bool unshaded = false; // shading_mode = UNSHADED: output albedo only.
+		bool cull_back = true; // cull_mode = BACK (false = DISABLED, two-sided).
+	};
+
+	/* LIGHT API enums */
+
+	enum LightType {
+		LIGHT_DIRECTIONAL,
+		LIGHT_OMNI,
+		LIGHT_SPOT,
+	};
+
+	enum LightParam {
+		LIGHT_PARAM_ENERGY,
+		LIGHT_PARAM_INDIRECT_ENERGY,
+		LIGHT_PARAM_VOLUMETRIC_FOG_ENERGY,
+		LIGHT_PARAM_SPECULAR,
+		LIGHT_PARAM_RANGE,
+		LIGHT_PARAM_SIZE,
+		LIGHT_PARAM_ATTENUATION,
+		LIGHT_PARAM_SPOT_ANGLE, // Degrees (half-angle of the cone).
+		LIGHT_PARAM_SPOT_ATTENUATION,
+		LIGHT_PARAM_SHADOW_MAX_DISTANCE,
+		LIGHT_PARAM_SHADOW_SPLIT_1_OFFSET,
+		LIGHT_PARAM_SHADOW_SPLIT_2_OFFSET,
+		LIGHT_PARAM_SHADOW_SPLIT_3_OFFSET,
+		LIGHT_PARAM_SHADOW_FADE_START,
+		LIGHT_PARAM_SHADOW_NORMAL_BIAS,
+		LIGHT_PARAM_SHADOW_BIAS,
+		LIGHT_PARAM_SHADOW_PANCAKE_SIZE,
+		LIGHT_PARAM_SHADOW_OPACITY,
+		LIGHT_PARAM_SHADOW_BLUR,
+		LIGHT_PARAM_TRANSMITTANCE_BIAS,
+		LIGHT_PARAM_INTENSITY, // Lumens (omni/spot) or lux (directional); used with physical light units.
+		LIGHT_PARAM_MAX
+	};
+
+	enum LightBakeMode {
+		LIGHT_BAKE_DISABLED,
+		LIGHT_BAKE_STATIC,
+		LIGHT_BAKE_DYNAMIC,
+	};
+
+	enum LightOmniShadowMode {
+		LIGHT_OMNI_SHADOW_DUAL_PARABOLOID,
+		LIGHT_OMNI_SHADOW_CUBE,
+	};
+
+	enum LightDirectionalShadowMode {
+		LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL,
+		LIGHT_DIRECTIONAL_SHADOW_PARALLEL_2_SPLITS,
+		LIGHT_DIRECTIONAL_SHADOW_PARALLEL_4_SPLITS,
+	};
+
+	enum LightDirectionalSkyMode {
+		LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_AND_SKY,
+		LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_ONLY,
+		LIGHT_DIRECTIONAL_SKY_MODE_SKY_ONLY,
+	};
+
+	/* ENVIRONMENT API enums */
+
+	enum EnvironmentBG {
+		ENV_BG_CLEAR_COLOR,
+		ENV_BG_COLOR,
+		ENV_BG_SKY,
+		ENV_BG_CANVAS,
+		ENV_BG_KEEP,
+		ENV_BG_CAMERA_FEED,
+		ENV_BG_MAX
+	};
+
+	enum EnvironmentAmbientSource {
+		ENV_AMBIENT_SOURCE_BG,
+		ENV_AMBIENT_SOURCE_DISABLED,
+		ENV_AMBIENT_SOURCE_COLOR,
+		ENV_AMBIENT_SOURCE_SKY,
+	};
+
+	/* VIEWPORT API enums */
+
+	// Godot 4's list, in order. The CLUSTER_* modes draw per-tile element counts.
+	enum ViewportDebugDraw {
+		VIEWPORT_DEBUG_DRAW_DISABLED,
+		VIEWPORT_DEBUG_DRAW_UNSHADED,
+		VIEWPORT_DEBUG_DRAW_LIGHTING,
+		VIEWPORT_DEBUG_DRAW_OVERDRAW,
+		VIEWPORT_DEBUG_DRAW_WIREFRAME,
+		VIEWPORT_DEBUG_DRAW_NORMAL_BUFFER,
+		VIEWPORT_DEBUG_DRAW_VOXEL_GI_ALBEDO,
+		VIEWPORT_DEBUG_DRAW_VOXEL_GI_LIGHTING,
+		VIEWPORT_DEBUG_DRAW_VOXEL_GI_EMISSION,
+		VIEWPORT_DEBUG_DRAW_SHADOW_ATLAS,
+		VIEWPORT_DEBUG_DRAW_DIRECTIONAL_SHADOW_ATLAS,
+		VIEWPORT_DEBUG_DRAW_SCENE_LUMINANCE,
+		VIEWPORT_DEBUG_DRAW_SSAO,
+		VIEWPORT_DEBUG_DRAW_SSIL,
+		VIEWPORT_DEBUG_DRAW_PSSM_SPLITS,
+		VIEWPORT_DEBUG_DRAW_DECAL_ATLAS,
+		VIEWPORT_DEBUG_DRAW_SDFGI,
+		VIEWPORT_DEBUG_DRAW_SDFGI_PROBES,
+		VIEWPORT_DEBUG_DRAW_GI_BUFFER,
+		VIEWPORT_DEBUG_DRAW_DISABLE_LOD,
+		VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS,
+		VIEWPORT_DEBUG_DRAW_CLUSTER_SPOT_LIGHTS,
+		VIEWPORT_DEBUG_DRAW_CLUSTER_DECALS,
+		VIEWPORT_DEBUG_DRAW_CLUSTER_REFLECTION_PROBES,
+		VIEWPORT_DEBUG_DRAW_OCCLUDERS,
+		VIEWPORT_DEBUG_DRAW_MOTION_VECTORS,
+		VIEWPORT_DEBUG_DRAW_INTERNAL_BUFFER,
+	};
+
+	/* INSTANCE API enums */
+
+	enum InstanceType {
+		INSTANCE_NONE,
+		INSTANCE_MESH,
+		INSTANCE_LIGHT,
+	};
+
+	/* MESH API */
+
+	// Creates an empty mesh resource.
+	virtual RID mesh_create() = 0;
+	// Appends a surface (validated: sizes must match, indices in range); fills its AABB.
+	virtual void mesh_add_surface(RID p_mesh, const SurfaceData &p_surface) = 0;
+	// Sets the material used by one surface (RID() clears it).
+	virtual void mesh_surface_set_material(RID p_mesh, int p_surface, RID p_material) = 0;
+	// Returns the material of one surface, or RID().
+	virtual RID mesh_surface_get_material(RID p_mesh, int p_surface) const = 0;
+	// Returns the number of surfaces (0 for an invalid mesh).
+	virtual int mesh_get_surface_count(RID p_mesh) const = 0;
+	// Returns the union of the surface AABBs in object space.
+	virtual AABB mesh_get_aabb(RID p_mesh) const = 0;
+	// Removes all surfaces.
+	virtual void mesh_clear(RID p_mesh) = 0;
+
+	/* TEXTURE API */
+
+	// Creates a 2D texture from float RGBA texels (top row first) as stored in the file
+	// (colour textures sRGB-encoded, normal maps linear). Returns RID() for an empty image.
+	virtual RID texture_2d_create(const Image &p_image) = 0;
+	// Same, from 8-bit RGBA texels (p_width * p_height * 4 bytes); converted to float / 255.
+	virtual RID texture_2d_create_rgba8(int p_width, int p_height, const std::vector<uint8_t> &p_data) = 0;
+	// Returns the texel data kept on the CPU (empty image for an invalid RID).
+	virtual Image texture_2d_get(RID p_texture) const = 0;
+
+	/* MATERIAL API */
+
+	// Creates a material with default MaterialParams.
+	virtual RID material_create() = 0;
+	// Replaces all parameters of a material.
+	virtual void material_set_params(RID p_material, const MaterialParams &p_params) = 0;
+	// Returns the parameters of a material (defaults for an invalid RID).
+	virtual MaterialParams material_get_params(RID p_material) const = 0;
+
+	/* LIGHT API */
+
+	// Creates a directional light resource (storage defaults, not node defaults).
+	virtual RID directional_light_create() = 0;
+	// Creates an omni light resource.
+	virtual RID omni_light_create() = 0;
+	// Creates a spot light resource.
+	virtual RID spot_light_create() = 0;
+	// Sets one scalar parameter; NaN/inf or out-of-domain values print an error and are ignored.
+	virtual void light_set_param(RID p_light, LightParam p_param, float p_value) = 0;
+	// Sets the light colour (sRGB, as the node property).
+	virtual void light_set_color(RID p_light, const Color &p_color) = 0;
+	// Enables or disables shadow casting.
+	virtual void light_set_shadow(RID p_light, bool p_enabled) = 0;
+	// Makes the light subtract instead of add.
+	virtual void light_set_negative(RID p_light, bool p_enable) = 0;
+	// Sets which instance layers the light affects.
+	virtual void light_set_cull_mask(RID p_light, uint32_t p_mask) = 0;
+	// Sets which instance layers cast shadows from this light.
+	virtual void light_set_shadow_caster_mask(RID p_light, uint32_t p_mask) = 0;
+	// Renders shadows from back faces.
+	virtual void light_set_reverse_cull_face_mode(RID p_light, bool p_enabled) = 0;
+	// Sets the GI bake mode (stored only).
+	virtual void light_set_bake_mode(RID p_light, LightBakeMode p_bake_mode) = 0;
+	// Sets distance fade (begin, shadow and length in metres).
+	virtual void light_set_distance_fade(RID p_light, bool p_enabled, float p_begin, float p_shadow, float p_length) = 0;
+	// Sets the omni shadow mode.
+	virtual void light_omni_set_shadow_mode(RID p_light, LightOmniShadowMode p_mode) = 0;
+	// Sets the directional shadow mode.
+	virtual void light_directional_set_shadow_mode(RID p_light, LightDirectionalShadowMode p_mode) = 0;
+	// Blends between PSSM splits.
+	virtual void light_directional_set_blend_splits(RID p_light, bool p_enable) = 0;
+	// Sets whether a directional light affects the sky, the scene, or both.
+	virtual void light_directional_set_sky_mode(RID p_light, LightDirectionalSkyMode p_mode) = 0;
+	// Returns the light type (LIGHT_DIRECTIONAL for an invalid RID, with an error).
+	virtual LightType light_get_type(RID p_light) const = 0;
+	// Returns one scalar parameter (0 for an invalid RID or index).
+	virtual float light_get_param(RID p_light, LightParam p_param) const = 0;
+	// Returns the local-space bound (omni: cube of side 2 * range; spot: cone AABB; directional: empty).
+	virtual AABB light_get_aabb(RID p_light) const = 0;
+
+	/* CAMERA API */
+
+	// Creates a camera (perspective 75 degrees, near 0.05, far 4000, identity transform: Godot's Camera3D defaults).
+	virtual RID camera_create() = 0;
+	// Sets a perspective projection; p_fovy_degrees is the vertical field of view.
+	virtual void camera_set_perspective(RID p_camera, float p_fovy_degrees, float p_z_near, float p_z_far) = 0;
+	// Sets the camera-to-world transform (the camera looks down its local -Z).
+	virtual void camera_set_transform(RID p_camera, const Transform3D &p_transform) = 0;
+	// Sets which instance layers the camera sees.
+	virtual void camera_set_cull_mask(RID p_camera, uint32_t p_layers) = 0;
+	// Overrides the scenario's environment for this camera (RID() removes the override).
+	virtual void camera_set_environment(RID p_camera, RID p_env) = 0;
+
+	/* ENVIRONMENT API */
+	// Like Godot, an environment is attached to a scenario (WorldEnvironment) and may be
+	// overridden per camera (Camera3D.environment). Without any, the default clear colour is used.
+
+	// Creates an environment (background CLEAR_COLOR, ambient source BG, Godot's defaults).
+	virtual RID environment_create() = 0;
+	// Sets the background mode (only CLEAR_COLOR and COLOR are drawn; others fall back to CLEAR_COLOR).
+	virtual void environment_set_background(RID p_env, EnvironmentBG p_bg) = 0;
+	// Sets the background colour (sRGB) used by ENV_BG_COLOR.
+	virtual void environment_set_bg_color(RID p_env, const Color &p_color) = 0;
+	// Sets the background energy multiplier.
+	virtual void environment_set_bg_energy(RID p_env, float p_multiplier) = 0;
+	// Sets the ambient light colour (sRGB), its source and energy.
+	virtual void environment_set_ambient_light(RID p_env, const Color &p_color, EnvironmentAmbientSource p_ambient = ENV_AMBIENT_SOURCE_BG, float p_energy = 1.0f) = 0;
+
+	/* SCENARIO API */
+
+	// Creates a scenario (a world that instances live in).
+	virtual RID scenario_create() = 0;
+	// Sets the environment of a scenario (WorldEnvironment); RID() removes it.
+	virtual void scenario_set_environment(RID p_scenario, RID p_environment) = 0;
+
+	/* INSTANCE API */
+
+	// Creates an instance with no base and no scenario.
+	virtual RID instance_create() = 0;
+	// Sets the base resource (mesh or light RID; RID() detaches). The type is taken from the RID.
+	virtual void instance_set_base(RID p_instance, RID p_base) = 0;
+	// Puts the instance into a scenario (RID() removes it).
+	virtual void instance_set_scenario(RID p_instance, RID p_scenario) = 0;
+	// Sets the world transform.
+	virtual void instance_set_transform(RID p_instance, const Transform3D &p_transform) = 0;
+	// Shows or hides the instance.
+	virtual void instance_set_visible(RID p_instance, bool p_visible) = 0;
+	// Sets the render layers of the instance (matched against light and camera cull masks).
+	virtual void instance_set_layer_mask(RID p_instance, uint32_t p_mask) = 0;
+	// Overrides the material of every surface (RID() removes the override).
+	virtual void instance_geometry_set_material_override(RID p_instance, RID p_material) = 0;
+	// Returns the world-space AABB of the instance's base (empty for lights of directional type).
+	virtual AABB instance_get_aabb(RID p_instance) const = 0;
+
+	/* VIEWPORT API */
+
+	// Creates a viewport (active, size 0: nothing is rendered until viewport_set_size).
+	virtual RID viewport_create() = 0;
+	// Sets the size in pixels and (re)creates its render target.
+	virtual void viewport_set_size(RID p_viewport, int p_width, int p_height) = 0;
+	// Enables or disables drawing of the viewport in draw().
+	virtual void viewport_set_active(RID p_viewport, bool p_active) = 0;
+	// Sets the camera the viewport renders from.
+	virtual void viewport_attach_camera(RID p_viewport, RID p_camera) = 0;
+	// Sets the scenario the viewport renders.
+	virtual void viewport_set_scenario(RID p_viewport, RID p_scenario) = 0;
+	// Sets the debug draw mode.
+	virtual void viewport_set_debug_draw(RID p_viewport, ViewportDebugDraw p_draw) = 0;
+	// Returns the last rendered image (float RGBA, linear HDR, top row first); empty if none.
+	virtual Image viewport_get_texture_data(RID p_viewport) const = 0;
+
+	/* MISC */
+
+	// Sets the colour of ENV_BG_CLEAR_COLOR (Godot's default_clear_color, sRGB).
+	virtual void set_default_clear_color(const Color &p_color) = 0;
+	// Returns the default clear colour.
+	virtual Color get_default_clear_color() const = 0;
+	// Renders every active viewport that has a size, a camera and a scenario.
+	virtual void draw() = 0;
+	// Frees any RID created by this server; prints an error for unknown RIDs.
+	virtual void free(RID p_rid) = 0;
+	// GPU time of each pass of the last frame, as (pass name, milliseconds).
+	virtual std::vector<std::pair<String, double>> get_frame_profile() const = 0;
+	// Renderer tests: when true the renderer shades every light per pixel (no clustering).
+	virtual void set_debug_force_all_lights(bool p_enable) = 0;
+
+	RenderingServer();
+	virtual ~RenderingServer();
+};
+
+typedef RenderingServer RS;
