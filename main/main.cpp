@@ -1,1 +1,374 @@
-int main() { return 0; }
+/**************************************************************************/
+/*  main.cpp                                                              */
+/**************************************************************************/
+/* godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H]     */
+/*                   [--png P] [--half] [--exposure EV]                   */
+/* godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F]      */
+/*                   [--width W] [--height H]                             */
+/* godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip] */
+/*                   (B is the reference)                                 */
+/* godot-area info                                                        */
+/* Without SCENE the embedded demo scene (demo/demo.tscn) is used.        */
+/* Exit codes: 0 success, 1 runtime failure, 2 bad arguments or files.    */
+
+#include "main/main.h"
+
+#include "core/error/error_macros.h"
+#include "core/io/image.h"
+#include "core/io/tonemap.h"
+#include "drivers/png/png_writer.h"
+#include "main/demo_scene.gen.h"
+#include "modules/gltf/register_types.h"
+#include "modules/metrics/image_metrics.h"
+#include "modules/openexr/image_saver_exr.h"
+#include "scene/3d/camera_3d.h"
+#include "scene/main/node.h"
+#include "scene/main/scene_tree.h"
+#include "scene/register_scene_types.h"
+#include "scene/resources/resource_format_text.h"
+#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
+#include "servers/rendering/rendering_device.h"
+#include "servers/rendering/rendering_profiler.h"
+#include "servers/rendering/rendering_server_default.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+RenderingDevice *Main::rendering_device = nullptr;
+RenderingServer *Main::rendering_server = nullptr;
+
+bool Main::setup(Backend p_backend, String *r_error) {
+	if (p_backend == BACKEND_RD) {
+		rendering_device = new RenderingDevice;
+		String error;
+		if (!rendering_device->initialize(&error)) {
+			*r_error = "No usable Vulkan device: " + error;
+			delete rendering_device;
+			rendering_device = nullptr;
+			return false;
+		}
+		RendererCompositorRD *compositor = new RendererCompositorRD;
+		if (!compositor->initialize()) {
+			*r_error = "The Forward+ renderer could not be initialized (see the errors above).";
+			delete compositor;
+			delete rendering_device;
+			rendering_device = nullptr;
+			return false;
+		}
+		rendering_server = new RenderingServerDefault(compositor);
+	} else {
+		rendering_server = RenderingServerDefault::create_dummy();
+	}
+	register_scene_types();
+	initialize_gltf_module();
+	return true;
+}
+
+void Main::cleanup() {
+	uninitialize_gltf_module();
+	unregister_scene_types();
+	delete rendering_server;
+	rendering_server = nullptr;
+	delete rendering_device;
+	rendering_device = nullptr;
+}
+
+Node *Main::load_scene(const String &p_path, String *r_error) {
+	if (p_path.empty()) {
+		return ResourceFormatText::load_scene_from_string(DEMO_SCENE_TSCN, String(GODOT_AREA_ROOT) + "/demo/demo.tscn", r_error);
+	}
+	return ResourceFormatText::load_scene(p_path, r_error);
+}
+
+namespace {
+
+struct Args {
+	String command;
+	String scene;
+	std::map<String, String> options;
+	std::vector<String> flags;
+	std::vector<String> positional; // compare: the two images.
+};
+
+void _print_usage() {
+	fprintf(stderr,
+			"usage:\n"
+			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
+			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
+			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
+			"  godot-area info\n"
+			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
+			"GODOT_AREA_VALIDATION=1 enables the validation layer.\n");
+}
+
+// Options that take a value, per command; anything else starting with "-" is an error.
+bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
+	static const std::map<String, std::vector<String>> value_options = {
+		{ "render", { "-o", "--width", "--height", "--png", "--exposure" } },
+		{ "bench", { "--frames", "--warmup", "--csv", "--width", "--height" } },
+		{ "compare", { "--heatmap" } },
+		{ "info", {} },
+	};
+	static const std::map<String, std::vector<String>> flag_options = {
+		{ "compare", { "--json", "--no-hdr-flip" } },
+		{ "render", { "--half" } },
+		{ "bench", {} },
+		{ "info", {} },
+	};
+	if (p_argc < 2) {
+		*r_error = "missing command";
+		return false;
+	}
+	r_args.command = p_argv[1];
+	if (!value_options.count(r_args.command)) {
+		*r_error = vformat("unknown command '%s'", r_args.command.c_str());
+		return false;
+	}
+	const std::vector<String> &values = value_options.at(r_args.command);
+	const std::vector<String> &flags = flag_options.at(r_args.command);
+	for (int i = 2; i < p_argc; i++) {
+		String a = p_argv[i];
+		if (std::find(values.begin(), values.end(), a) != values.end()) {
+			if (i + 1 >= p_argc) {
+				*r_error = vformat("option '%s' needs a value", a.c_str());
+				return false;
+			}
+			r_args.options[a] = p_argv[++i];
+		} else if (std::find(flags.begin(), flags.end(), a) != flags.end()) {
+			r_args.flags.push_back(a);
+		} else if (!a.empty() && a[0] == '-') {
+			*r_error = vformat("unknown option '%s' for '%s'", a.c_str(), r_args.command.c_str());
+			return false;
+		} else if (r_args.command == "compare" && r_args.positional.size() < 2) {
+			r_args.positional.push_back(a);
+		} else if (r_args.scene.empty() && r_args.command != "info" && r_args.command != "compare") {
+			r_args.scene = a;
+		} else {
+			*r_error = vformat("unexpected argument '%s'", a.c_str());
+			return false;
+		}
+	}
+	return true;
+}
+
+bool _get_int(const Args &p_args, const String &p_name, int p_default, int p_min, int p_max, int &r_value, String *r_error) {
+	auto it = p_args.options.find(p_name);
+	if (it == p_args.options.end()) {
+		r_value = p_default;
+		return true;
+	}
+	char *end = nullptr;
+	long v = strtol(it->second.c_str(), &end, 10);
+	if (it->second.empty() || *end != '\0' || v < p_min || v > p_max) {
+		*r_error = vformat("%s must be an integer in [%d, %d], got '%s'", p_name.c_str(), p_min, p_max, it->second.c_str());
+		return false;
+	}
+	r_value = int(v);
+	return true;
+}
+
+bool _get_float(const Args &p_args, const String &p_name, float p_default, float &r_value, String *r_error) {
+	auto it = p_args.options.find(p_name);
+	if (it == p_args.options.end()) {
+		r_value = p_default;
+		return true;
+	}
+	char *end = nullptr;
+	double v = strtod(it->second.c_str(), &end);
+	if (it->second.empty() || *end != '\0' || !std::isfinite(v)) {
+		*r_error = vformat("%s must be a finite number, got '%s'", p_name.c_str(), it->second.c_str());
+		return false;
+	}
+	r_value = float(v);
+	return true;
+}
+
+bool _has_flag(const Args &p_args, const String &p_flag) {
+	return std::find(p_args.flags.begin(), p_args.flags.end(), p_flag) != p_args.flags.end();
+}
+
+void _print_profile(const std::vector<std::pair<String, double>> &p_profile) {
+	double total = 0;
+	for (const auto &p : p_profile) {
+		printf("  %-16s %9.3f ms\n", p.first.c_str(), p.second);
+		total += p.second;
+	}
+	printf("  %-16s %9.3f ms\n", "GPU total", total);
+}
+
+// Loads the scene into a tree of the given size. Returns false with r_error on failure.
+bool _prepare_tree(SceneTree &r_tree, const Args &p_args, int p_width, int p_height, String *r_error) {
+	String error;
+	Node *scene = Main::load_scene(p_args.scene, &error);
+	if (!scene) {
+		*r_error = vformat("cannot load scene '%s': %s", p_args.scene.empty() ? "<embedded demo>" : p_args.scene.c_str(), error.c_str());
+		return false;
+	}
+	r_tree.get_root()->add_child(scene);
+	if (!r_tree.get_camera_3d()) {
+		*r_error = vformat("scene '%s' has no Camera3D to render from", p_args.scene.empty() ? "<embedded demo>" : p_args.scene.c_str());
+		return false;
+	}
+	r_tree.set_size(p_width, p_height);
+	return true;
+}
+
+int _command_info() {
+	String error;
+	if (!Main::setup(Main::BACKEND_RD, &error)) {
+		fprintf(stderr, "godot-area: %s\n", error.c_str());
+		return 1;
+	}
+	printf("%s\n", RenderingDevice::get_singleton()->get_device_info_string().c_str());
+	Main::cleanup();
+	return 0;
+}
+
+int _command_render(const Args &p_args) {
+	String error;
+	int width = 0, height = 0;
+	float exposure = 0;
+	if (!_get_int(p_args, "--width", 640, 1, 16384, width, &error) || !_get_int(p_args, "--height", 360, 1, 16384, height, &error) || !_get_float(p_args, "--exposure", 0.0f, exposure, &error)) {
+		fprintf(stderr, "godot-area render: %s\n", error.c_str());
+		return 2;
+	}
+	auto out_it = p_args.options.find("-o");
+	if (out_it == p_args.options.end() || out_it->second.empty()) {
+		fprintf(stderr, "godot-area render: missing -o OUT.exr\n");
+		return 2;
+	}
+	const String out_path = out_it->second;
+	if (!Main::setup(Main::BACKEND_RD, &error)) {
+		fprintf(stderr, "godot-area render: %s\n", error.c_str());
+		return 1;
+	}
+	int code = 0;
+	{
+		SceneTree tree;
+		if (!_prepare_tree(tree, p_args, width, height, &error)) {
+			fprintf(stderr, "godot-area render: %s\n", error.c_str());
+			code = 2;
+		} else {
+			Image image = tree.render();
+			if (image.is_empty()) {
+				fprintf(stderr, "godot-area render: the renderer returned no image\n");
+				code = 1;
+			} else if (!image.is_finite()) {
+				fprintf(stderr, "godot-area render: the image has NaN or infinite pixels\n");
+				code = 1;
+			} else if (!ImageSaverEXR::save(image, out_path, _has_flag(p_args, "--half"), &error)) {
+				fprintf(stderr, "godot-area render: %s\n", error.c_str());
+				code = 1;
+			} else {
+				printf("wrote %s (%dx%d, scene-linear %s)\n", out_path.c_str(), width, height, _has_flag(p_args, "--half") ? "half" : "float");
+				auto png_it = p_args.options.find("--png");
+				if (png_it != p_args.options.end()) {
+					if (!PNGWriter::save(image, png_it->second, &error, exposure, Tonemap::MODE_ACES_FITTED)) {
+						fprintf(stderr, "godot-area render: %s\n", error.c_str());
+						code = 1;
+					} else {
+						printf("wrote %s (ACES-fitted preview, exposure %+.2f EV)\n", png_it->second.c_str(), exposure);
+					}
+				}
+				printf("device: %s\nGPU time per pass (one frame):\n", RenderingDevice::get_singleton()->get_device_info().name.c_str());
+				_print_profile(RenderingServer::get_singleton()->get_frame_profile());
+			}
+		}
+	}
+	Main::cleanup();
+	return code;
+}
+
+int _command_bench(const Args &p_args) {
+	String error;
+	int width = 0, height = 0, frames = 0, warmup = 0;
+	if (!_get_int(p_args, "--width", 1280, 1, 16384, width, &error) || !_get_int(p_args, "--height", 720, 1, 16384, height, &error) ||
+			!_get_int(p_args, "--frames", 100, 1, 1000000, frames, &error) || !_get_int(p_args, "--warmup", RenderingProfiler::DEFAULT_WARMUP_FRAMES, 0, 1000000, warmup, &error)) {
+		fprintf(stderr, "godot-area bench: %s\n", error.c_str());
+		return 2;
+	}
+	if (!Main::setup(Main::BACKEND_RD, &error)) {
+		fprintf(stderr, "godot-area bench: %s\n", error.c_str());
+		return 1;
+	}
+	int code = 0;
+	{
+		SceneTree tree;
+		if (!_prepare_tree(tree, p_args, width, height, &error)) {
+			fprintf(stderr, "godot-area bench: %s\n", error.c_str());
+			code = 2;
+		} else {
+			RenderingProfiler profiler;
+			profiler.set_warmup_frames(warmup);
+			RenderingServer *rs = RenderingServer::get_singleton();
+			for (int i = 0; i < warmup + frames; i++) {
+				auto begin = std::chrono::steady_clock::now();
+				rs->draw();
+				double cpu_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+				profiler.record_frame(cpu_ms, rs->get_frame_profile());
+			}
+			printf("device: %s, %dx%d, %d frames after %d warm-up frames (discarded)\n", RenderingDevice::get_singleton()->get_device_info().name.c_str(), width, height, frames, warmup);
+			printf("%s", profiler.summary_table().c_str());
+			auto csv_it = p_args.options.find("--csv");
+			if (csv_it != p_args.options.end()) {
+				if (!profiler.write_csv(csv_it->second, &error)) {
+					fprintf(stderr, "godot-area bench: %s\n", error.c_str());
+					code = 1;
+				} else {
+					printf("wrote %s\n", csv_it->second.c_str());
+				}
+			}
+		}
+	}
+	Main::cleanup();
+	return code;
+}
+
+int _command_compare(const Args &p_args) {
+	if (p_args.positional.size() != 2) {
+		fprintf(stderr, "godot-area compare: needs two images, A (tested) and B (reference)\n");
+		return 2;
+	}
+	ImageMetrics::Options options;
+	options.hdr_flip = !_has_flag(p_args, "--no-hdr-flip");
+	auto heatmap_it = p_args.options.find("--heatmap");
+	String heatmap = heatmap_it == p_args.options.end() ? String() : heatmap_it->second;
+	ImageMetrics::Result result;
+	String error;
+	if (!ImageMetrics::compare_files(p_args.positional[0], p_args.positional[1], &result, &error, options, heatmap)) {
+		fprintf(stderr, "godot-area compare: %s\n", error.c_str());
+		return 2;
+	}
+	printf("%s\n", _has_flag(p_args, "--json") ? result.to_json().c_str() : result.to_text().c_str());
+	return 0;
+}
+
+} // namespace
+
+int Main::run(int p_argc, char **p_argv) {
+	Args args;
+	String error;
+	if (!_parse_args(p_argc, p_argv, args, &error)) {
+		fprintf(stderr, "godot-area: %s\n", error.c_str());
+		_print_usage();
+		return 2;
+	}
+	if (args.command == "info") {
+		return _command_info();
+	}
+	if (args.command == "compare") {
+		return _command_compare(args);
+	}
+	if (args.command == "render") {
+		return _command_render(args);
+	}
+	return _command_bench(args);
+}
+
+int main(int argc, char **argv) {
+	return Main::run(argc, argv);
+}

@@ -13,6 +13,8 @@ PACKAGES=(
 	glslang-dev glslang-tools spirv-tools
 	# Image output and scene import.
 	libopenexr-dev libpng-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+	# CPU reference renderer (ray tracing).
+	libembree-dev
 	# Tests.
 	doctest-dev
 	# Charts.

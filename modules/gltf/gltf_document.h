@@ -78,3 +78,10 @@ public:
 	const std::vector<GLTFNodeData> &get_nodes() const { return nodes; }
 	const std::vector<int> &get_root_nodes() const { return root_nodes; }
 };
+
+class Node;
+
+// Builds a node tree from a parsed document: a Node3D root named p_root_name, one Node3D per glTF
+// node (MeshInstance3D when it has a mesh) with ArrayMesh surfaces and StandardMaterial3D materials.
+// Returns null with r_error on failure. The caller owns the result.
+Node *gltf_generate_scene(const GLTFDocument &p_doc, const String &p_root_name, String *r_error);

@@ -1,0 +1,39 @@
+/**************************************************************************/
+/*  main.h                                                                */
+/**************************************************************************/
+/* The `godot-area` command line (Godot's main/main.cpp, reduced): engine */
+/* setup and teardown around one command.                                 */
+
+#pragma once
+
+#include "core/string/ustring.h"
+
+#include <vector>
+
+class Node;
+class RenderingDevice;
+class RenderingServer;
+
+class Main {
+public:
+	enum Backend {
+		BACKEND_RD, // Vulkan Forward+ renderer.
+		BACKEND_DUMMY, // No GPU: scene loading and validation only.
+	};
+
+private:
+	static RenderingDevice *rendering_device;
+	static RenderingServer *rendering_server;
+
+public:
+	// Creates the RenderingDevice (for BACKEND_RD), the RenderingServer and registers scene types.
+	// Returns false with r_error when no usable Vulkan device exists.
+	static bool setup(Backend p_backend, String *r_error);
+	static void cleanup();
+
+	// Loads p_path, or the embedded demo scene when p_path is empty. Caller owns the node.
+	static Node *load_scene(const String &p_path, String *r_error);
+
+	// Entry point; returns the process exit code.
+	static int run(int p_argc, char **p_argv);
+};

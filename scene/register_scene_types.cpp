@@ -1,0 +1,55 @@
+/**************************************************************************/
+/*  register_scene_types.cpp                                              */
+/**************************************************************************/
+
+#include "scene/register_scene_types.h"
+
+#include "core/object/class_db.h"
+#include "scene/3d/camera_3d.h"
+#include "scene/3d/geometry_instance_3d.h"
+#include "scene/3d/light_3d.h"
+#include "scene/3d/mesh_instance_3d.h"
+#include "scene/3d/node_3d.h"
+#include "scene/3d/visual_instance_3d.h"
+#include "scene/3d/world_environment.h"
+#include "scene/main/node.h"
+#include "scene/resources/environment.h"
+#include "scene/resources/material.h"
+#include "scene/resources/mesh.h"
+#include "scene/resources/primitive_meshes.h"
+#include "scene/resources/texture.h"
+#include "scene/resources/world_3d.h"
+
+void register_scene_types() {
+	// Nodes.
+	GDREGISTER_CLASS(Node);
+	GDREGISTER_CLASS(Node3D);
+	GDREGISTER_ABSTRACT_CLASS(VisualInstance3D);
+	GDREGISTER_ABSTRACT_CLASS(GeometryInstance3D);
+	GDREGISTER_CLASS(MeshInstance3D);
+	GDREGISTER_CLASS(Camera3D);
+	GDREGISTER_ABSTRACT_CLASS(Light3D);
+	GDREGISTER_CLASS(DirectionalLight3D);
+	GDREGISTER_CLASS(OmniLight3D);
+	GDREGISTER_CLASS(SpotLight3D);
+	GDREGISTER_CLASS(WorldEnvironment);
+
+	// Resources.
+	GDREGISTER_ABSTRACT_CLASS(Texture2D);
+	GDREGISTER_CLASS(ImageTexture);
+	GDREGISTER_ABSTRACT_CLASS(Material);
+	GDREGISTER_ABSTRACT_CLASS(BaseMaterial3D);
+	GDREGISTER_CLASS(StandardMaterial3D);
+	GDREGISTER_ABSTRACT_CLASS(Mesh);
+	GDREGISTER_CLASS(ArrayMesh);
+	GDREGISTER_ABSTRACT_CLASS(PrimitiveMesh);
+	GDREGISTER_CLASS(PlaneMesh);
+	GDREGISTER_CLASS(QuadMesh);
+	GDREGISTER_CLASS(BoxMesh);
+	GDREGISTER_CLASS(SphereMesh);
+	GDREGISTER_CLASS(Environment);
+	GDREGISTER_CLASS(World3D);
+}
+
+void unregister_scene_types() {
+}

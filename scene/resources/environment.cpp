@@ -1,0 +1,135 @@
+/**************************************************************************/
+/*  environment.cpp                                                       */
+/**************************************************************************/
+
+#include "scene/resources/environment.h"
+
+#include "core/error/error_macros.h"
+
+static bool _env_color_is_finite(const Color &p_c) {
+	return Math::is_finite(p_c.r) && Math::is_finite(p_c.g) && Math::is_finite(p_c.b) && Math::is_finite(p_c.a);
+}
+
+void Environment::_update_ambient_light() {
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_ambient_light(environment, ambient_color, RS::EnvironmentAmbientSource(ambient_source), ambient_energy);
+	}
+	emit_changed();
+}
+
+void Environment::set_background(BGMode p_bg) {
+	ERR_FAIL_INDEX_MSG((int)p_bg, BG_MAX, vformat("background_mode must be 0..%d (Clear Color, Custom Color, Sky, Canvas, Keep, Camera Feed); got %d. The old value is kept.", BG_MAX - 1, (int)p_bg));
+	bg_mode = p_bg;
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_background(environment, RS::EnvironmentBG(bg_mode));
+	}
+	notify_property_list_changed();
+	emit_changed();
+}
+
+void Environment::set_bg_color(const Color &p_color) {
+	ERR_FAIL_COND_MSG(!_env_color_is_finite(p_color), "background_color must be finite (no NaN or infinity); the old value is kept.");
+	bg_color = p_color;
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_bg_color(environment, bg_color);
+	}
+	emit_changed();
+}
+
+void Environment::set_bg_energy_multiplier(float p_multiplier) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_multiplier) || p_multiplier < 0.0f, vformat("background_energy_multiplier must be finite and >= 0 (got %s); the old value is kept.", rtos(p_multiplier).c_str()));
+	bg_energy_multiplier = p_multiplier;
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_bg_energy(environment, bg_energy_multiplier);
+	}
+	emit_changed();
+}
+
+void Environment::set_ambient_source(AmbientSource p_source) {
+	ERR_FAIL_INDEX_MSG((int)p_source, AMBIENT_SOURCE_MAX, vformat("ambient_light_source must be 0..%d (Background, Disabled, Color, Sky); got %d. The old value is kept.", AMBIENT_SOURCE_MAX - 1, (int)p_source));
+	ambient_source = p_source;
+	notify_property_list_changed();
+	_update_ambient_light();
+}
+
+void Environment::set_ambient_light_color(const Color &p_color) {
+	ERR_FAIL_COND_MSG(!_env_color_is_finite(p_color), "ambient_light_color must be finite (no NaN or infinity); the old value is kept.");
+	ambient_color = p_color;
+	_update_ambient_light();
+}
+
+void Environment::set_ambient_light_energy(float p_energy) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_energy) || p_energy < 0.0f, vformat("ambient_light_energy must be finite and >= 0 (got %s); the old value is kept.", rtos(p_energy).c_str()));
+	ambient_energy = p_energy;
+	_update_ambient_light();
+}
+
+void Environment::_validate_property(PropertyInfo &p_property) const {
+	// As Godot: background_color only matters for Custom Color; ambient colour/energy not when disabled.
+	if (p_property.name == "background_color" && bg_mode != BG_COLOR) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	if ((p_property.name == "ambient_light_color" || p_property.name == "ambient_light_energy") && ambient_source == AMBIENT_SOURCE_DISABLED) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+}
+
+void Environment::_bind_methods() {
+	ClassDB::bind_method(D_METHOD("set_background", "mode"), &Environment::set_background);
+	ClassDB::bind_method(D_METHOD("get_background"), &Environment::get_background);
+	ClassDB::bind_method(D_METHOD("set_bg_color", "color"), &Environment::set_bg_color);
+	ClassDB::bind_method(D_METHOD("get_bg_color"), &Environment::get_bg_color);
+	ClassDB::bind_method(D_METHOD("set_bg_energy_multiplier", "energy"), &Environment::set_bg_energy_multiplier);
+	ClassDB::bind_method(D_METHOD("get_bg_energy_multiplier"), &Environment::get_bg_energy_multiplier);
+	ClassDB::bind_method(D_METHOD("set_ambient_source", "source"), &Environment::set_ambient_source);
+	ClassDB::bind_method(D_METHOD("get_ambient_source"), &Environment::get_ambient_source);
+	ClassDB::bind_method(D_METHOD("set_ambient_light_color", "color"), &Environment::set_ambient_light_color);
+	ClassDB::bind_method(D_METHOD("get_ambient_light_color"), &Environment::get_ambient_light_color);
+	ClassDB::bind_method(D_METHOD("set_ambient_light_energy", "energy"), &Environment::set_ambient_light_energy);
+	ClassDB::bind_method(D_METHOD("get_ambient_light_energy"), &Environment::get_ambient_light_energy);
+
+	ADD_GROUP("Background", "background_");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "background_mode", PROPERTY_HINT_ENUM, "Clear Color,Custom Color,Sky,Canvas,Keep,Camera Feed"), "set_background", "get_background");
+	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "background_color"), "set_bg_color", "get_bg_color");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "background_energy_multiplier", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_bg_energy_multiplier", "get_bg_energy_multiplier");
+
+	ADD_GROUP("Ambient Light", "ambient_light_");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "ambient_light_source", PROPERTY_HINT_ENUM, "Background,Disabled,Color,Sky"), "set_ambient_source", "get_ambient_source");
+	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "ambient_light_color", PROPERTY_HINT_COLOR_NO_ALPHA), "set_ambient_light_color", "get_ambient_light_color");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ambient_light_energy", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_ambient_light_energy", "get_ambient_light_energy");
+	ADD_GROUP("", "");
+
+	BIND_ENUM_CONSTANT(BG_CLEAR_COLOR);
+	BIND_ENUM_CONSTANT(BG_COLOR);
+	BIND_ENUM_CONSTANT(BG_SKY);
+	BIND_ENUM_CONSTANT(BG_CANVAS);
+	BIND_ENUM_CONSTANT(BG_KEEP);
+	BIND_ENUM_CONSTANT(BG_CAMERA_FEED);
+	BIND_ENUM_CONSTANT(BG_MAX);
+	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_BG);
+	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_DISABLED);
+	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_COLOR);
+	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_SKY);
+}
+
+Environment::Environment() {
+	RS *rs = RS::get_singleton();
+	ERR_FAIL_NULL_MSG(rs, "Environment needs a RenderingServer; create one first.");
+	environment = rs->environment_create();
+	// Push the node-side defaults so resource and server agree.
+	rs->environment_set_background(environment, RS::EnvironmentBG(bg_mode));
+	rs->environment_set_bg_color(environment, bg_color);
+	rs->environment_set_bg_energy(environment, bg_energy_multiplier);
+	rs->environment_set_ambient_light(environment, ambient_color, RS::EnvironmentAmbientSource(ambient_source), ambient_energy);
+}
+
+Environment::~Environment() {
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->free(environment);
+	}
+}

@@ -1,0 +1,74 @@
+/**************************************************************************/
+/*  environment.h                                                         */
+/**************************************************************************/
+/* godot-area: Environment resource (background and ambient light subset  */
+/* of Godot 4.7's), owning one RS environment RID. Put it in a scene with */
+/* a WorldEnvironment node or on a Camera3D.                              */
+
+#pragma once
+
+#include "core/io/resource.h"
+#include "servers/rendering_server.h"
+
+class Environment : public Resource {
+	GDCLASS(Environment, Resource);
+
+public:
+	// Values equal Godot's (saved in scene files) and RS::EnvironmentBG.
+	enum BGMode {
+		BG_CLEAR_COLOR = RS::ENV_BG_CLEAR_COLOR,
+		BG_COLOR = RS::ENV_BG_COLOR,
+		BG_SKY = RS::ENV_BG_SKY,
+		BG_CANVAS = RS::ENV_BG_CANVAS,
+		BG_KEEP = RS::ENV_BG_KEEP,
+		BG_CAMERA_FEED = RS::ENV_BG_CAMERA_FEED,
+		BG_MAX
+	};
+	enum AmbientSource {
+		AMBIENT_SOURCE_BG = RS::ENV_AMBIENT_SOURCE_BG,
+		AMBIENT_SOURCE_DISABLED = RS::ENV_AMBIENT_SOURCE_DISABLED,
+		AMBIENT_SOURCE_COLOR = RS::ENV_AMBIENT_SOURCE_COLOR,
+		AMBIENT_SOURCE_SKY = RS::ENV_AMBIENT_SOURCE_SKY,
+		AMBIENT_SOURCE_MAX
+	};
+
+private:
+	RID environment;
+	BGMode bg_mode = BG_CLEAR_COLOR;
+	Color bg_color = Color(0, 0, 0, 1);
+	float bg_energy_multiplier = 1.0f;
+	AmbientSource ambient_source = AMBIENT_SOURCE_BG;
+	Color ambient_color = Color(0, 0, 0, 1);
+	float ambient_energy = 1.0f;
+
+	void _update_ambient_light();
+
+protected:
+	static void _bind_methods();
+	void _validate_property(PropertyInfo &p_property) const;
+
+public:
+	RID get_rid() const override { return environment; }
+
+	void set_background(BGMode p_bg);
+	BGMode get_background() const { return bg_mode; }
+	void set_bg_color(const Color &p_color);
+	Color get_bg_color() const { return bg_color; }
+	// Finite and >= 0.
+	void set_bg_energy_multiplier(float p_multiplier);
+	float get_bg_energy_multiplier() const { return bg_energy_multiplier; }
+
+	void set_ambient_source(AmbientSource p_source);
+	AmbientSource get_ambient_source() const { return ambient_source; }
+	void set_ambient_light_color(const Color &p_color);
+	Color get_ambient_light_color() const { return ambient_color; }
+	// Finite and >= 0.
+	void set_ambient_light_energy(float p_energy);
+	float get_ambient_light_energy() const { return ambient_energy; }
+
+	Environment();
+	~Environment() override;
+};
+
+VARIANT_ENUM_CAST(Environment::BGMode);
+VARIANT_ENUM_CAST(Environment::AmbientSource);

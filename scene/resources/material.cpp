@@ -1,0 +1,243 @@
+/**************************************************************************/
+/*  material.cpp                                                          */
+/**************************************************************************/
+
+#include "scene/resources/material.h"
+
+#include "core/error/error_macros.h"
+
+static bool _color_is_finite(const Color &p_c) {
+	return Math::is_finite(p_c.r) && Math::is_finite(p_c.g) && Math::is_finite(p_c.b) && Math::is_finite(p_c.a);
+}
+
+/* Material */
+
+void Material::_bind_methods() {
+}
+
+Material::Material() {
+	RS *rs = RS::get_singleton();
+	ERR_FAIL_NULL_MSG(rs, "Material needs a RenderingServer; create one first.");
+	material = rs->material_create();
+}
+
+Material::~Material() {
+	RS *rs = RS::get_singleton();
+	if (rs && material.is_valid()) {
+		rs->free(material);
+	}
+}
+
+/* BaseMaterial3D */
+
+RS::MaterialParams BaseMaterial3D::get_params() const {
+	RS::MaterialParams p;
+	p.albedo = albedo;
+	p.albedo_texture = albedo_texture.is_valid() ? albedo_texture->get_rid() : RID();
+	p.roughness = roughness;
+	p.metallic = metallic;
+	p.specular = specular;
+	p.normal_texture = (normal_enabled && normal_texture.is_valid()) ? normal_texture->get_rid() : RID();
+	p.normal_scale = normal_scale;
+	p.emission = emission_enabled ? emission : Color(0, 0, 0, 1);
+	p.emission_energy = emission_energy;
+	p.diffuse_mode = RS::MaterialDiffuseMode(diffuse_mode);
+	p.specular_mode = RS::MaterialSpecularMode(specular_mode);
+	p.unshaded = shading_mode == SHADING_MODE_UNSHADED;
+	p.cull_back = cull_mode == CULL_BACK;
+	return p;
+}
+
+void BaseMaterial3D::_update_params() {
+	RS *rs = RS::get_singleton();
+	if (rs && get_rid().is_valid()) {
+		rs->material_set_params(get_rid(), get_params());
+	}
+	emit_changed();
+}
+
+void BaseMaterial3D::set_shading_mode(ShadingMode p_mode) {
+	ERR_FAIL_INDEX_MSG((int)p_mode, SHADING_MODE_MAX, vformat("shading_mode must be 0..%d (Unshaded, Per-Pixel, Per-Vertex); got %d. The old value is kept.", SHADING_MODE_MAX - 1, (int)p_mode));
+	if (p_mode == SHADING_MODE_PER_VERTEX) {
+		WARN_PRINT_ONCE("shading_mode Per-Vertex is not supported by this renderer; it is shaded per pixel.");
+	}
+	shading_mode = p_mode;
+	_update_params();
+}
+
+void BaseMaterial3D::set_diffuse_mode(DiffuseMode p_mode) {
+	ERR_FAIL_INDEX_MSG((int)p_mode, DIFFUSE_MAX, vformat("diffuse_mode must be 0..%d (Burley, Lambert, Lambert Wrap, Toon); got %d. The old value is kept.", DIFFUSE_MAX - 1, (int)p_mode));
+	diffuse_mode = p_mode;
+	_update_params();
+}
+
+void BaseMaterial3D::set_specular_mode(SpecularMode p_mode) {
+	ERR_FAIL_INDEX_MSG((int)p_mode, SPECULAR_MAX, vformat("specular_mode must be 0..%d (SchlickGGX, Toon, Disabled); got %d. The old value is kept.", SPECULAR_MAX - 1, (int)p_mode));
+	specular_mode = p_mode;
+	_update_params();
+}
+
+void BaseMaterial3D::set_cull_mode(CullMode p_mode) {
+	ERR_FAIL_INDEX_MSG((int)p_mode, CULL_MAX, vformat("cull_mode must be 0..%d (Back, Front, Disabled); got %d. The old value is kept.", CULL_MAX - 1, (int)p_mode));
+	if (p_mode == CULL_FRONT) {
+		WARN_PRINT_ONCE("cull_mode Front is not supported by this renderer; faces are drawn two-sided.");
+	}
+	cull_mode = p_mode;
+	_update_params();
+}
+
+void BaseMaterial3D::set_albedo(const Color &p_albedo) {
+	ERR_FAIL_COND_MSG(!_color_is_finite(p_albedo), "albedo_color must be finite (no NaN or infinity); the old value is kept.");
+	albedo = p_albedo;
+	_update_params();
+}
+
+void BaseMaterial3D::set_albedo_texture(const Ref<Texture2D> &p_texture) {
+	albedo_texture = p_texture;
+	_update_params();
+}
+
+void BaseMaterial3D::set_metallic(float p_metallic) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_metallic) || p_metallic < 0.0f || p_metallic > 1.0f, vformat("metallic must be between 0 and 1 (got %s); the old value is kept.", rtos(p_metallic).c_str()));
+	metallic = p_metallic;
+	_update_params();
+}
+
+void BaseMaterial3D::set_specular(float p_specular) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_specular) || p_specular < 0.0f || p_specular > 1.0f, vformat("metallic_specular must be between 0 and 1 (got %s); the old value is kept.", rtos(p_specular).c_str()));
+	specular = p_specular;
+	_update_params();
+}
+
+void BaseMaterial3D::set_roughness(float p_roughness) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_roughness) || p_roughness < 0.0f || p_roughness > 1.0f, vformat("roughness must be between 0 and 1 (got %s); the old value is kept.", rtos(p_roughness).c_str()));
+	roughness = p_roughness;
+	_update_params();
+}
+
+void BaseMaterial3D::set_emission_enabled(bool p_enabled) {
+	emission_enabled = p_enabled;
+	_update_params();
+	notify_property_list_changed();
+}
+
+void BaseMaterial3D::set_emission(const Color &p_emission) {
+	ERR_FAIL_COND_MSG(!_color_is_finite(p_emission), "emission must be finite (no NaN or infinity); the old value is kept.");
+	emission = p_emission;
+	_update_params();
+}
+
+void BaseMaterial3D::set_emission_energy_multiplier(float p_energy) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_energy) || p_energy < 0.0f, vformat("emission_energy_multiplier must be finite and >= 0 (got %s); the old value is kept.", rtos(p_energy).c_str()));
+	emission_energy = p_energy;
+	_update_params();
+}
+
+void BaseMaterial3D::set_normal_enabled(bool p_enabled) {
+	normal_enabled = p_enabled;
+	_update_params();
+	notify_property_list_changed();
+}
+
+void BaseMaterial3D::set_normal_scale(float p_scale) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_scale), vformat("normal_scale must be finite (got %s); the old value is kept.", rtos(p_scale).c_str()));
+	normal_scale = p_scale;
+	_update_params();
+}
+
+void BaseMaterial3D::set_normal_texture(const Ref<Texture2D> &p_texture) {
+	normal_texture = p_texture;
+	_update_params();
+}
+
+void BaseMaterial3D::_validate_property(PropertyInfo &p_property) const {
+	// As Godot: a feature's properties are saved but not shown while the feature is off.
+	if (!emission_enabled && (p_property.name == "emission" || p_property.name == "emission_energy_multiplier")) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	if (!normal_enabled && (p_property.name == "normal_scale" || p_property.name == "normal_texture")) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+}
+
+void BaseMaterial3D::_bind_methods() {
+	ClassDB::bind_method(D_METHOD("set_shading_mode", "shading_mode"), &BaseMaterial3D::set_shading_mode);
+	ClassDB::bind_method(D_METHOD("get_shading_mode"), &BaseMaterial3D::get_shading_mode);
+	ClassDB::bind_method(D_METHOD("set_diffuse_mode", "diffuse_mode"), &BaseMaterial3D::set_diffuse_mode);
+	ClassDB::bind_method(D_METHOD("get_diffuse_mode"), &BaseMaterial3D::get_diffuse_mode);
+	ClassDB::bind_method(D_METHOD("set_specular_mode", "specular_mode"), &BaseMaterial3D::set_specular_mode);
+	ClassDB::bind_method(D_METHOD("get_specular_mode"), &BaseMaterial3D::get_specular_mode);
+	ClassDB::bind_method(D_METHOD("set_cull_mode", "cull_mode"), &BaseMaterial3D::set_cull_mode);
+	ClassDB::bind_method(D_METHOD("get_cull_mode"), &BaseMaterial3D::get_cull_mode);
+	ClassDB::bind_method(D_METHOD("set_albedo", "albedo"), &BaseMaterial3D::set_albedo);
+	ClassDB::bind_method(D_METHOD("get_albedo"), &BaseMaterial3D::get_albedo);
+	ClassDB::bind_method(D_METHOD("set_albedo_texture", "texture"), &BaseMaterial3D::set_albedo_texture);
+	ClassDB::bind_method(D_METHOD("get_albedo_texture"), &BaseMaterial3D::get_albedo_texture);
+	ClassDB::bind_method(D_METHOD("set_metallic", "metallic"), &BaseMaterial3D::set_metallic);
+	ClassDB::bind_method(D_METHOD("get_metallic"), &BaseMaterial3D::get_metallic);
+	ClassDB::bind_method(D_METHOD("set_specular", "specular"), &BaseMaterial3D::set_specular);
+	ClassDB::bind_method(D_METHOD("get_specular"), &BaseMaterial3D::get_specular);
+	ClassDB::bind_method(D_METHOD("set_roughness", "roughness"), &BaseMaterial3D::set_roughness);
+	ClassDB::bind_method(D_METHOD("get_roughness"), &BaseMaterial3D::get_roughness);
+	ClassDB::bind_method(D_METHOD("set_emission_enabled", "enabled"), &BaseMaterial3D::set_emission_enabled);
+	ClassDB::bind_method(D_METHOD("is_emission_enabled"), &BaseMaterial3D::is_emission_enabled);
+	ClassDB::bind_method(D_METHOD("set_emission", "emission"), &BaseMaterial3D::set_emission);
+	ClassDB::bind_method(D_METHOD("get_emission"), &BaseMaterial3D::get_emission);
+	ClassDB::bind_method(D_METHOD("set_emission_energy_multiplier", "emission_energy_multiplier"), &BaseMaterial3D::set_emission_energy_multiplier);
+	ClassDB::bind_method(D_METHOD("get_emission_energy_multiplier"), &BaseMaterial3D::get_emission_energy_multiplier);
+	ClassDB::bind_method(D_METHOD("set_normal_enabled", "enabled"), &BaseMaterial3D::set_normal_enabled);
+	ClassDB::bind_method(D_METHOD("is_normal_enabled"), &BaseMaterial3D::is_normal_enabled);
+	ClassDB::bind_method(D_METHOD("set_normal_scale", "normal_scale"), &BaseMaterial3D::set_normal_scale);
+	ClassDB::bind_method(D_METHOD("get_normal_scale"), &BaseMaterial3D::get_normal_scale);
+	ClassDB::bind_method(D_METHOD("set_normal_texture", "texture"), &BaseMaterial3D::set_normal_texture);
+	ClassDB::bind_method(D_METHOD("get_normal_texture"), &BaseMaterial3D::get_normal_texture);
+
+	ADD_GROUP("Transparency", "");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "cull_mode", PROPERTY_HINT_ENUM, "Back,Front,Disabled"), "set_cull_mode", "get_cull_mode");
+
+	ADD_GROUP("Shading", "");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "shading_mode", PROPERTY_HINT_ENUM, "Unshaded,Per-Pixel,Per-Vertex"), "set_shading_mode", "get_shading_mode");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "diffuse_mode", PROPERTY_HINT_ENUM, "Burley,Lambert,Lambert Wrap,Toon"), "set_diffuse_mode", "get_diffuse_mode");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "specular_mode", PROPERTY_HINT_ENUM, "SchlickGGX,Toon,Disabled"), "set_specular_mode", "get_specular_mode");
+
+	ADD_GROUP("Albedo", "albedo_");
+	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "albedo_color"), "set_albedo", "get_albedo");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "albedo_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_albedo_texture", "get_albedo_texture");
+
+	ADD_GROUP("Metallic", "metallic_");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "metallic", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_metallic", "get_metallic");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "metallic_specular", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_specular", "get_specular");
+
+	ADD_GROUP("Roughness", "roughness_");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "roughness", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_roughness", "get_roughness");
+
+	ADD_GROUP("Emission", "emission_");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "emission_enabled"), "set_emission_enabled", "is_emission_enabled");
+	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "emission", PROPERTY_HINT_COLOR_NO_ALPHA), "set_emission", "get_emission");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "emission_energy_multiplier", PROPERTY_HINT_RANGE, "0,16,0.01,or_greater"), "set_emission_energy_multiplier", "get_emission_energy_multiplier");
+
+	ADD_GROUP("Normal Map", "normal_");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "normal_enabled"), "set_normal_enabled", "is_normal_enabled");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "normal_scale", PROPERTY_HINT_RANGE, "-16,16,0.01"), "set_normal_scale", "get_normal_scale");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "normal_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_normal_texture", "get_normal_texture");
+	ADD_GROUP("", "");
+
+	BIND_ENUM_CONSTANT(SHADING_MODE_UNSHADED);
+	BIND_ENUM_CONSTANT(SHADING_MODE_PER_PIXEL);
+	BIND_ENUM_CONSTANT(SHADING_MODE_PER_VERTEX);
+	BIND_ENUM_CONSTANT(SHADING_MODE_MAX);
+	BIND_ENUM_CONSTANT(DIFFUSE_BURLEY);
+	BIND_ENUM_CONSTANT(DIFFUSE_LAMBERT);
+	BIND_ENUM_CONSTANT(DIFFUSE_LAMBERT_WRAP);
+	BIND_ENUM_CONSTANT(DIFFUSE_TOON);
+	BIND_ENUM_CONSTANT(SPECULAR_SCHLICK_GGX);
+	BIND_ENUM_CONSTANT(SPECULAR_TOON);
+	BIND_ENUM_CONSTANT(SPECULAR_DISABLED);
+	BIND_ENUM_CONSTANT(CULL_BACK);
+	BIND_ENUM_CONSTANT(CULL_FRONT);
+	BIND_ENUM_CONSTANT(CULL_DISABLED);
+}
+
+BaseMaterial3D::BaseMaterial3D() {
+	_update_params();
+}

@@ -1,0 +1,163 @@
+/**************************************************************************/
+/*  cluster_builder_rd.cpp                                                */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_rd/cluster_builder_rd.h"
+
+#include "core/error/error_macros.h"
+
+#include <cmath>
+#include <cstring>
+
+bool ClusterBuilderRD::initialize(uint32_t p_max_elements) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_NULL_V_MSG(rd, false, "ClusterBuilderRD needs an initialized RenderingDevice.");
+	ERR_FAIL_COND_V_MSG(p_max_elements == 0, false, "ClusterBuilderRD: the maximum element count per type must be at least 1.");
+	finalize();
+
+	if (!shader.initialize("cluster_build.glsl", { "" })) {
+		ERR_FAIL_V_MSG(false, "ClusterBuilderRD: cannot load shaders/cluster_build.glsl.");
+	}
+	RID shader_rid = shader.version_get_shader(0);
+	ERR_FAIL_COND_V_MSG(!shader_rid.is_valid(), false, "ClusterBuilderRD: cluster_build.glsl failed to compile: " + shader.get_last_error());
+	pipeline = rd->compute_pipeline_create(shader_rid);
+	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), false, "ClusterBuilderRD: cannot create the cluster build pipeline.");
+
+	max_elements = (p_max_elements + 31) / 32 * 32;
+	elements.assign(ELEMENT_TYPE_MAX * max_elements, ElementData());
+	element_buffer = rd->storage_buffer_create(uint32_t(elements.size() * sizeof(ElementData)), elements.data());
+	rd->set_resource_name(element_buffer, "ClusterBuilderRD elements");
+	for (uint32_t i = 0; i < ELEMENT_TYPE_MAX; i++) {
+		element_count[i] = 0;
+	}
+	return true;
+}
+
+void ClusterBuilderRD::finalize() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd) {
+		// Freeing a buffer frees the uniform sets that use it.
+		if (cluster_buffer.is_valid()) {
+			rd->free(cluster_buffer);
+		}
+		if (element_buffer.is_valid()) {
+			rd->free(element_buffer);
+		}
+		if (pipeline.is_valid()) {
+			rd->free(pipeline);
+		}
+	}
+	cluster_buffer = RID();
+	element_buffer = RID();
+	uniform_set = RID();
+	pipeline = RID();
+	shader.clear();
+	width = height = tiles_x = tiles_y = 0;
+	max_elements = 0;
+	elements.clear();
+}
+
+ClusterBuilderRD::~ClusterBuilderRD() {
+	finalize();
+}
+
+bool ClusterBuilderRD::setup(uint32_t p_width, uint32_t p_height) {
+	ERR_FAIL_COND_V_MSG(!is_initialized(), false, "ClusterBuilderRD::setup() called before initialize().");
+	ERR_FAIL_COND_V_MSG(p_width == 0 || p_height == 0, false, vformat("ClusterBuilderRD: render size must be positive, got %ux%u.", p_width, p_height));
+	if (p_width == width && p_height == height && cluster_buffer.is_valid()) {
+		return true;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (cluster_buffer.is_valid()) {
+		rd->free(cluster_buffer);
+		cluster_buffer = RID();
+		uniform_set = RID();
+	}
+	width = p_width;
+	height = p_height;
+	tiles_x = (width + TILE_SIZE - 1) / TILE_SIZE;
+	tiles_y = (height + TILE_SIZE - 1) / TILE_SIZE;
+	uint64_t words = uint64_t(ELEMENT_TYPE_MAX) * tiles_x * tiles_y * Z_SLICES * get_words_per_type();
+	ERR_FAIL_COND_V_MSG(words * 4 > 0x7FFFFFFF, false, "ClusterBuilderRD: the cluster buffer would exceed 2 GiB; lower the element count or the resolution.");
+	cluster_buffer = rd->storage_buffer_create(uint32_t(words * 4));
+	rd->set_resource_name(cluster_buffer, "ClusterBuilderRD clusters");
+
+	std::vector<RD::Uniform> uniforms;
+	uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, element_buffer));
+	uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, cluster_buffer));
+	uniform_set = rd->uniform_set_create(uniforms, shader.version_get_shader(0), 0);
+	ERR_FAIL_COND_V_MSG(!uniform_set.is_valid(), false, "ClusterBuilderRD: cannot create the build uniform set.");
+	return true;
+}
+
+void ClusterBuilderRD::begin(const Projection &p_clip_from_view, float p_z_far) {
+	clip_from_view = p_clip_from_view;
+	z_far = p_z_far > 0.0f && std::isfinite(p_z_far) ? p_z_far : 1.0f;
+	for (uint32_t i = 0; i < ELEMENT_TYPE_MAX; i++) {
+		element_count[i] = 0;
+	}
+}
+
+bool ClusterBuilderRD::add_light(ElementType p_type, const Vector3 &p_position, float p_radius, const Vector3 &p_direction, float p_spot_half_angle) {
+	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)ELEMENT_TYPE_MAX, false, "ClusterBuilderRD::add_light: type is not an ElementType value.");
+	if (element_count[p_type] >= max_elements) {
+		return false;
+	}
+	ElementData &e = elements[p_type * max_elements + element_count[p_type]];
+	e = ElementData();
+	e.position[0] = p_position.x;
+	e.position[1] = p_position.y;
+	e.position[2] = p_position.z;
+	e.radius = std::fmax(p_radius, 0.0f);
+	Vector3 dir = p_direction.normalized();
+	e.direction[0] = dir.x;
+	e.direction[1] = dir.y;
+	e.direction[2] = dir.z;
+	float half_angle = std::fmin(std::fmax(p_spot_half_angle, 0.0f), float(Math::PI));
+	e.cone_cos = std::cos(half_angle);
+	e.cone_sin = std::sin(half_angle);
+	element_count[p_type]++;
+	return true;
+}
+
+void ClusterBuilderRD::bake_cluster() {
+	ERR_FAIL_COND_MSG(!cluster_buffer.is_valid(), "ClusterBuilderRD::bake_cluster() called before setup().");
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+
+	// Upload only the used part of each type's range.
+	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
+		if (element_count[t] > 0) {
+			rd->buffer_update(element_buffer, t * max_elements * sizeof(ElementData), element_count[t] * sizeof(ElementData), &elements[t * max_elements]);
+		}
+	}
+
+	BuildPushConstant pc;
+	memset(&pc, 0, sizeof(pc));
+	clip_from_view.inverse().to_floats(pc.view_from_clip);
+	pc.screen_size[0] = float(width);
+	pc.screen_size[1] = float(height);
+	pc.z_far = z_far;
+	pc.words_per_type = get_words_per_type();
+	pc.tiles_x = tiles_x;
+	pc.tiles_y = tiles_y;
+	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
+		pc.element_count[t] = element_count[t];
+	}
+
+	RD::ComputeListID list = rd->compute_list_begin();
+	rd->compute_list_bind_compute_pipeline(list, pipeline);
+	rd->compute_list_bind_uniform_set(list, uniform_set, 0);
+	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
+	rd->compute_list_dispatch_threads(list, tiles_x * tiles_y * Z_SLICES, get_words_per_type(), ELEMENT_TYPE_MAX);
+	rd->compute_list_end();
+}
+
+uint32_t ClusterBuilderRD::get_element_count(ElementType p_type) const {
+	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)ELEMENT_TYPE_MAX, 0, "ClusterBuilderRD::get_element_count: type is not an ElementType value.");
+	return element_count[p_type];
+}
+
+uint32_t ClusterBuilderRD::get_cluster_offset(ElementType p_type, uint32_t p_tile_x, uint32_t p_tile_y, uint32_t p_slice) const {
+	uint32_t tile_index = p_tile_y * tiles_x + p_tile_x;
+	return ((uint32_t(p_type) * tiles_x * tiles_y + tile_index) * Z_SLICES + p_slice) * get_words_per_type();
+}

@@ -1,0 +1,122 @@
+/**************************************************************************/
+/*  cluster_builder_rd.h                                                  */
+/**************************************************************************/
+/* godot-area: the Forward+ cluster builder (Godot's ClusterBuilderRD).   */
+/* 32-pixel screen tiles x 32 linear depth slices; per element type and   */
+/* cluster one bit per element. Layout and bounding-volume tests:         */
+/* shaders/cluster_data_inc.glsl and shaders/cluster_build.glsl.          */
+/*                                                                        */
+/* Per frame: begin() -> add_light() per light, in GPU index order ->     */
+/* bake_cluster() (uploads elements and records one compute dispatch).   */
+/* Unlike Godot (proxy meshes rasterized into tiles) a compute shader     */
+/* tests each element's analytic bounding volume against each cluster's  */
+/* view-space AABB: exact-conservative on every rasterizer.               */
+/*                                                                        */
+/* Adding an element type (area lights): a value in ElementType (and the  */
+/* matching define), a bound kind in cluster_get_bound_type() and, for a  */
+/* new kind, its test in cluster_build.glsl.                              */
+
+#pragma once
+
+#include "core/math/projection.h"
+#include "core/math/vector3.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
+
+#include <vector>
+
+class ClusterBuilderRD {
+public:
+	/* Definition */
+
+	static constexpr uint32_t TILE_SIZE = 32; // Pixels. Must match CLUSTER_TILE_SIZE.
+	static constexpr uint32_t Z_SLICES = 32; // Must match CLUSTER_Z_SLICES.
+
+	// Must match CLUSTER_ELEMENT_TYPE_* (shaders/cluster_data_inc.glsl).
+	enum ElementType {
+		ELEMENT_TYPE_OMNI_LIGHT,
+		ELEMENT_TYPE_SPOT_LIGHT,
+		ELEMENT_TYPE_MAX,
+	};
+
+	// Mirror of ClusterElementData (shaders/cluster_data_inc.glsl), 48 bytes std430.
+	struct ElementData {
+		float position[3]; // View space centre / cone apex.
+		float radius;
+		float direction[3]; // View space unit cone axis.
+		float cone_cos; // cos(half angle).
+		float extents[3]; // Reserved: box half sizes (area lights).
+		float cone_sin; // sin(half angle).
+	};
+	static_assert(sizeof(ElementData) == 48, "ElementData must match shaders/cluster_data_inc.glsl.");
+	static_assert(sizeof(ElementData) % 16 == 0, "ElementData must stay a multiple of 16 bytes.");
+
+	// Mirror of the push constant in shaders/cluster_build.glsl, 112 bytes.
+	struct BuildPushConstant {
+		float view_from_clip[16];
+		float screen_size[2];
+		float z_far;
+		uint32_t words_per_type;
+		uint32_t tiles_x;
+		uint32_t tiles_y;
+		uint32_t pad0;
+		uint32_t pad1;
+		uint32_t element_count[4];
+	};
+	static_assert(sizeof(BuildPushConstant) == 112, "BuildPushConstant must match shaders/cluster_build.glsl.");
+	static_assert(sizeof(BuildPushConstant) % 16 == 0, "BuildPushConstant must stay a multiple of 16 bytes.");
+
+private:
+	/* Private Members */
+
+	ShaderRD shader;
+	RID pipeline;
+	uint32_t max_elements = 0; // Per type, multiple of 32.
+	RID element_buffer; // ElementData[ELEMENT_TYPE_MAX * max_elements]
+	std::vector<ElementData> elements; // Same layout, CPU side.
+	uint32_t element_count[ELEMENT_TYPE_MAX] = {};
+
+	// Per screen size.
+	uint32_t width = 0;
+	uint32_t height = 0;
+	uint32_t tiles_x = 0;
+	uint32_t tiles_y = 0;
+	RID cluster_buffer;
+	RID uniform_set;
+
+	Projection clip_from_view; // Vulkan-corrected.
+	float z_far = 1.0f;
+
+public:
+	/* Public Methods */
+
+	// Compiles the build shader and allocates the element buffer. p_max_elements (per type) is rounded
+	// up to a multiple of 32. Returns false (with an error) when the shader does not compile.
+	bool initialize(uint32_t p_max_elements);
+	// Frees every GPU object (before RenderingDevice::finalize()).
+	void finalize();
+	bool is_initialized() const { return pipeline.is_valid(); }
+
+	// (Re)allocates the cluster buffer for a render size. Returns false for zero sizes.
+	bool setup(uint32_t p_width, uint32_t p_height);
+
+	// Starts a frame: p_clip_from_view is the projection used for rendering (with Vulkan depth
+	// correction), p_z_far the depth the 32 slices cover. Clears the element lists.
+	void begin(const Projection &p_clip_from_view, float p_z_far);
+	// Adds a light in view space. Omni: bound sphere (p_position, p_radius). Spot: range sphere cut by the
+	// cone of half angle p_spot_half_angle (radians) around p_direction. Returns false when full.
+	bool add_light(ElementType p_type, const Vector3 &p_position, float p_radius, const Vector3 &p_direction = Vector3(0, 0, -1), float p_spot_half_angle = 0.0f);
+	// Uploads the elements and records the build dispatch (outside any list).
+	void bake_cluster();
+
+	RID get_cluster_buffer() const { return cluster_buffer; }
+	uint32_t get_tiles_x() const { return tiles_x; }
+	uint32_t get_tiles_y() const { return tiles_y; }
+	uint32_t get_words_per_type() const { return max_elements / 32; }
+	uint32_t get_max_elements() const { return max_elements; }
+	uint32_t get_element_count(ElementType p_type) const;
+	// Index of the first mask word of a cluster (shaders/cluster_data_inc.glsl: cluster_get_offset).
+	uint32_t get_cluster_offset(ElementType p_type, uint32_t p_tile_x, uint32_t p_tile_y, uint32_t p_slice) const;
+
+	ClusterBuilderRD() {}
+	~ClusterBuilderRD();
+};

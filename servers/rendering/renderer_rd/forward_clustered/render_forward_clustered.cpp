@@ -1,0 +1,394 @@
+/**************************************************************************/
+/*  render_forward_clustered.cpp                                          */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+
+#include "core/error/error_macros.h"
+#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
+#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
+#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+
+#include <cmath>
+#include <cstring>
+
+// IEEE 754 binary16 -> binary32 (readback of the RGBA16F target).
+static float _half_to_float(uint16_t p_h) {
+	uint32_t sign = uint32_t(p_h & 0x8000) << 16;
+	uint32_t exponent = (p_h >> 10) & 0x1F;
+	uint32_t mantissa = p_h & 0x3FF;
+	uint32_t bits;
+	if (exponent == 0) {
+		if (mantissa == 0) {
+			bits = sign;
+		} else { // Subnormal: renormalise.
+			exponent = 127 - 15 + 1;
+			while ((mantissa & 0x400) == 0) {
+				mantissa <<= 1;
+				exponent--;
+			}
+			mantissa &= 0x3FF;
+			bits = sign | (exponent << 23) | (mantissa << 13);
+		}
+	} else if (exponent == 31) {
+		bits = sign | 0x7F800000 | (mantissa << 13); // Inf / NaN.
+	} else {
+		bits = sign | ((exponent + 127 - 15) << 23) | (mantissa << 13);
+	}
+	float f;
+	memcpy(&f, &bits, sizeof(f));
+	return f;
+}
+
+static void _transform_to_floats(const Transform3D &p_t, float *r_out) {
+	Projection::from_transform(p_t).to_floats(r_out);
+}
+
+RenderForwardClustered::RenderForwardClustered(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage) :
+		light_storage(p_light_storage), mesh_storage(p_mesh_storage), material_storage(p_material_storage) {
+}
+
+RenderForwardClustered::~RenderForwardClustered() {
+	finalize();
+}
+
+bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "RenderForwardClustered::initialize() needs an initialized RenderingDevice.");
+	ERR_FAIL_COND_V_MSG(!light_storage || !mesh_storage || !material_storage, false, "RenderForwardClustered needs light, mesh and material storages.");
+	if (initialized) {
+		return true;
+	}
+	std::vector<String> variants = { "", "#define MODE_DEPTH\n" };
+	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants), false,
+			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
+	for (int v = 0; v < SCENE_SHADER_MAX; v++) {
+		ERR_FAIL_COND_V_MSG(!scene_shader.version_get_shader(v).is_valid(), false,
+				vformat("RenderForwardClustered: scene shader variant %d failed to compile: %s", v, scene_shader.get_last_error().c_str()));
+	}
+	ERR_FAIL_COND_V_MSG(!cluster_builder.initialize(p_max_lights_per_type), false, "RenderForwardClustered: the cluster builder failed to initialize.");
+	if (!light_storage->is_gpu_initialized()) {
+		ERR_FAIL_COND_V_MSG(!light_storage->initialize_gpu(cluster_builder.get_max_elements()), false, "RenderForwardClustered: light buffers failed.");
+	}
+	ERR_FAIL_COND_V_MSG(light_storage->get_max_lights() > cluster_builder.get_max_elements(), false, "RenderForwardClustered: the light storage holds more lights per type than the cluster builder.");
+	if (!material_storage->get_sampler().is_valid()) {
+		ERR_FAIL_COND_V_MSG(!material_storage->initialize_gpu(), false, "RenderForwardClustered: material storage GPU setup failed.");
+	}
+	scene_ubo = rd->uniform_buffer_create(sizeof(SceneDataUBO));
+	rd->set_resource_name(scene_ubo, "RenderForwardClustered scene data");
+	initialized = true;
+	return true;
+}
+
+void RenderForwardClustered::finalize() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	bool live = rd && rd->is_initialized();
+	for (RID rid : render_target_owner.get_owned_list()) {
+		_free_render_target(render_target_owner.get_or_null(rid));
+		render_target_owner.free(rid);
+	}
+	if (live) {
+		for (auto &kv : pipelines) {
+			rd->free(kv.second);
+		}
+		if (scene_ubo.is_valid()) {
+			rd->free(scene_ubo); // Frees the scene sets too.
+		}
+	}
+	pipelines.clear();
+	scene_ubo = RID();
+	scene_set_color = RID();
+	scene_set_depth = RID();
+	scene_set_cluster_buffer = RID();
+	cluster_builder.finalize();
+	scene_shader.clear();
+	initialized = false;
+}
+
+/* Render targets */
+
+RID RenderForwardClustered::render_target_create(int p_width, int p_height) {
+	ERR_FAIL_COND_V_MSG(!initialized, RID(), "render_target_create: the renderer is not initialized.");
+	ERR_FAIL_COND_V_MSG(p_width <= 0 || p_height <= 0 || p_width > 16384 || p_height > 16384, RID(),
+			vformat("render_target_create: size %dx%d is invalid (expected 1..16384 per side).", p_width, p_height));
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	RenderTarget rt;
+	rt.width = p_width;
+	rt.height = p_height;
+
+	RD::TextureFormat tf;
+	tf.format = HDR_FORMAT;
+	tf.width = p_width;
+	tf.height = p_height;
+	tf.usage_bits = RD::TEXTURE_USAGE_COLOR_ATTACHMENT_BIT | RD::TEXTURE_USAGE_SAMPLING_BIT | RD::TEXTURE_USAGE_CAN_COPY_FROM_BIT;
+	rt.color = rd->texture_create(tf);
+	tf.format = DEPTH_FORMAT;
+	tf.usage_bits = RD::TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | RD::TEXTURE_USAGE_SAMPLING_BIT;
+	rt.depth = rd->texture_create(tf);
+	ERR_FAIL_COND_V_MSG(!rt.color.is_valid() || !rt.depth.is_valid(), RID(), "render_target_create: texture creation failed.");
+	rt.fb_depth = rd->framebuffer_create({ rt.depth });
+	rt.fb_color = rd->framebuffer_create({ rt.color, rt.depth });
+	rd->set_resource_name(rt.color, "RenderForwardClustered HDR colour");
+	return render_target_owner.make_rid(rt);
+}
+
+void RenderForwardClustered::_free_render_target(RenderTarget *p_rt) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (!p_rt || !rd || !rd->is_initialized()) {
+		return;
+	}
+	// Freeing the textures frees the framebuffers made from them.
+	if (p_rt->color.is_valid()) {
+		rd->free(p_rt->color);
+	}
+	if (p_rt->depth.is_valid()) {
+		rd->free(p_rt->depth);
+	}
+}
+
+bool RenderForwardClustered::render_target_free(RID p_rid) {
+	RenderTarget *rt = render_target_owner.get_or_null(p_rid);
+	if (!rt) {
+		return false;
+	}
+	_free_render_target(rt);
+	render_target_owner.free(p_rid);
+	return true;
+}
+
+RID RenderForwardClustered::render_target_get_color_texture(RID p_render_target) const {
+	const RenderTarget *rt = render_target_owner.get_or_null(p_render_target);
+	ERR_FAIL_NULL_V_MSG(rt, RID(), "render_target_get_color_texture: invalid render target RID.");
+	return rt->color;
+}
+
+std::vector<float> RenderForwardClustered::render_target_get_data(RID p_render_target) {
+	const RenderTarget *rt = render_target_owner.get_or_null(p_render_target);
+	ERR_FAIL_NULL_V_MSG(rt, std::vector<float>(), "render_target_get_data: invalid render target RID.");
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	std::vector<uint8_t> bytes = rd->texture_get_data(rt->color);
+	size_t texels = size_t(rt->width) * rt->height * 4;
+	ERR_FAIL_COND_V_MSG(bytes.size() != texels * 2, std::vector<float>(), "render_target_get_data: unexpected readback size.");
+	std::vector<float> out(texels);
+	const uint16_t *h = reinterpret_cast<const uint16_t *>(bytes.data());
+	for (size_t i = 0; i < texels; i++) {
+		out[i] = _half_to_float(h[i]);
+	}
+	return out;
+}
+
+/* Pipelines and sets */
+
+RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format) {
+	uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_format) << 16);
+	auto it = pipelines.find(key);
+	if (it != pipelines.end()) {
+		return it->second;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	RD::PipelineRasterizationState raster;
+	raster.cull_mode = p_cull;
+	// Godot's winding: front faces are clockwise on screen (the projection flips y for Vulkan and the
+	// image is stored top row first, so on-screen orientation is framebuffer orientation).
+	raster.front_face = RD::POLYGON_FRONT_FACE_CLOCKWISE;
+	RD::PipelineDepthStencilState depth;
+	depth.enable_depth_test = true;
+	if (p_variant == SCENE_SHADER_DEPTH) {
+		depth.enable_depth_write = true;
+		depth.depth_compare_operator = RD::COMPARE_OP_LESS;
+	} else {
+		// Depth comes from the pre-pass (invariant gl_Position makes it bit-identical).
+		depth.enable_depth_write = false;
+		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
+	}
+	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(p_variant == SCENE_SHADER_DEPTH ? 0 : 1);
+	RID pipeline = rd->render_pipeline_create(scene_shader.version_get_shader(p_variant), p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
+	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), RID(), "RenderForwardClustered: render pipeline creation failed.");
+	pipelines[key] = pipeline;
+	return pipeline;
+}
+
+bool RenderForwardClustered::_ensure_scene_sets() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	RID cluster_buffer = cluster_builder.get_cluster_buffer();
+	bool color_ok = scene_set_color.is_valid() && rd->uniform_set_is_valid(scene_set_color) && scene_set_cluster_buffer == cluster_buffer;
+	if (!color_ok) {
+		if (scene_set_color.is_valid() && rd->uniform_set_is_valid(scene_set_color)) {
+			rd->free(scene_set_color);
+		}
+		std::vector<RD::Uniform> u;
+		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, scene_ubo));
+		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, light_storage->get_omni_light_buffer()));
+		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, light_storage->get_spot_light_buffer()));
+		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, cluster_buffer));
+		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 4, material_storage->get_sampler()));
+		scene_set_color = rd->uniform_set_create(u, scene_shader.version_get_shader(SCENE_SHADER_COLOR), 0);
+		scene_set_cluster_buffer = cluster_buffer;
+	}
+	if (!scene_set_depth.is_valid() || !rd->uniform_set_is_valid(scene_set_depth)) {
+		std::vector<RD::Uniform> u;
+		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, scene_ubo));
+		scene_set_depth = rd->uniform_set_create(u, scene_shader.version_get_shader(SCENE_SHADER_DEPTH), 0);
+	}
+	return scene_set_color.is_valid() && scene_set_depth.is_valid();
+}
+
+/* Rendering */
+
+void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_render_target) {
+	ERR_FAIL_COND_MSG(!initialized, "render_scene: the renderer is not initialized.");
+	RenderTarget *rt = render_target_owner.get_or_null(p_render_target);
+	ERR_FAIL_NULL_MSG(rt, "render_scene: invalid render target RID.");
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+
+	ERR_FAIL_COND_MSG(!cluster_builder.setup(rt->width, rt->height), "render_scene: cluster setup failed.");
+
+	// Camera. Unit conversions of the frame happen here and in LightStorage::update_light_buffers().
+	Projection clip_from_view = Projection::create_depth_correction(true) * p_data.cam_projection;
+	Transform3D view_from_world = p_data.cam_transform.affine_inverse();
+	float z_far = p_data.z_far > 0.0f ? p_data.z_far : p_data.cam_projection.get_z_far();
+
+	cluster_builder.begin(clip_from_view, z_far);
+	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
+
+	SceneDataUBO ubo;
+	memset(&ubo, 0, sizeof(ubo));
+	clip_from_view.to_floats(ubo.clip_from_view);
+	clip_from_view.inverse().to_floats(ubo.view_from_clip);
+	_transform_to_floats(view_from_world, ubo.view_from_world);
+	_transform_to_floats(p_data.cam_transform, ubo.world_from_view);
+	ubo.viewport_size[0] = float(rt->width);
+	ubo.viewport_size[1] = float(rt->height);
+	ubo.z_near = p_data.z_near;
+	ubo.z_far = z_far;
+	const RenderSceneData::EnvironmentData &env = p_data.environment;
+	Color ambient = env.ambient_color.srgb_to_linear();
+	ubo.ambient_light[0] = ambient.r * env.ambient_energy;
+	ubo.ambient_light[1] = ambient.g * env.ambient_energy;
+	ubo.ambient_light[2] = ambient.b * env.ambient_energy;
+	ubo.ambient_light[3] = 1.0f;
+	ubo.omni_light_count = light_storage->get_omni_light_count();
+	ubo.spot_light_count = light_storage->get_spot_light_count();
+	ubo.cluster_tiles_x = cluster_builder.get_tiles_x();
+	ubo.cluster_tile_count = cluster_builder.get_tiles_x() * cluster_builder.get_tiles_y();
+	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
+	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
+	rd->buffer_update(scene_ubo, 0, sizeof(ubo), &ubo);
+
+	ERR_FAIL_COND_MSG(!_ensure_scene_sets(), "render_scene: scene uniform sets could not be created.");
+
+	// Draw items (material sets are created/updated here, outside any list).
+	struct DrawItem {
+		const RendererRD::MeshStorage::SurfaceGPU *gpu;
+		RID material_set;
+		RD::PolygonCullMode cull;
+		DrawPushConstant pc;
+	};
+	std::vector<DrawItem> items;
+	RID color_shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR);
+	for (const RenderSceneData::GeometryInstance &g : p_data.geometry) {
+		int surface_count = mesh_storage->owns_mesh(g.mesh) ? mesh_storage->mesh_get_surface_count(g.mesh) : 0;
+		if (surface_count == 0) {
+			continue;
+		}
+		DrawPushConstant pc;
+		memset(&pc, 0, sizeof(pc));
+		_transform_to_floats(g.transform, pc.world_from_model);
+		Basis normal_basis = g.transform.basis.inverse().transposed();
+		for (int c = 0; c < 3; c++) {
+			Vector3 col = normal_basis.get_column(c);
+			pc.normal_matrix[c * 4 + 0] = col.x;
+			pc.normal_matrix[c * 4 + 1] = col.y;
+			pc.normal_matrix[c * 4 + 2] = col.z;
+		}
+		pc.layer_mask = g.layer_mask;
+		for (int s = 0; s < surface_count; s++) {
+			const RendererRD::MeshStorage::SurfaceGPU *gpu = mesh_storage->mesh_surface_get_gpu(g.mesh, s);
+			ERR_CONTINUE_MSG(!gpu, "render_scene: a mesh surface has no GPU data (created before the RenderingDevice?); skipped.");
+			RID material = g.material_override.is_valid() ? g.material_override : mesh_storage->mesh_surface_get_material(g.mesh, s);
+			DrawItem item;
+			item.gpu = gpu;
+			item.material_set = material_storage->material_get_uniform_set(material, color_shader);
+			ERR_CONTINUE_MSG(!item.material_set.is_valid(), "render_scene: material uniform set creation failed; surface skipped.");
+			item.cull = material_storage->material_is_cull_back(material) ? RD::POLYGON_CULL_BACK : RD::POLYGON_CULL_DISABLED;
+			item.pc = pc;
+			items.push_back(item);
+		}
+	}
+
+	Color bg = env.bg_color.srgb_to_linear();
+	Color clear_color(bg.r * env.bg_energy, bg.g * env.bg_energy, bg.b * env.bg_energy, 1.0f);
+
+	String prefix = vformat("fc%llu_", (unsigned long long)frame_counter++);
+	rd->capture_timestamp(prefix + "begin");
+
+	// 1. Depth pre-pass.
+	RD::FramebufferFormatID depth_format = rd->framebuffer_get_format(rt->fb_depth);
+	RD::DrawListID list = rd->draw_list_begin(rt->fb_depth, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f);
+	rd->draw_list_bind_uniform_set(list, scene_set_depth, 0);
+	for (const DrawItem &item : items) {
+		rd->draw_list_bind_render_pipeline(list, _get_pipeline(SCENE_SHADER_DEPTH, item.cull, depth_format));
+		rd->draw_list_bind_uniform_set(list, scene_set_depth, 0);
+		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);
+		rd->draw_list_set_push_constant(list, &item.pc, sizeof(item.pc));
+		if (item.gpu->index_array.is_valid()) {
+			rd->draw_list_bind_index_array(list, item.gpu->index_array);
+			rd->draw_list_draw(list, true);
+		} else {
+			rd->draw_list_draw(list, false);
+		}
+	}
+	rd->draw_list_end();
+	rd->capture_timestamp(prefix + "depth_prepass");
+
+	// 2. Cluster build.
+	cluster_builder.bake_cluster();
+	rd->capture_timestamp(prefix + "cluster_build");
+
+	// 3. Opaque pass.
+	RD::FramebufferFormatID color_format = rd->framebuffer_get_format(rt->fb_color);
+	list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, { clear_color }, 1.0f);
+	for (const DrawItem &item : items) {
+		rd->draw_list_bind_render_pipeline(list, _get_pipeline(SCENE_SHADER_COLOR, item.cull, color_format));
+		rd->draw_list_bind_uniform_set(list, scene_set_color, 0);
+		rd->draw_list_bind_uniform_set(list, item.material_set, 1);
+		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);
+		rd->draw_list_set_push_constant(list, &item.pc, sizeof(item.pc));
+		if (item.gpu->index_array.is_valid()) {
+			rd->draw_list_bind_index_array(list, item.gpu->index_array);
+			rd->draw_list_draw(list, true);
+		} else {
+			rd->draw_list_draw(list, false);
+		}
+	}
+	rd->draw_list_end();
+	rd->capture_timestamp(prefix + "opaque");
+
+	rd->submit_and_sync();
+	_read_profile(prefix);
+}
+
+void RenderForwardClustered::_read_profile(const String &p_prefix) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	last_profile.clear();
+	const char *names[4] = { "begin", "depth_prepass", "cluster_build", "opaque" };
+	int64_t found[4] = { -1, -1, -1, -1 };
+	uint32_t count = rd->get_captured_timestamps_count();
+	for (uint32_t i = 0; i < count; i++) {
+		String name = rd->get_captured_timestamp_name(i);
+		for (int n = 0; n < 4; n++) {
+			if (name == p_prefix + names[n]) {
+				found[n] = i;
+			}
+		}
+	}
+	for (int n = 1; n < 4; n++) {
+		if (found[n] < 0 || found[n - 1] < 0) {
+			continue; // Timestamps unsupported on this device.
+		}
+		uint64_t t0 = rd->get_captured_timestamp_gpu_time(uint32_t(found[n - 1]));
+		uint64_t t1 = rd->get_captured_timestamp_gpu_time(uint32_t(found[n]));
+		double ms = t1 >= t0 ? double(t1 - t0) / 1.0e6 : 0.0;
+		last_profile.push_back(std::make_pair(String(names[n]), ms));
+	}
+}

@@ -1,0 +1,159 @@
+/**************************************************************************/
+/*  render_forward_clustered.h                                            */
+/**************************************************************************/
+/* godot-area: the Forward+ renderer on the RenderingDevice (Godot's      */
+/* RendererSceneRenderImplementation::RenderForwardClustered, reduced).   */
+/*                                                                        */
+/* One render_scene() records and submits, in order:                      */
+/*   1. depth pre-pass   (scene shader variant MODE_DEPTH, depth only);   */
+/*   2. cluster build    (ClusterBuilderRD compute dispatch);             */
+/*   3. opaque pass      (colour variant, depth test LESS_OR_EQUAL        */
+/*      against the pre-pass, no depth write) into an RGBA16F HDR target  */
+/*      cleared to the background colour * energy (linear).              */
+/* then waits for the GPU and keeps the pass timestamps (capture_         */
+/* timestamp) for get_last_frame_profile(): "depth_prepass",              */
+/* "cluster_build", "opaque" in milliseconds.                             */
+/*                                                                        */
+/* Shaders: shaders/forward_clustered/scene_forward_clustered.glsl and    */
+/* its includes; GPU struct mirrors below are static_asserted.            */
+
+#pragma once
+
+#include "core/templates/rid_owner.h"
+#include "servers/rendering/renderer_rd/cluster_builder_rd.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
+#include "servers/rendering/renderer_scene_render.h"
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace RendererRD {
+class LightStorage;
+class MeshStorage;
+class MaterialStorage;
+} // namespace RendererRD
+
+class RenderForwardClustered : public RendererSceneRender {
+public:
+	/* Definition */
+
+	// Variant index = position in the define list given to ShaderRD.
+	enum SceneShaderVariant {
+		SCENE_SHADER_COLOR,
+		SCENE_SHADER_DEPTH, // MODE_DEPTH
+		SCENE_SHADER_MAX,
+	};
+
+	// Must match SCENE_FLAG_* in shaders/forward_clustered/scene_forward_clustered_inc.glsl.
+	enum SceneFlags {
+		SCENE_FLAG_FORCE_ALL_LIGHTS = 1,
+	};
+
+	// Must match BRDF_DIFFUSE_* in shaders/brdf_inc.glsl.
+	enum DiffuseMode {
+		DIFFUSE_MODE_BURLEY = 0,
+		DIFFUSE_MODE_LAMBERT = 1,
+	};
+
+	// Mirror of SceneDataBlock (set 0, binding 0, std140) in scene_forward_clustered_inc.glsl.
+	struct SceneDataUBO {
+		float clip_from_view[16];
+		float view_from_clip[16];
+		float view_from_world[16];
+		float world_from_view[16];
+		float viewport_size[2];
+		float z_near;
+		float z_far;
+		float ambient_light[4];
+		uint32_t omni_light_count;
+		uint32_t spot_light_count;
+		uint32_t cluster_tiles_x;
+		uint32_t cluster_tile_count;
+		uint32_t cluster_words_per_type;
+		uint32_t flags; // SceneFlags.
+		uint32_t pad0;
+		uint32_t pad1;
+	};
+	static_assert(sizeof(SceneDataUBO) == 320, "SceneDataUBO must match scene_forward_clustered_inc.glsl.");
+	static_assert(sizeof(SceneDataUBO) % 16 == 0, "SceneDataUBO must stay a multiple of 16 bytes.");
+
+	// Mirror of the DrawData push constant in scene_forward_clustered_inc.glsl.
+	struct DrawPushConstant {
+		float world_from_model[16];
+		float normal_matrix[12]; // 3 columns of 4 floats (xyz used).
+		uint32_t layer_mask;
+		uint32_t flags;
+		uint32_t pad0;
+		uint32_t pad1;
+	};
+	static_assert(sizeof(DrawPushConstant) == 128, "DrawPushConstant must match scene_forward_clustered_inc.glsl.");
+	static_assert(sizeof(DrawPushConstant) % 16 == 0, "DrawPushConstant must stay a multiple of 16 bytes.");
+
+	static constexpr RD::DataFormat HDR_FORMAT = RD::DATA_FORMAT_R16G16B16A16_SFLOAT;
+	static constexpr RD::DataFormat DEPTH_FORMAT = RD::DATA_FORMAT_D32_SFLOAT;
+
+private:
+	/* Private Members */
+
+	struct RenderTarget {
+		int width = 0;
+		int height = 0;
+		RID color; // HDR_FORMAT.
+		RID depth; // DEPTH_FORMAT.
+		RID fb_depth; // { depth }
+		RID fb_color; // { color, depth }
+	};
+
+	RendererRD::LightStorage *light_storage = nullptr;
+	RendererRD::MeshStorage *mesh_storage = nullptr;
+	RendererRD::MaterialStorage *material_storage = nullptr;
+
+	ShaderRD scene_shader;
+	ClusterBuilderRD cluster_builder;
+	RID_Owner<RenderTarget> render_target_owner{ "RenderForwardClustered::RenderTarget" };
+
+	RID scene_ubo;
+	RID scene_set_color; // Set 0 of the colour variant (invalid after the cluster buffer changes).
+	RID scene_set_depth; // Set 0 of the depth variant.
+	RID scene_set_cluster_buffer; // Cluster buffer scene_set_color was made with.
+	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16.
+
+	bool force_all_lights = false;
+	bool initialized = false;
+	std::vector<std::pair<String, double>> last_profile;
+	uint64_t frame_counter = 0;
+
+	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format);
+	bool _ensure_scene_sets();
+	void _free_render_target(RenderTarget *p_rt);
+	void _read_profile(const String &p_prefix);
+
+public:
+	/* Public Methods */
+
+	// Compiles the scene shader variants, sets up the cluster builder and the storages' GPU parts.
+	// Needs an initialized RenderingDevice. Returns false (with an error) on failure.
+	bool initialize(uint32_t p_max_lights_per_type = 512);
+	// Frees every GPU object (render targets included) before RenderingDevice::finalize().
+	void finalize();
+	bool is_initialized() const { return initialized; }
+
+	// RendererSceneRender.
+	void render_scene(const RenderSceneData &p_data, RID p_render_target) override;
+	RID render_target_create(int p_width, int p_height) override;
+	bool render_target_free(RID p_rid) override;
+	bool owns_render_target(RID p_rid) const override { return render_target_owner.owns(p_rid); }
+	std::vector<float> render_target_get_data(RID p_render_target) override;
+	std::vector<std::pair<String, double>> get_last_frame_profile() const override { return last_profile; }
+	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
+	bool is_debug_force_all_lights() const { return force_all_lights; }
+
+	// The cluster builder of the last frame (tests read its buffer and counts).
+	ClusterBuilderRD *get_cluster_builder() { return &cluster_builder; }
+	// The RD texture of a render target's HDR colour (RID() if invalid).
+	RID render_target_get_color_texture(RID p_render_target) const;
+
+	RenderForwardClustered(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage);
+	~RenderForwardClustered();
+};

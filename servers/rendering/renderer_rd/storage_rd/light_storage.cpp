@@ -1,0 +1,424 @@
+/**************************************************************************/
+/*  light_storage.cpp                                                     */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
+
+#include "core/error/error_macros.h"
+#include "core/math/math_funcs.h"
+#include "servers/rendering/renderer_rd/cluster_builder_rd.h"
+#include "servers/rendering/rendering_device.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace RendererRD;
+
+LightStorage::Light *LightStorage::_get_light(RID p_light, const char *p_caller) const {
+	Light *light = light_owner.get_or_null(p_light);
+	if (!light) {
+		ERR_PRINT(vformat("%s: invalid light RID (not created by this light storage, or already freed).", p_caller));
+	}
+	return light;
+}
+
+#define GET_LIGHT_OR_FAIL(m_var)                     \
+	Light *m_var = _get_light(p_light, __FUNCTION__); \
+	if (!m_var) {                                     \
+		return;                                       \
+	}
+
+#define GET_LIGHT_OR_FAIL_V(m_var, m_ret)                  \
+	const Light *m_var = _get_light(p_light, __FUNCTION__); \
+	if (!m_var) {                                           \
+		return m_ret;                                       \
+	}
+
+/* GPU side */
+
+bool LightStorage::initialize_gpu(uint32_t p_max_lights) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_NULL_V_MSG(rd, false, "LightStorage::initialize_gpu() needs an initialized RenderingDevice.");
+	ERR_FAIL_COND_V_MSG(p_max_lights == 0, false, "LightStorage: the maximum light count must be at least 1.");
+	finalize_gpu();
+	max_lights = (p_max_lights + 31) / 32 * 32;
+	uint32_t size = max_lights * sizeof(LightData);
+	omni_light_buffer = rd->storage_buffer_create(size);
+	spot_light_buffer = rd->storage_buffer_create(size);
+	rd->set_resource_name(omni_light_buffer, "LightStorage omni lights");
+	rd->set_resource_name(spot_light_buffer, "LightStorage spot lights");
+	omni_light_count = 0;
+	spot_light_count = 0;
+	return omni_light_buffer.is_valid() && spot_light_buffer.is_valid();
+}
+
+void LightStorage::finalize_gpu() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd) {
+		if (omni_light_buffer.is_valid()) {
+			rd->free(omni_light_buffer);
+		}
+		if (spot_light_buffer.is_valid()) {
+			rd->free(spot_light_buffer);
+		}
+	}
+	omni_light_buffer = RID();
+	spot_light_buffer = RID();
+}
+
+LightStorage::~LightStorage() {
+	finalize_gpu();
+}
+
+bool LightStorage::fill_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, LightData &r_data) const {
+	const Light *light = light_owner.get_or_null(p_light);
+	ERR_FAIL_NULL_V_MSG(light, false, "LightStorage::fill_light_data: invalid light RID.");
+	ERR_FAIL_COND_V_MSG(light->type == RS::LIGHT_DIRECTIONAL, false, "LightStorage::fill_light_data: directional lights are not clustered.");
+
+	Transform3D view_from_light = p_view_from_world * p_world_from_light;
+	Vector3 position = view_from_light.origin;
+	// Lights shine along their local -Z.
+	Vector3 direction = view_from_light.basis.xform(Vector3(0, 0, -1)).normalized();
+	if (direction == Vector3()) {
+		direction = Vector3(0, 0, -1);
+	}
+
+	float range = std::fmax(light->param[RS::LIGHT_PARAM_RANGE], 1e-4f);
+	// Unit conversion (the only one): sRGB -> linear, times energy, times pi (Godot 4 without physical
+	// light units multiplies the energy by pi so the Lambert 1/pi cancels), sign for negative lights.
+	Color linear = light->color.srgb_to_linear();
+	float energy = light->param[RS::LIGHT_PARAM_ENERGY] * float(Math::PI) * (light->negative ? -1.0f : 1.0f);
+
+	r_data = LightData();
+	r_data.position[0] = position.x;
+	r_data.position[1] = position.y;
+	r_data.position[2] = position.z;
+	r_data.inv_radius = 1.0f / range;
+	r_data.direction[0] = direction.x;
+	r_data.direction[1] = direction.y;
+	r_data.direction[2] = direction.z;
+	r_data.size = light->param[RS::LIGHT_PARAM_SIZE];
+	r_data.color[0] = linear.r * energy;
+	r_data.color[1] = linear.g * energy;
+	r_data.color[2] = linear.b * energy;
+	r_data.attenuation = light->param[RS::LIGHT_PARAM_ATTENUATION];
+	if (light->type == RS::LIGHT_SPOT) {
+		r_data.cone_attenuation = light->param[RS::LIGHT_PARAM_SPOT_ATTENUATION];
+		r_data.cone_angle = std::cos(Math::deg_to_rad(light->param[RS::LIGHT_PARAM_SPOT_ANGLE]));
+	} else {
+		r_data.cone_attenuation = 0.0f;
+		r_data.cone_angle = -1.0f;
+	}
+	r_data.specular_amount = light->param[RS::LIGHT_PARAM_SPECULAR];
+	r_data.cull_mask = light->cull_mask;
+	return true;
+}
+
+void LightStorage::update_light_buffers(const std::vector<RenderSceneData::LightInstance> &p_lights, const Transform3D &p_view_from_world, ClusterBuilderRD *p_cluster_builder) {
+	ERR_FAIL_COND_MSG(!is_gpu_initialized(), "LightStorage::update_light_buffers() called before initialize_gpu().");
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+
+	struct Sorted {
+		float distance_sq;
+		uint32_t index; // In p_lights (ties keep scene order).
+		LightData data;
+		float range;
+		float spot_angle;
+	};
+	std::vector<Sorted> omnis;
+	std::vector<Sorted> spots;
+	for (uint32_t i = 0; i < p_lights.size(); i++) {
+		const RenderSceneData::LightInstance &li = p_lights[i];
+		const Light *light = light_owner.get_or_null(li.light);
+		ERR_CONTINUE_MSG(!light, "update_light_buffers: a visible light instance has an invalid light RID; skipped.");
+		if (light->type == RS::LIGHT_DIRECTIONAL) {
+			continue;
+		}
+		Sorted s;
+		if (!fill_light_data(li.light, li.transform, p_view_from_world, s.data)) {
+			continue;
+		}
+		Vector3 p(s.data.position[0], s.data.position[1], s.data.position[2]);
+		s.distance_sq = p.length_squared();
+		s.index = i;
+		s.range = std::fmax(light->param[RS::LIGHT_PARAM_RANGE], 1e-4f);
+		s.spot_angle = Math::deg_to_rad(light->param[RS::LIGHT_PARAM_SPOT_ANGLE]);
+		(light->type == RS::LIGHT_OMNI ? omnis : spots).push_back(s);
+	}
+	auto nearest_first = [](const Sorted &a, const Sorted &b) {
+		return a.distance_sq != b.distance_sq ? a.distance_sq < b.distance_sq : a.index < b.index;
+	};
+	std::sort(omnis.begin(), omnis.end(), nearest_first);
+	std::sort(spots.begin(), spots.end(), nearest_first);
+	if (omnis.size() > max_lights) {
+		omnis.resize(max_lights);
+	}
+	if (spots.size() > max_lights) {
+		spots.resize(max_lights);
+	}
+
+	omni_data.clear();
+	spot_data.clear();
+	// Cluster element N of a type == GPU light N of that type: both are filled here, in this order.
+	for (const Sorted &s : omnis) {
+		omni_data.push_back(s.data);
+		if (p_cluster_builder) {
+			p_cluster_builder->add_light(ClusterBuilderRD::ELEMENT_TYPE_OMNI_LIGHT, Vector3(s.data.position[0], s.data.position[1], s.data.position[2]), s.range);
+		}
+	}
+	for (const Sorted &s : spots) {
+		spot_data.push_back(s.data);
+		if (p_cluster_builder) {
+			p_cluster_builder->add_light(ClusterBuilderRD::ELEMENT_TYPE_SPOT_LIGHT, Vector3(s.data.position[0], s.data.position[1], s.data.position[2]), s.range,
+					Vector3(s.data.direction[0], s.data.direction[1], s.data.direction[2]), s.spot_angle);
+		}
+	}
+	omni_light_count = uint32_t(omni_data.size());
+	spot_light_count = uint32_t(spot_data.size());
+	if (omni_light_count) {
+		rd->buffer_update(omni_light_buffer, 0, omni_light_count * sizeof(LightData), omni_data.data());
+	}
+	if (spot_light_count) {
+		rd->buffer_update(spot_light_buffer, 0, spot_light_count * sizeof(LightData), spot_data.data());
+	}
+}
+
+/* RendererLightStorage */
+
+RID LightStorage::light_create(RS::LightType p_type) {
+	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)RS::LIGHT_SPOT + 1, RID(), "light_create: type is not a LightType value.");
+	Light light;
+	light.type = p_type;
+	for (int i = 0; i < RS::LIGHT_PARAM_MAX; i++) {
+		light.param[i] = get_default_param(p_type, RS::LightParam(i));
+	}
+	return light_owner.make_rid(light);
+}
+
+bool LightStorage::light_free(RID p_rid) {
+	if (!light_owner.owns(p_rid)) {
+		return false;
+	}
+	light_owner.free(p_rid);
+	return true;
+}
+
+void LightStorage::light_set_param(RID p_light, RS::LightParam p_param, float p_value) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_INDEX_MSG((int)p_param, (int)RS::LIGHT_PARAM_MAX, "light_set_param: parameter is not a LightParam value.");
+	if (!validate_param(p_param, p_value)) {
+		return;
+	}
+	if (light->param[p_param] == p_value) {
+		return;
+	}
+	light->param[p_param] = p_value;
+	switch (p_param) {
+		case RS::LIGHT_PARAM_RANGE:
+		case RS::LIGHT_PARAM_SPOT_ANGLE:
+		case RS::LIGHT_PARAM_SHADOW_MAX_DISTANCE:
+		case RS::LIGHT_PARAM_SHADOW_SPLIT_1_OFFSET:
+		case RS::LIGHT_PARAM_SHADOW_SPLIT_2_OFFSET:
+		case RS::LIGHT_PARAM_SHADOW_SPLIT_3_OFFSET:
+		case RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS:
+		case RS::LIGHT_PARAM_SHADOW_BIAS:
+		case RS::LIGHT_PARAM_SHADOW_PANCAKE_SIZE:
+			light->version++; // Culling bounds or cached shadows change.
+			break;
+		default:
+			break;
+	}
+}
+
+void LightStorage::light_set_color(RID p_light, const Color &p_color) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(!p_color.is_finite(), "light_set_color: colour must be finite; the old value is kept.");
+	light->color = p_color;
+}
+
+void LightStorage::light_set_shadow(RID p_light, bool p_enabled) {
+	GET_LIGHT_OR_FAIL(light);
+	if (light->shadow == p_enabled) {
+		return;
+	}
+	light->shadow = p_enabled;
+	light->version++;
+}
+
+void LightStorage::light_set_negative(RID p_light, bool p_enable) {
+	GET_LIGHT_OR_FAIL(light);
+	light->negative = p_enable;
+}
+
+void LightStorage::light_set_cull_mask(RID p_light, uint32_t p_mask) {
+	GET_LIGHT_OR_FAIL(light);
+	if (light->cull_mask == p_mask) {
+		return;
+	}
+	light->cull_mask = p_mask;
+	light->version++;
+}
+
+void LightStorage::light_set_shadow_caster_mask(RID p_light, uint32_t p_mask) {
+	GET_LIGHT_OR_FAIL(light);
+	if (light->shadow_caster_mask == p_mask) {
+		return;
+	}
+	light->shadow_caster_mask = p_mask;
+	light->version++;
+}
+
+void LightStorage::light_set_reverse_cull_face_mode(RID p_light, bool p_enabled) {
+	GET_LIGHT_OR_FAIL(light);
+	if (light->reverse_cull == p_enabled) {
+		return;
+	}
+	light->reverse_cull = p_enabled;
+	light->version++;
+}
+
+void LightStorage::light_set_bake_mode(RID p_light, RS::LightBakeMode p_mode) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_INDEX_MSG((int)p_mode, (int)RS::LIGHT_BAKE_DYNAMIC + 1, "light_set_bake_mode: mode is not a LightBakeMode value.");
+	light->bake_mode = p_mode;
+}
+
+void LightStorage::light_set_distance_fade(RID p_light, bool p_enabled, float p_begin, float p_shadow, float p_length) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(!std::isfinite(p_begin) || !std::isfinite(p_shadow) || !std::isfinite(p_length), "light_set_distance_fade: distances must be finite; the old values are kept.");
+	light->distance_fade = p_enabled;
+	light->distance_fade_begin = p_begin;
+	light->distance_fade_shadow = p_shadow;
+	light->distance_fade_length = p_length;
+}
+
+void LightStorage::light_omni_set_shadow_mode(RID p_light, RS::LightOmniShadowMode p_mode) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_INDEX_MSG((int)p_mode, (int)RS::LIGHT_OMNI_SHADOW_CUBE + 1, "light_omni_set_shadow_mode: mode is not a LightOmniShadowMode value.");
+	if (light->omni_shadow_mode == p_mode) {
+		return;
+	}
+	light->omni_shadow_mode = p_mode;
+	light->version++;
+}
+
+void LightStorage::light_directional_set_shadow_mode(RID p_light, RS::LightDirectionalShadowMode p_mode) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_INDEX_MSG((int)p_mode, (int)RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_4_SPLITS + 1, "light_directional_set_shadow_mode: mode is not a LightDirectionalShadowMode value.");
+	if (light->directional_shadow_mode == p_mode) {
+		return;
+	}
+	light->directional_shadow_mode = p_mode;
+	light->version++;
+}
+
+void LightStorage::light_directional_set_blend_splits(RID p_light, bool p_enable) {
+	GET_LIGHT_OR_FAIL(light);
+	if (light->directional_blend_splits == p_enable) {
+		return;
+	}
+	light->directional_blend_splits = p_enable;
+	light->version++;
+}
+
+void LightStorage::light_directional_set_sky_mode(RID p_light, RS::LightDirectionalSkyMode p_mode) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_INDEX_MSG((int)p_mode, (int)RS::LIGHT_DIRECTIONAL_SKY_MODE_SKY_ONLY + 1, "light_directional_set_sky_mode: mode is not a LightDirectionalSkyMode value.");
+	light->directional_sky_mode = p_mode;
+}
+
+RS::LightType LightStorage::light_get_type(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_DIRECTIONAL);
+	return light->type;
+}
+
+float LightStorage::light_get_param(RID p_light, RS::LightParam p_param) const {
+	GET_LIGHT_OR_FAIL_V(light, 0.0f);
+	ERR_FAIL_INDEX_V_MSG((int)p_param, (int)RS::LIGHT_PARAM_MAX, 0.0f, "light_get_param: parameter is not a LightParam value.");
+	return light->param[p_param];
+}
+
+Color LightStorage::light_get_color(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, Color());
+	return light->color;
+}
+
+bool LightStorage::light_has_shadow(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->shadow;
+}
+
+bool LightStorage::light_is_negative(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->negative;
+}
+
+uint32_t LightStorage::light_get_cull_mask(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, 0);
+	return light->cull_mask;
+}
+
+uint32_t LightStorage::light_get_shadow_caster_mask(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, 0);
+	return light->shadow_caster_mask;
+}
+
+bool LightStorage::light_get_reverse_cull_face_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->reverse_cull;
+}
+
+RS::LightBakeMode LightStorage::light_get_bake_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_BAKE_DISABLED);
+	return light->bake_mode;
+}
+
+bool LightStorage::light_is_distance_fade_enabled(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->distance_fade;
+}
+
+float LightStorage::light_get_distance_fade_begin(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, 0.0f);
+	return light->distance_fade_begin;
+}
+
+float LightStorage::light_get_distance_fade_shadow(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, 0.0f);
+	return light->distance_fade_shadow;
+}
+
+float LightStorage::light_get_distance_fade_length(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, 0.0f);
+	return light->distance_fade_length;
+}
+
+RS::LightOmniShadowMode LightStorage::light_omni_get_shadow_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_OMNI_SHADOW_CUBE);
+	return light->omni_shadow_mode;
+}
+
+RS::LightDirectionalShadowMode LightStorage::light_directional_get_shadow_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL);
+	return light->directional_shadow_mode;
+}
+
+bool LightStorage::light_directional_get_blend_splits(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->directional_blend_splits;
+}
+
+RS::LightDirectionalSkyMode LightStorage::light_directional_get_sky_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_AND_SKY);
+	return light->directional_sky_mode;
+}
+
+AABB LightStorage::light_get_aabb(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, AABB());
+	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE]);
+}
+
+uint64_t LightStorage::light_get_version(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, 0);
+	return light->version;
+}

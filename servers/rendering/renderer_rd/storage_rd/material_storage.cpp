@@ -1,0 +1,271 @@
+/**************************************************************************/
+/*  material_storage.cpp                                                  */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
+
+#include "core/error/error_macros.h"
+
+#include <cstring>
+
+using namespace RendererRD;
+
+static RID _create_solid_texture(RenderingDevice *p_rd, const Color &p_color) {
+	RD::TextureFormat tf;
+	tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
+	tf.width = 1;
+	tf.height = 1;
+	tf.usage_bits = RD::TEXTURE_USAGE_SAMPLING_BIT | RD::TEXTURE_USAGE_CAN_UPDATE_BIT;
+	float texel[4] = { p_color.r, p_color.g, p_color.b, p_color.a };
+	std::vector<uint8_t> bytes(sizeof(texel));
+	memcpy(bytes.data(), texel, sizeof(texel));
+	return p_rd->texture_create(tf, { bytes });
+}
+
+bool MaterialStorage::initialize_gpu() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "MaterialStorage::initialize_gpu() needs an initialized RenderingDevice.");
+	finalize_gpu();
+	white_texture = _create_solid_texture(rd, Color(1, 1, 1, 1));
+	normal_texture = _create_solid_texture(rd, Color(0.5f, 0.5f, 1.0f, 1.0f));
+	RD::SamplerState ss;
+	ss.mag_filter = RD::SAMPLER_FILTER_LINEAR;
+	ss.min_filter = RD::SAMPLER_FILTER_LINEAR;
+	ss.repeat_u = RD::SAMPLER_REPEAT_MODE_REPEAT;
+	ss.repeat_v = RD::SAMPLER_REPEAT_MODE_REPEAT;
+	sampler = rd->sampler_create(ss);
+	default_material = material_create();
+	// Textures made before the device existed get their GPU copy now.
+	for (RID rid : texture_owner.get_owned_list()) {
+		Texture *t = texture_owner.get_or_null(rid);
+		if (t && !t->rd_texture.is_valid()) {
+			RD::TextureFormat tf;
+			tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
+			tf.width = t->image.get_width();
+			tf.height = t->image.get_height();
+			tf.usage_bits = RD::TEXTURE_USAGE_SAMPLING_BIT | RD::TEXTURE_USAGE_CAN_UPDATE_BIT;
+			std::vector<uint8_t> bytes(t->image.get_data().size() * sizeof(float));
+			memcpy(bytes.data(), t->image.ptr(), bytes.size());
+			t->rd_texture = rd->texture_create(tf, { bytes });
+		}
+	}
+	return white_texture.is_valid() && normal_texture.is_valid() && sampler.is_valid();
+}
+
+void MaterialStorage::finalize_gpu() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	bool live = rd && rd->is_initialized();
+	for (RID rid : material_owner.get_owned_list()) {
+		Material *m = material_owner.get_or_null(rid);
+		if (!m) {
+			continue;
+		}
+		if (live && m->uniform_buffer.is_valid()) {
+			rd->free(m->uniform_buffer); // Also frees its uniform set.
+		}
+		m->uniform_buffer = RID();
+		m->uniform_set = RID();
+		m->ubo_dirty = true;
+	}
+	for (RID rid : texture_owner.get_owned_list()) {
+		Texture *t = texture_owner.get_or_null(rid);
+		if (t && t->rd_texture.is_valid()) {
+			if (live) {
+				rd->free(t->rd_texture);
+			}
+			t->rd_texture = RID();
+		}
+	}
+	if (live) {
+		if (white_texture.is_valid()) {
+			rd->free(white_texture);
+		}
+		if (normal_texture.is_valid()) {
+			rd->free(normal_texture);
+		}
+		if (sampler.is_valid()) {
+			rd->free(sampler);
+		}
+	}
+	white_texture = RID();
+	normal_texture = RID();
+	sampler = RID();
+	if (default_material.is_valid()) {
+		material_owner.free(default_material);
+		default_material = RID();
+	}
+}
+
+MaterialStorage::~MaterialStorage() {
+	finalize_gpu();
+}
+
+MaterialStorage::MaterialUBO MaterialStorage::_make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal) {
+	MaterialUBO ubo;
+	memset(&ubo, 0, sizeof(ubo));
+	// Unit conversion: node colours are sRGB.
+	Color albedo = p_params.albedo.srgb_to_linear();
+	ubo.albedo[0] = albedo.r;
+	ubo.albedo[1] = albedo.g;
+	ubo.albedo[2] = albedo.b;
+	ubo.albedo[3] = albedo.a;
+	Color emission = p_params.emission.srgb_to_linear();
+	ubo.emission[0] = emission.r * p_params.emission_energy;
+	ubo.emission[1] = emission.g * p_params.emission_energy;
+	ubo.emission[2] = emission.b * p_params.emission_energy;
+	ubo.roughness = p_params.roughness;
+	ubo.metallic = p_params.metallic;
+	ubo.specular = p_params.specular;
+	ubo.normal_scale = p_params.normal_scale;
+	ubo.flags = 0;
+	if (p_has_albedo) {
+		ubo.flags |= MATERIAL_FLAG_ALBEDO_TEXTURE;
+	}
+	if (p_has_normal) {
+		ubo.flags |= MATERIAL_FLAG_NORMAL_MAP;
+	}
+	if (p_params.unshaded) {
+		ubo.flags |= MATERIAL_FLAG_UNSHADED;
+	}
+	if (p_params.specular_mode == RS::MATERIAL_SPECULAR_DISABLED) {
+		ubo.flags |= MATERIAL_FLAG_SPECULAR_DISABLED;
+	}
+	// Lambert wrap and toon are not implemented: they fall back to Lambert (the closest model).
+	ubo.diffuse_mode = p_params.diffuse_mode == RS::MATERIAL_DIFFUSE_BURLEY ? 0u : 1u;
+	return ubo;
+}
+
+RID MaterialStorage::_rd_texture_for(RID p_texture, RID p_fallback) const {
+	if (!p_texture.is_valid()) {
+		return p_fallback;
+	}
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	return (t && t->rd_texture.is_valid()) ? t->rd_texture : p_fallback;
+}
+
+RID MaterialStorage::material_get_uniform_set(RID p_material, RID p_shader) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_COND_V_MSG(!white_texture.is_valid(), RID(), "material_get_uniform_set() called before initialize_gpu().");
+	Material *m = material_owner.get_or_null(p_material);
+	if (!m) {
+		m = material_owner.get_or_null(default_material);
+		ERR_FAIL_NULL_V_MSG(m, RID(), "material_get_uniform_set: the default material is missing.");
+	}
+	RID albedo_tex = _rd_texture_for(m->params.albedo_texture, RID());
+	RID normal_tex = _rd_texture_for(m->params.normal_texture, RID());
+	if (!m->uniform_buffer.is_valid()) {
+		m->uniform_buffer = rd->uniform_buffer_create(sizeof(MaterialUBO));
+		m->ubo_dirty = true;
+	}
+	if (m->ubo_dirty || albedo_tex != m->set_albedo_texture || normal_tex != m->set_normal_texture) {
+		MaterialUBO ubo = _make_ubo(m->params, albedo_tex.is_valid(), normal_tex.is_valid());
+		rd->buffer_update(m->uniform_buffer, 0, sizeof(ubo), &ubo);
+		m->ubo_dirty = false;
+	}
+	bool set_ok = m->uniform_set.is_valid() && rd->uniform_set_is_valid(m->uniform_set) && m->uniform_set_shader == p_shader &&
+			albedo_tex == m->set_albedo_texture && normal_tex == m->set_normal_texture;
+	if (!set_ok) {
+		if (m->uniform_set.is_valid() && rd->uniform_set_is_valid(m->uniform_set)) {
+			rd->free(m->uniform_set);
+		}
+		std::vector<RD::Uniform> uniforms;
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, m->uniform_buffer));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 1, albedo_tex.is_valid() ? albedo_tex : white_texture));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, normal_tex.is_valid() ? normal_tex : normal_texture));
+		m->uniform_set = rd->uniform_set_create(uniforms, p_shader, 1);
+		m->uniform_set_shader = p_shader;
+		m->set_albedo_texture = albedo_tex;
+		m->set_normal_texture = normal_tex;
+	}
+	return m->uniform_set;
+}
+
+bool MaterialStorage::material_is_cull_back(RID p_material) const {
+	const Material *m = material_owner.get_or_null(p_material);
+	if (!m) {
+		m = material_owner.get_or_null(default_material);
+	}
+	return m ? m->params.cull_back : true;
+}
+
+RID MaterialStorage::material_create() {
+	return material_owner.make_rid();
+}
+
+bool MaterialStorage::material_free(RID p_rid) {
+	Material *m = material_owner.get_or_null(p_rid);
+	if (!m) {
+		return false;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd && rd->is_initialized() && m->uniform_buffer.is_valid()) {
+		rd->free(m->uniform_buffer); // Also frees the uniform set.
+	}
+	material_owner.free(p_rid);
+	return true;
+}
+
+void MaterialStorage::material_set_params(RID p_material, const RS::MaterialParams &p_params) {
+	Material *m = material_owner.get_or_null(p_material);
+	ERR_FAIL_NULL_MSG(m, "material_set_params: invalid material RID.");
+	if (!validate_params(p_params)) {
+		return;
+	}
+	m->params = p_params;
+	m->ubo_dirty = true;
+}
+
+RS::MaterialParams MaterialStorage::material_get_params(RID p_material) const {
+	const Material *m = material_owner.get_or_null(p_material);
+	ERR_FAIL_NULL_V_MSG(m, RS::MaterialParams(), "material_get_params: invalid material RID.");
+	return m->params;
+}
+
+RID MaterialStorage::texture_2d_create(const Image &p_image) {
+	ERR_FAIL_COND_V_MSG(p_image.is_empty(), RID(), "texture_2d_create: the image is empty.");
+	Texture t;
+	t.image = p_image;
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd && rd->is_initialized() && white_texture.is_valid()) {
+		RD::TextureFormat tf;
+		tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
+		tf.width = p_image.get_width();
+		tf.height = p_image.get_height();
+		tf.usage_bits = RD::TEXTURE_USAGE_SAMPLING_BIT | RD::TEXTURE_USAGE_CAN_UPDATE_BIT;
+		std::vector<uint8_t> bytes(p_image.get_data().size() * sizeof(float));
+		memcpy(bytes.data(), p_image.ptr(), bytes.size());
+		t.rd_texture = rd->texture_create(tf, { bytes });
+	}
+	return texture_owner.make_rid(t);
+}
+
+bool MaterialStorage::texture_free(RID p_rid) {
+	Texture *t = texture_owner.get_or_null(p_rid);
+	if (!t) {
+		return false;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd && rd->is_initialized() && t->rd_texture.is_valid()) {
+		rd->free(t->rd_texture); // Uniform sets using it are freed too; materials rebuild theirs.
+	}
+	texture_owner.free(p_rid);
+	return true;
+}
+
+int MaterialStorage::texture_get_width(RID p_texture) const {
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, 0, "texture_get_width: invalid texture RID.");
+	return t->image.get_width();
+}
+
+int MaterialStorage::texture_get_height(RID p_texture) const {
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, 0, "texture_get_height: invalid texture RID.");
+	return t->image.get_height();
+}
+
+const Image *MaterialStorage::texture_get_image(RID p_texture) const {
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, nullptr, "texture_get_image: invalid texture RID.");
+	return &t->image;
+}

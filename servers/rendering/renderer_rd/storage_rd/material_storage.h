@@ -1,0 +1,104 @@
+/**************************************************************************/
+/*  material_storage.h                                                    */
+/**************************************************************************/
+/* godot-area: materials and textures on the RenderingDevice (Godot's     */
+/* RendererRD::MaterialStorage + TextureStorage, reduced to the built-in  */
+/* StandardMaterial3D subset). A material owns a uniform buffer           */
+/* (MaterialUBO) and, created on first use by the renderer, the uniform   */
+/* set 1 of the scene shader. Textures are RGBA32F copies of the Image.   */
+
+#pragma once
+
+#include "core/templates/rid_owner.h"
+#include "servers/rendering/rendering_device.h"
+#include "servers/rendering/storage/material_storage.h"
+
+namespace RendererRD {
+
+class MaterialStorage : public RendererMaterialStorage {
+public:
+	// Must match MATERIAL_FLAG_* (shaders/forward_clustered/scene_forward_clustered_inc.glsl).
+	enum MaterialFlags {
+		MATERIAL_FLAG_ALBEDO_TEXTURE = 1,
+		MATERIAL_FLAG_NORMAL_MAP = 2,
+		MATERIAL_FLAG_UNSHADED = 4,
+		MATERIAL_FLAG_SPECULAR_DISABLED = 8,
+	};
+
+	// Mirror of MaterialBlock (set 1, binding 0, std140) in
+	// shaders/forward_clustered/scene_forward_clustered_inc.glsl. 64 bytes.
+	struct MaterialUBO {
+		float albedo[4]; // Linear rgb, alpha.
+		float emission[4]; // Linear rgb * emission_energy, a unused.
+		float roughness;
+		float metallic;
+		float specular;
+		float normal_scale;
+		uint32_t flags; // MaterialFlags.
+		uint32_t diffuse_mode; // BRDF_DIFFUSE_* (brdf_inc.glsl): 0 Burley, 1 Lambert.
+		uint32_t pad0;
+		uint32_t pad1;
+	};
+	static_assert(sizeof(MaterialUBO) == 64, "MaterialUBO must match scene_forward_clustered_inc.glsl.");
+	static_assert(sizeof(MaterialUBO) % 16 == 0, "MaterialUBO must stay a multiple of 16 bytes.");
+
+private:
+	struct Material {
+		RS::MaterialParams params;
+		RID uniform_buffer;
+		RID uniform_set;
+		RID uniform_set_shader; // Shader the set was made for.
+		RID set_albedo_texture; // RD textures bound in uniform_set (to notice freed textures).
+		RID set_normal_texture;
+		bool ubo_dirty = true;
+	};
+	struct Texture {
+		Image image;
+		RID rd_texture;
+	};
+
+	mutable RID_Owner<Material, true> material_owner{ "RendererRD::Material" };
+	mutable RID_Owner<Texture, true> texture_owner{ "RendererRD::Texture" };
+
+	RID default_material;
+	RID white_texture; // RD texture (1, 1, 1, 1).
+	RID normal_texture; // RD texture (0.5, 0.5, 1, 1): flat normal.
+	RID sampler; // Linear, repeat.
+
+	static MaterialUBO _make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal);
+	RID _rd_texture_for(RID p_texture, RID p_fallback) const;
+
+public:
+	// Creates default textures, the sampler and the default material (needs a RenderingDevice).
+	bool initialize_gpu();
+	// Frees every GPU object (before RenderingDevice::finalize()).
+	void finalize_gpu();
+
+	// The uniform set 1 of p_shader for a material (an invalid or RID() material uses the default one).
+	// Created on first use and when bound textures changed.
+	RID material_get_uniform_set(RID p_material, RID p_shader);
+	// True when the material draws with back faces culled (MaterialParams::cull_back).
+	bool material_is_cull_back(RID p_material) const;
+	RID get_default_material() const { return default_material; }
+	RID get_sampler() const { return sampler; }
+	// Converts the parameters as the shader reads them (tests).
+	static MaterialUBO make_material_ubo(const RS::MaterialParams &p_params) { return _make_ubo(p_params, p_params.albedo_texture.is_valid(), p_params.normal_texture.is_valid()); }
+
+	RID material_create() override;
+	bool material_free(RID p_rid) override;
+	bool owns_material(RID p_rid) const override { return material_owner.owns(p_rid); }
+	void material_set_params(RID p_material, const RS::MaterialParams &p_params) override;
+	RS::MaterialParams material_get_params(RID p_material) const override;
+
+	RID texture_2d_create(const Image &p_image) override;
+	bool texture_free(RID p_rid) override;
+	bool owns_texture(RID p_rid) const override { return texture_owner.owns(p_rid); }
+	int texture_get_width(RID p_texture) const override;
+	int texture_get_height(RID p_texture) const override;
+	const Image *texture_get_image(RID p_texture) const override;
+
+	MaterialStorage() {}
+	~MaterialStorage();
+};
+
+} // namespace RendererRD

@@ -1,0 +1,1404 @@
+/**************************************************************************/
+/*  rendering_device.cpp                                                  */
+/**************************************************************************/
+/* Device setup, frames, buffers, textures, samplers, freeing, debug.     */
+/* Shaders/pipelines live in rendering_device_pipelines.cpp, draw and     */
+/* compute lists in rendering_device_lists.cpp.                           */
+
+#include "servers/rendering/rendering_device.h"
+
+#include "servers/rendering/rendering_device_impl.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
+
+RenderingDevice *RenderingDevice::singleton = nullptr;
+
+typedef RenderingDevice::Impl RDImpl;
+
+/**************************/
+/**** STATIC FORMAT INFO ***/
+/**************************/
+
+namespace {
+
+struct FormatInfo {
+	VkFormat vk;
+	uint32_t size;
+	const char *name;
+};
+
+const FormatInfo format_infos[RenderingDevice::DATA_FORMAT_MAX] = {
+	{ VK_FORMAT_R8_UNORM, 1, "R8_UNORM" },
+	{ VK_FORMAT_R8G8_UNORM, 2, "R8G8_UNORM" },
+	{ VK_FORMAT_R8G8B8A8_UNORM, 4, "R8G8B8A8_UNORM" },
+	{ VK_FORMAT_R8G8B8A8_SRGB, 4, "R8G8B8A8_SRGB" },
+	{ VK_FORMAT_R16_SFLOAT, 2, "R16_SFLOAT" },
+	{ VK_FORMAT_R16G16_SFLOAT, 4, "R16G16_SFLOAT" },
+	{ VK_FORMAT_R16G16B16A16_SFLOAT, 8, "R16G16B16A16_SFLOAT" },
+	{ VK_FORMAT_R32_SFLOAT, 4, "R32_SFLOAT" },
+	{ VK_FORMAT_R32G32_SFLOAT, 8, "R32G32_SFLOAT" },
+	{ VK_FORMAT_R32G32B32_SFLOAT, 12, "R32G32B32_SFLOAT" },
+	{ VK_FORMAT_R32G32B32A32_SFLOAT, 16, "R32G32B32A32_SFLOAT" },
+	{ VK_FORMAT_R32_UINT, 4, "R32_UINT" },
+	{ VK_FORMAT_R32G32_UINT, 8, "R32G32_UINT" },
+	{ VK_FORMAT_R32G32B32A32_UINT, 16, "R32G32B32A32_UINT" },
+	{ VK_FORMAT_R32_SINT, 4, "R32_SINT" },
+	{ VK_FORMAT_D16_UNORM, 2, "D16_UNORM" },
+	{ VK_FORMAT_D32_SFLOAT, 4, "D32_SFLOAT" },
+};
+
+String lower(const String &p_s) {
+	String r = p_s;
+	for (char &c : r) {
+		c = (char)std::tolower((unsigned char)c);
+	}
+	return r;
+}
+
+String version_string(uint32_t p_v) {
+	return vformat("%u.%u.%u", VK_API_VERSION_MAJOR(p_v), VK_API_VERSION_MINOR(p_v), VK_API_VERSION_PATCH(p_v));
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL debug_messenger_callback(VkDebugUtilsMessageSeverityFlagBitsEXT p_severity, VkDebugUtilsMessageTypeFlagsEXT p_type, const VkDebugUtilsMessengerCallbackDataEXT *p_data, void *p_user) {
+	RDImpl *impl = (RDImpl *)p_user;
+	const char *msg = (p_data && p_data->pMessage) ? p_data->pMessage : "(no message)";
+	bool validation = (p_type & VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT) != 0;
+	if (p_severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) {
+		if (validation) {
+			impl->validation_errors++;
+		}
+		ERR_PRINT(vformat("Vulkan validation error: %s", msg));
+	} else if (p_severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
+		if (validation) {
+			impl->validation_warnings++;
+		}
+		WARN_PRINT(vformat("Vulkan validation warning: %s", msg));
+	}
+	return VK_FALSE;
+}
+
+} // namespace
+
+uint32_t RenderingDevice::get_format_size(DataFormat p_format) {
+	if (p_format < 0 || p_format >= DATA_FORMAT_MAX) {
+		return 0;
+	}
+	return format_infos[p_format].size;
+}
+
+bool RenderingDevice::is_depth_format(DataFormat p_format) {
+	return p_format == DATA_FORMAT_D16_UNORM || p_format == DATA_FORMAT_D32_SFLOAT;
+}
+
+const char *RenderingDevice::get_format_name(DataFormat p_format) {
+	if (p_format < 0 || p_format >= DATA_FORMAT_MAX) {
+		return "INVALID";
+	}
+	return format_infos[p_format].name;
+}
+
+const char *RenderingDevice::get_shader_stage_name(ShaderStage p_stage) {
+	switch (p_stage) {
+		case SHADER_STAGE_VERTEX:
+			return "vertex";
+		case SHADER_STAGE_FRAGMENT:
+			return "fragment";
+		case SHADER_STAGE_COMPUTE:
+			return "compute";
+		default:
+			return "invalid";
+	}
+}
+
+VkFormat RDImpl::to_vk_format(DataFormat p_format) {
+	if (p_format < 0 || p_format >= DATA_FORMAT_MAX) {
+		return VK_FORMAT_UNDEFINED;
+	}
+	return format_infos[p_format].vk;
+}
+
+VkCompareOp RDImpl::to_vk_compare(CompareOperator p_op) {
+	static const VkCompareOp ops[] = { VK_COMPARE_OP_NEVER, VK_COMPARE_OP_LESS, VK_COMPARE_OP_EQUAL, VK_COMPARE_OP_LESS_OR_EQUAL, VK_COMPARE_OP_GREATER, VK_COMPARE_OP_NOT_EQUAL, VK_COMPARE_OP_GREATER_OR_EQUAL, VK_COMPARE_OP_ALWAYS };
+	if (p_op < 0 || p_op > COMPARE_OP_ALWAYS) {
+		return VK_COMPARE_OP_ALWAYS;
+	}
+	return ops[p_op];
+}
+
+/*****************/
+/**** HELPERS ****/
+/*****************/
+
+int32_t RDImpl::find_memory_type(uint32_t p_type_bits, VkMemoryPropertyFlags p_flags) const {
+	for (uint32_t i = 0; i < memory_properties.memoryTypeCount; i++) {
+		if ((p_type_bits & (1u << i)) && (memory_properties.memoryTypes[i].propertyFlags & p_flags) == p_flags) {
+			return (int32_t)i;
+		}
+	}
+	return -1;
+}
+
+bool RDImpl::create_buffer(VkDeviceSize p_size, VkBufferUsageFlags p_usage, VkMemoryPropertyFlags p_flags, VkBuffer &r_buffer, VkDeviceMemory &r_memory) {
+	VkBufferCreateInfo ci = { VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO };
+	ci.size = p_size;
+	ci.usage = p_usage;
+	ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+	VkResult res = vkCreateBuffer(device, &ci, nullptr, &r_buffer);
+	ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, false, vformat("vkCreateBuffer failed (%d) for %llu bytes.", res, (unsigned long long)p_size));
+	VkMemoryRequirements req;
+	vkGetBufferMemoryRequirements(device, r_buffer, &req);
+	int32_t type = find_memory_type(req.memoryTypeBits, p_flags);
+	if (type < 0 && (p_flags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)) {
+		type = find_memory_type(req.memoryTypeBits, 0);
+	}
+	if (type < 0) {
+		vkDestroyBuffer(device, r_buffer, nullptr);
+		r_buffer = VK_NULL_HANDLE;
+		ERR_FAIL_V_MSG(false, "No suitable memory type for a buffer.");
+	}
+	VkMemoryAllocateInfo ai = { VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO };
+	ai.allocationSize = req.size;
+	ai.memoryTypeIndex = (uint32_t)type;
+	res = vkAllocateMemory(device, &ai, nullptr, &r_memory);
+	if (res != VK_SUCCESS) {
+		vkDestroyBuffer(device, r_buffer, nullptr);
+		r_buffer = VK_NULL_HANDLE;
+		ERR_FAIL_V_MSG(false, vformat("vkAllocateMemory failed (%d) for %llu bytes.", res, (unsigned long long)req.size));
+	}
+	vkBindBufferMemory(device, r_buffer, r_memory, 0);
+	return true;
+}
+
+RDImpl::Staging RDImpl::create_staging(VkDeviceSize p_size) {
+	Staging s;
+	if (!create_buffer(p_size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, s.buffer, s.memory)) {
+		return Staging();
+	}
+	s.size = p_size;
+	if (vkMapMemory(device, s.memory, 0, VK_WHOLE_SIZE, 0, &s.mapped) != VK_SUCCESS) {
+		vkDestroyBuffer(device, s.buffer, nullptr);
+		vkFreeMemory(device, s.memory, nullptr);
+		ERR_FAIL_V_MSG(Staging(), "vkMapMemory failed for a staging buffer.");
+	}
+	return s;
+}
+
+static void destroy_staging(VkDevice p_device, RDImpl::Staging &p_s) {
+	if (p_s.buffer) {
+		vkDestroyBuffer(p_device, p_s.buffer, nullptr);
+	}
+	if (p_s.memory) {
+		vkFreeMemory(p_device, p_s.memory, nullptr);
+	}
+	p_s = RDImpl::Staging();
+}
+
+void RDImpl::full_barrier() {
+	ensure_recording();
+	VkMemoryBarrier mb = { VK_STRUCTURE_TYPE_MEMORY_BARRIER };
+	mb.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+	mb.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+	vkCmdPipelineBarrier(command_buffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &mb, 0, nullptr, 0, nullptr);
+}
+
+static void host_read_barrier(VkCommandBuffer p_cmd) {
+	VkMemoryBarrier mb = { VK_STRUCTURE_TYPE_MEMORY_BARRIER };
+	mb.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+	mb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+	vkCmdPipelineBarrier(p_cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &mb, 0, nullptr, 0, nullptr);
+}
+
+void RDImpl::begin_frame() {
+	VkCommandBufferBeginInfo bi = { VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO };
+	bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+	vkBeginCommandBuffer(command_buffer, &bi);
+	if (query_pool) {
+		vkCmdResetQueryPool(command_buffer, query_pool, 0, MAX_TIMESTAMPS);
+	}
+	frame_timestamp_names.clear();
+	recording = true;
+}
+
+void RDImpl::destroy_pending() {
+	// Keep one standard block for the next frame; free the rest.
+	Staging keep;
+	for (Staging &s : frame_staging) {
+		if (!keep.buffer && s.size == STAGING_BLOCK_SIZE) {
+			keep = s;
+			keep.used = 0;
+		} else {
+			destroy_staging(device, s);
+		}
+	}
+	frame_staging.clear();
+	if (keep.buffer) {
+		frame_staging.push_back(keep);
+	}
+	std::vector<std::function<void()>> work;
+	work.swap(pending_destroy);
+	for (auto &f : work) {
+		f();
+	}
+}
+
+void RDImpl::add_dependency(RID p_resource, RID p_dependent) {
+	dependents[p_resource.get_id()].push_back(p_dependent);
+}
+
+void RDImpl::name_object(VkObjectType p_type, uint64_t p_handle, const String &p_name) {
+	if (!set_object_name || !p_handle) {
+		return;
+	}
+	VkDebugUtilsObjectNameInfoEXT ni = { VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT };
+	ni.objectType = p_type;
+	ni.objectHandle = p_handle;
+	ni.pObjectName = p_name.c_str();
+	set_object_name(device, &ni);
+}
+
+bool RDImpl::stage_data(const void *p_data, VkDeviceSize p_size, VkBuffer &r_buffer, VkDeviceSize &r_offset) {
+	// Sync first if needed: syncing frees the arena.
+	ensure_recording();
+	Staging *block = frame_staging.empty() ? nullptr : &frame_staging.back();
+	VkDeviceSize offset = block ? ((block->used + 15) & ~VkDeviceSize(15)) : 0;
+	if (!block || offset + p_size > block->size) {
+		Staging s = create_staging(std::max(p_size, STAGING_BLOCK_SIZE));
+		if (!s.buffer) {
+			return false;
+		}
+		frame_staging.push_back(s);
+		block = &frame_staging.back();
+		offset = 0;
+	}
+	memcpy((uint8_t *)block->mapped + offset, p_data, p_size);
+	block->used = offset + p_size;
+	r_buffer = block->buffer;
+	r_offset = offset;
+	return true;
+}
+
+void RDImpl::upload_to_buffer(VkBuffer p_buffer, uint32_t p_offset, uint32_t p_size, const void *p_data) {
+	VkBuffer src;
+	VkDeviceSize src_offset;
+	if (!stage_data(p_data, p_size, src, src_offset)) {
+		return;
+	}
+	full_barrier();
+	VkBufferCopy region = { src_offset, p_offset, p_size };
+	vkCmdCopyBuffer(command_buffer, src, p_buffer, 1, &region);
+	full_barrier();
+}
+
+/************************/
+/**** INITIALIZATION ****/
+/************************/
+
+RenderingDevice *RenderingDevice::get_singleton() {
+	return singleton;
+}
+
+RenderingDevice::RenderingDevice() {
+	impl = new Impl;
+	if (singleton) {
+		WARN_PRINT("A RenderingDevice already exists; the new one replaces it as the singleton.");
+	}
+	singleton = this;
+}
+
+RenderingDevice::~RenderingDevice() {
+	if (impl->initialized) {
+		finalize();
+	}
+	delete impl;
+	if (singleton == this) {
+		singleton = nullptr;
+	}
+}
+
+bool RenderingDevice::is_initialized() const {
+	return impl->initialized;
+}
+
+bool RenderingDevice::initialize(String *r_error) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->initialized, true, "RenderingDevice is already initialized.");
+	String dummy;
+	String &err = r_error ? *r_error : dummy;
+
+	// Instance layers and extensions.
+	const char *env_validation = getenv("GODOT_AREA_VALIDATION");
+	bool want_validation = env_validation && String(env_validation) == "1";
+	bool have_validation = false;
+	{
+		uint32_t count = 0;
+		vkEnumerateInstanceLayerProperties(&count, nullptr);
+		std::vector<VkLayerProperties> layers(count);
+		vkEnumerateInstanceLayerProperties(&count, layers.data());
+		for (const VkLayerProperties &l : layers) {
+			if (strcmp(l.layerName, "VK_LAYER_KHRONOS_validation") == 0) {
+				have_validation = true;
+			}
+		}
+	}
+	if (want_validation && !have_validation) {
+		WARN_PRINT("GODOT_AREA_VALIDATION=1 but VK_LAYER_KHRONOS_validation is not installed (look in /usr/share/vulkan/explicit_layer.d/); continuing without validation.");
+	}
+	bool use_validation = want_validation && have_validation;
+	{
+		uint32_t count = 0;
+		vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+		std::vector<VkExtensionProperties> exts(count);
+		vkEnumerateInstanceExtensionProperties(nullptr, &count, exts.data());
+		for (const VkExtensionProperties &e : exts) {
+			if (strcmp(e.extensionName, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0) {
+				s->has_debug_utils = true;
+			}
+		}
+	}
+
+	VkApplicationInfo app = { VK_STRUCTURE_TYPE_APPLICATION_INFO };
+	app.pApplicationName = "godot-area";
+	app.pEngineName = "godot-area";
+	app.apiVersion = VK_API_VERSION_1_1;
+	std::vector<const char *> layer_names;
+	if (use_validation) {
+		layer_names.push_back("VK_LAYER_KHRONOS_validation");
+	}
+	std::vector<const char *> ext_names;
+	if (s->has_debug_utils) {
+		ext_names.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+	}
+	VkInstanceCreateInfo ici = { VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO };
+	ici.pApplicationInfo = &app;
+	ici.enabledLayerCount = (uint32_t)layer_names.size();
+	ici.ppEnabledLayerNames = layer_names.data();
+	ici.enabledExtensionCount = (uint32_t)ext_names.size();
+	ici.ppEnabledExtensionNames = ext_names.data();
+	VkResult res = vkCreateInstance(&ici, nullptr, &s->instance);
+	if (res != VK_SUCCESS) {
+		err = vformat("vkCreateInstance failed (VkResult %d). Is a Vulkan driver (e.g. Mesa lavapipe) installed?", res);
+		s->instance = VK_NULL_HANDLE;
+		ERR_PRINT(err);
+		return false;
+	}
+
+	if (s->has_debug_utils) {
+		s->set_object_name = (PFN_vkSetDebugUtilsObjectNameEXT)vkGetInstanceProcAddr(s->instance, "vkSetDebugUtilsObjectNameEXT");
+		s->cmd_begin_label = (PFN_vkCmdBeginDebugUtilsLabelEXT)vkGetInstanceProcAddr(s->instance, "vkCmdBeginDebugUtilsLabelEXT");
+		s->cmd_end_label = (PFN_vkCmdEndDebugUtilsLabelEXT)vkGetInstanceProcAddr(s->instance, "vkCmdEndDebugUtilsLabelEXT");
+		auto create_messenger = (PFN_vkCreateDebugUtilsMessengerEXT)vkGetInstanceProcAddr(s->instance, "vkCreateDebugUtilsMessengerEXT");
+		if (create_messenger) {
+			VkDebugUtilsMessengerCreateInfoEXT mci = { VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT };
+			mci.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+			// Performance hints are not requested: every image deliberately lives in GENERAL layout.
+			mci.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+			mci.pfnUserCallback = debug_messenger_callback;
+			mci.pUserData = s;
+			create_messenger(s->instance, &mci, nullptr, &s->messenger);
+		}
+	}
+
+	// Pick a physical device.
+	uint32_t pd_count = 0;
+	vkEnumeratePhysicalDevices(s->instance, &pd_count, nullptr);
+	std::vector<VkPhysicalDevice> pds(pd_count);
+	vkEnumeratePhysicalDevices(s->instance, &pd_count, pds.data());
+	const char *env_device = getenv("GODOT_AREA_DEVICE");
+	String forced = env_device ? String(env_device) : String();
+	int best = -1;
+	int best_score = -1;
+	String available;
+	for (uint32_t i = 0; i < pd_count; i++) {
+		VkPhysicalDeviceProperties p;
+		vkGetPhysicalDeviceProperties(pds[i], &p);
+		available += vformat("  [%u] %s\n", i, p.deviceName);
+		if (p.apiVersion < VK_API_VERSION_1_1) {
+			continue;
+		}
+		uint32_t qf_count = 0;
+		vkGetPhysicalDeviceQueueFamilyProperties(pds[i], &qf_count, nullptr);
+		std::vector<VkQueueFamilyProperties> qfs(qf_count);
+		vkGetPhysicalDeviceQueueFamilyProperties(pds[i], &qf_count, qfs.data());
+		bool usable = false;
+		for (const VkQueueFamilyProperties &q : qfs) {
+			if ((q.queueFlags & VK_QUEUE_GRAPHICS_BIT) && (q.queueFlags & VK_QUEUE_COMPUTE_BIT)) {
+				usable = true;
+			}
+		}
+		if (!usable) {
+			continue;
+		}
+		int score = 0;
+		if (!forced.empty()) {
+			bool numeric = std::all_of(forced.begin(), forced.end(), [](char c) { return std::isdigit((unsigned char)c); });
+			bool match = numeric ? (uint32_t)atoi(forced.c_str()) == i : lower(p.deviceName).find(lower(forced)) != String::npos;
+			score = match ? 100 : -1;
+		} else {
+			switch (p.deviceType) {
+				case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+					score = 4;
+					break;
+				case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+					score = 3;
+					break;
+				case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+					score = 2;
+					break;
+				case VK_PHYSICAL_DEVICE_TYPE_CPU:
+					score = 1;
+					break;
+				default:
+					score = 0;
+			}
+		}
+		if (score > best_score) {
+			best_score = score;
+			best = (int)i;
+		}
+	}
+	if (best < 0) {
+		err = forced.empty() ? String("No Vulkan 1.1 device with a graphics+compute queue was found.") : vformat("GODOT_AREA_DEVICE='%s' matches no usable Vulkan device. Devices:\n%s", forced.c_str(), available.c_str());
+		ERR_PRINT(err);
+		finalize();
+		return false;
+	}
+	s->physical_device = pds[best];
+	vkGetPhysicalDeviceProperties(s->physical_device, &s->properties);
+	vkGetPhysicalDeviceMemoryProperties(s->physical_device, &s->memory_properties);
+
+	uint32_t qf_count = 0;
+	vkGetPhysicalDeviceQueueFamilyProperties(s->physical_device, &qf_count, nullptr);
+	std::vector<VkQueueFamilyProperties> qfs(qf_count);
+	vkGetPhysicalDeviceQueueFamilyProperties(s->physical_device, &qf_count, qfs.data());
+	uint32_t timestamp_bits = 0;
+	for (uint32_t i = 0; i < qf_count; i++) {
+		if ((qfs[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (qfs[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) {
+			s->queue_family = i;
+			timestamp_bits = qfs[i].timestampValidBits;
+			break;
+		}
+	}
+
+	// Features: enable what we use when supported.
+	VkPhysicalDeviceFeatures supported;
+	vkGetPhysicalDeviceFeatures(s->physical_device, &supported);
+	VkPhysicalDeviceFeatures &f = s->enabled_features;
+	f.fillModeNonSolid = supported.fillModeNonSolid;
+	f.depthClamp = supported.depthClamp;
+	f.depthBiasClamp = supported.depthBiasClamp;
+	f.independentBlend = supported.independentBlend;
+	f.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+	f.vertexPipelineStoresAndAtomics = supported.vertexPipelineStoresAndAtomics;
+	f.imageCubeArray = supported.imageCubeArray;
+	f.shaderStorageImageExtendedFormats = supported.shaderStorageImageExtendedFormats;
+	f.multiDrawIndirect = supported.multiDrawIndirect;
+	f.drawIndirectFirstInstance = supported.drawIndirectFirstInstance;
+	f.shaderSampledImageArrayDynamicIndexing = supported.shaderSampledImageArrayDynamicIndexing;
+	f.shaderStorageBufferArrayDynamicIndexing = supported.shaderStorageBufferArrayDynamicIndexing;
+	f.shaderImageGatherExtended = supported.shaderImageGatherExtended;
+	f.largePoints = supported.largePoints;
+
+	// Device extensions (only for driver properties).
+	bool has_driver_props = false;
+	{
+		uint32_t count = 0;
+		vkEnumerateDeviceExtensionProperties(s->physical_device, nullptr, &count, nullptr);
+		std::vector<VkExtensionProperties> exts(count);
+		vkEnumerateDeviceExtensionProperties(s->physical_device, nullptr, &count, exts.data());
+		for (const VkExtensionProperties &e : exts) {
+			if (strcmp(e.extensionName, VK_KHR_DRIVER_PROPERTIES_EXTENSION_NAME) == 0) {
+				has_driver_props = true;
+			}
+		}
+	}
+
+	float priority = 1.0f;
+	VkDeviceQueueCreateInfo qci = { VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO };
+	qci.queueFamilyIndex = s->queue_family;
+	qci.queueCount = 1;
+	qci.pQueuePriorities = &priority;
+	VkDeviceCreateInfo dci = { VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO };
+	dci.queueCreateInfoCount = 1;
+	dci.pQueueCreateInfos = &qci;
+	dci.pEnabledFeatures = &s->enabled_features;
+	res = vkCreateDevice(s->physical_device, &dci, nullptr, &s->device);
+	if (res != VK_SUCCESS) {
+		err = vformat("vkCreateDevice failed (VkResult %d) on '%s'.", res, s->properties.deviceName);
+		s->device = VK_NULL_HANDLE;
+		ERR_PRINT(err);
+		finalize();
+		return false;
+	}
+	vkGetDeviceQueue(s->device, s->queue_family, 0, &s->queue);
+
+	VkCommandPoolCreateInfo pci = { VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO };
+	pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+	pci.queueFamilyIndex = s->queue_family;
+	vkCreateCommandPool(s->device, &pci, nullptr, &s->command_pool);
+	VkCommandBufferAllocateInfo cai = { VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO };
+	cai.commandPool = s->command_pool;
+	cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+	cai.commandBufferCount = 1;
+	vkAllocateCommandBuffers(s->device, &cai, &s->command_buffer);
+	VkFenceCreateInfo fci = { VK_STRUCTURE_TYPE_FENCE_CREATE_INFO };
+	vkCreateFence(s->device, &fci, nullptr, &s->fence);
+	bool timestamps = timestamp_bits > 0 && s->properties.limits.timestampPeriod > 0.0f;
+	if (timestamps) {
+		VkQueryPoolCreateInfo qpci = { VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO };
+		qpci.queryType = VK_QUERY_TYPE_TIMESTAMP;
+		qpci.queryCount = Impl::MAX_TIMESTAMPS;
+		vkCreateQueryPool(s->device, &qpci, nullptr, &s->query_pool);
+	}
+
+	// Device info.
+	DeviceInfo &di = s->info;
+	const VkPhysicalDeviceLimits &lim = s->properties.limits;
+	di.name = s->properties.deviceName;
+	di.device_index = (uint32_t)best;
+	di.vendor_id = s->properties.vendorID;
+	di.device_id = s->properties.deviceID;
+	di.driver_version = s->properties.driverVersion;
+	di.api_version = version_string(s->properties.apiVersion);
+	switch (s->properties.deviceType) {
+		case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+			di.type = DEVICE_TYPE_DISCRETE_GPU;
+			di.type_name = "discrete GPU";
+			break;
+		case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+			di.type = DEVICE_TYPE_INTEGRATED_GPU;
+			di.type_name = "integrated GPU";
+			break;
+		case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+			di.type = DEVICE_TYPE_VIRTUAL_GPU;
+			di.type_name = "virtual GPU";
+			break;
+		case VK_PHYSICAL_DEVICE_TYPE_CPU:
+			di.type = DEVICE_TYPE_CPU;
+			di.type_name = "CPU";
+			break;
+		default:
+			di.type = DEVICE_TYPE_OTHER;
+			di.type_name = "other";
+	}
+	if (has_driver_props) {
+		VkPhysicalDeviceDriverPropertiesKHR dp = { VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES_KHR };
+		VkPhysicalDeviceProperties2 p2 = { VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2 };
+		p2.pNext = &dp;
+		vkGetPhysicalDeviceProperties2(s->physical_device, &p2);
+		di.driver_name = dp.driverName;
+		di.driver_info = dp.driverInfo;
+	} else {
+		di.driver_name = "unknown";
+	}
+	di.validation_enabled = use_validation;
+	di.debug_utils_enabled = s->has_debug_utils;
+	di.timestamps_supported = timestamps;
+	di.timestamp_period_ns = lim.timestampPeriod;
+	di.max_texture_size_2d = lim.maxImageDimension2D;
+	di.max_texture_array_layers = lim.maxImageArrayLayers;
+	di.max_push_constant_size = lim.maxPushConstantsSize;
+	di.max_uniform_buffer_size = lim.maxUniformBufferRange;
+	di.max_storage_buffer_size = lim.maxStorageBufferRange;
+	di.max_bound_descriptor_sets = lim.maxBoundDescriptorSets;
+	di.max_color_attachments = lim.maxColorAttachments;
+	for (int i = 0; i < 3; i++) {
+		di.max_compute_workgroup_count[i] = lim.maxComputeWorkGroupCount[i];
+		di.max_compute_workgroup_size[i] = lim.maxComputeWorkGroupSize[i];
+	}
+	di.max_compute_workgroup_invocations = lim.maxComputeWorkGroupInvocations;
+	di.min_uniform_buffer_offset_alignment = (uint32_t)lim.minUniformBufferOffsetAlignment;
+	di.min_storage_buffer_offset_alignment = (uint32_t)lim.minStorageBufferOffsetAlignment;
+	for (uint32_t i = 0; i < s->memory_properties.memoryHeapCount; i++) {
+		if (s->memory_properties.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) {
+			di.device_local_memory = std::max<uint64_t>(di.device_local_memory, s->memory_properties.memoryHeaps[i].size);
+		}
+	}
+
+	s->initialized = true;
+	s->begin_frame();
+	return true;
+}
+
+void RenderingDevice::finalize() {
+	Impl *s = impl;
+	if (s->device) {
+		if (s->recording && !s->list.active) {
+			vkEndCommandBuffer(s->command_buffer);
+			s->recording = false;
+		}
+		vkDeviceWaitIdle(s->device);
+		s->submitted = false;
+		s->destroy_pending();
+		for (Impl::Staging &st : s->frame_staging) {
+			destroy_staging(s->device, st);
+		}
+		s->frame_staging.clear();
+
+		// Destroy what the user did not free; the RIDs stay in their owners and are reported as leaks.
+		VkDevice dev = s->device;
+		for (RID r : s->pipeline_owner.get_owned_list()) {
+			vkDestroyPipeline(dev, s->pipeline_owner.get_or_null(r)->pipeline, nullptr);
+		}
+		for (RID r : s->uniform_set_owner.get_owned_list()) {
+			vkDestroyDescriptorPool(dev, s->uniform_set_owner.get_or_null(r)->pool, nullptr);
+		}
+		for (RID r : s->framebuffer_owner.get_owned_list()) {
+			vkDestroyFramebuffer(dev, s->framebuffer_owner.get_or_null(r)->framebuffer, nullptr);
+		}
+		for (RID r : s->shader_owner.get_owned_list()) {
+			Impl::Shader *sh = s->shader_owner.get_or_null(r);
+			for (VkShaderModule m : sh->modules) {
+				if (m) {
+					vkDestroyShaderModule(dev, m, nullptr);
+				}
+			}
+			vkDestroyPipelineLayout(dev, sh->pipeline_layout, nullptr);
+		}
+		for (RID r : s->sampler_owner.get_owned_list()) {
+			vkDestroySampler(dev, s->sampler_owner.get_or_null(r)->sampler, nullptr);
+		}
+		std::vector<RID> textures = s->texture_owner.get_owned_list();
+		for (RID r : textures) {
+			Impl::Texture *t = s->texture_owner.get_or_null(r);
+			vkDestroyImageView(dev, t->view, nullptr);
+		}
+		for (RID r : textures) {
+			Impl::Texture *t = s->texture_owner.get_or_null(r);
+			if (!t->is_slice) {
+				vkDestroyImage(dev, t->image, nullptr);
+				vkFreeMemory(dev, t->memory, nullptr);
+			}
+		}
+		for (RID r : s->buffer_owner.get_owned_list()) {
+			Impl::Buffer *b = s->buffer_owner.get_or_null(r);
+			vkDestroyBuffer(dev, b->buffer, nullptr);
+			vkFreeMemory(dev, b->memory, nullptr);
+		}
+		for (Impl::FramebufferFormat &ff : s->framebuffer_formats) {
+			for (int i = 0; i < 3; i++) {
+				for (int j = 0; j < 3; j++) {
+					if (ff.passes[i][j]) {
+						vkDestroyRenderPass(dev, ff.passes[i][j], nullptr);
+					}
+				}
+			}
+		}
+		for (auto &kv : s->set_layout_cache) {
+			vkDestroyDescriptorSetLayout(dev, kv.second, nullptr);
+		}
+		if (s->query_pool) {
+			vkDestroyQueryPool(dev, s->query_pool, nullptr);
+		}
+		vkDestroyFence(dev, s->fence, nullptr);
+		vkDestroyCommandPool(dev, s->command_pool, nullptr);
+		vkDestroyDevice(dev, nullptr);
+	}
+	if (s->messenger) {
+		auto destroy_messenger = (PFN_vkDestroyDebugUtilsMessengerEXT)vkGetInstanceProcAddr(s->instance, "vkDestroyDebugUtilsMessengerEXT");
+		if (destroy_messenger) {
+			destroy_messenger(s->instance, s->messenger, nullptr);
+		}
+	}
+	if (s->instance) {
+		vkDestroyInstance(s->instance, nullptr);
+	}
+	// Deleting the state reports leaked RIDs (RID_Owner destructors).
+	delete s;
+	impl = new Impl;
+}
+
+const RenderingDevice::DeviceInfo &RenderingDevice::get_device_info() const {
+	return impl->info;
+}
+
+String RenderingDevice::get_device_info_string() const {
+	const DeviceInfo &d = impl->info;
+	if (!impl->initialized) {
+		return "RenderingDevice: not initialized.\n";
+	}
+	String s;
+	s += vformat("Device: %s (index %u)\n", d.name.c_str(), d.device_index);
+	s += vformat("Type: %s\n", d.type_name.c_str());
+	s += vformat("Vendor ID: 0x%04x  Device ID: 0x%04x\n", d.vendor_id, d.device_id);
+	s += vformat("Driver: %s %s (version 0x%08x)\n", d.driver_name.c_str(), d.driver_info.c_str(), d.driver_version);
+	s += vformat("Vulkan API: %s (engine targets 1.1)\n", d.api_version.c_str());
+	s += vformat("Validation layer: %s  Debug utils: %s\n", d.validation_enabled ? "on" : "off", d.debug_utils_enabled ? "yes" : "no");
+	s += vformat("Timestamps: %s (period %.3f ns)\n", d.timestamps_supported ? "yes" : "no", d.timestamp_period_ns);
+	s += vformat("Max 2D texture size: %u  Max array layers: %u\n", d.max_texture_size_2d, d.max_texture_array_layers);
+	s += vformat("Max push constants: %u bytes  Max UBO range: %u  Max SSBO range: %u\n", d.max_push_constant_size, d.max_uniform_buffer_size, d.max_storage_buffer_size);
+	s += vformat("Max bound descriptor sets: %u  Max colour attachments: %u\n", d.max_bound_descriptor_sets, d.max_color_attachments);
+	s += vformat("Max compute work groups: %u x %u x %u, size %u x %u x %u, invocations %u\n", d.max_compute_workgroup_count[0], d.max_compute_workgroup_count[1], d.max_compute_workgroup_count[2], d.max_compute_workgroup_size[0], d.max_compute_workgroup_size[1], d.max_compute_workgroup_size[2], d.max_compute_workgroup_invocations);
+	s += vformat("Device-local memory: %llu MiB\n", (unsigned long long)(d.device_local_memory / (1024 * 1024)));
+	return s;
+}
+
+uint32_t RenderingDevice::get_validation_error_count() const {
+	return impl->validation_errors;
+}
+
+uint32_t RenderingDevice::get_validation_warning_count() const {
+	return impl->validation_warnings;
+}
+
+void RenderingDevice::reset_validation_counts() {
+	impl->validation_errors = 0;
+	impl->validation_warnings = 0;
+}
+
+uint64_t RenderingDevice::get_frames_submitted() const {
+	return impl->frames_submitted;
+}
+
+/****************/
+/**** FRAMES ****/
+/****************/
+
+void RDImpl::submit_frame() {
+	if (submitted || !recording) {
+		return;
+	}
+	vkEndCommandBuffer(command_buffer);
+	recording = false;
+	VkSubmitInfo si = { VK_STRUCTURE_TYPE_SUBMIT_INFO };
+	si.commandBufferCount = 1;
+	si.pCommandBuffers = &command_buffer;
+	VkResult res = vkQueueSubmit(queue, 1, &si, fence);
+	if (res != VK_SUCCESS) {
+		ERR_PRINT(vformat("vkQueueSubmit failed (VkResult %d); the frame's commands are lost.", res));
+		begin_frame();
+		return;
+	}
+	submitted = true;
+	frames_submitted++;
+}
+
+void RDImpl::sync_frame() {
+	if (!submitted) {
+		submit_frame();
+	}
+	if (!submitted) {
+		return;
+	}
+	VkResult res = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+	if (res != VK_SUCCESS) {
+		ERR_PRINT(vformat("vkWaitForFences failed (VkResult %d); waiting for the device to idle.", res));
+		vkDeviceWaitIdle(device);
+	}
+	vkResetFences(device, 1, &fence);
+	submitted = false;
+
+	uint32_t count = (uint32_t)frame_timestamp_names.size();
+	if (count > 0 && query_pool) {
+		std::vector<uint64_t> ticks(count, 0);
+		vkGetQueryPoolResults(device, query_pool, 0, count, count * sizeof(uint64_t), ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
+		captured_timestamp_names = frame_timestamp_names;
+		captured_timestamp_times.resize(count);
+		double period = properties.limits.timestampPeriod;
+		for (uint32_t i = 0; i < count; i++) {
+			captured_timestamp_times[i] = (uint64_t)((double)ticks[i] * period);
+		}
+	}
+	destroy_pending();
+	begin_frame();
+}
+
+void RDImpl::ensure_recording() {
+	if (submitted) {
+		sync_frame();
+	}
+}
+
+void RenderingDevice::submit() {
+	ERR_FAIL_COND_MSG(!impl->initialized, "RenderingDevice is not initialized.");
+	ERR_FAIL_COND_MSG(impl->list.active, "Cannot submit while a draw or compute list is open; end it first.");
+	impl->submit_frame();
+}
+
+void RenderingDevice::sync() {
+	ERR_FAIL_COND_MSG(!impl->initialized, "RenderingDevice is not initialized.");
+	ERR_FAIL_COND_MSG(impl->list.active, "Cannot sync while a draw or compute list is open; end it first.");
+	impl->sync_frame();
+}
+
+/********************/
+/**** TIMESTAMPS ****/
+/********************/
+
+void RenderingDevice::capture_timestamp(const String &p_name) {
+	Impl *s = impl;
+	ERR_FAIL_COND_MSG(!s->initialized, "capture_timestamp: RenderingDevice is not initialized.");
+	s->ensure_recording();
+	ERR_FAIL_COND_MSG(!s->query_pool, "capture_timestamp: the device does not support timestamps.");
+	ERR_FAIL_COND_MSG(s->frame_timestamp_names.size() >= Impl::MAX_TIMESTAMPS, vformat("capture_timestamp: more than %u timestamps in one frame.", Impl::MAX_TIMESTAMPS));
+	uint32_t index = (uint32_t)s->frame_timestamp_names.size();
+	vkCmdWriteTimestamp(s->command_buffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, s->query_pool, index);
+	s->frame_timestamp_names.push_back(p_name);
+}
+
+uint32_t RenderingDevice::get_captured_timestamps_count() const {
+	return (uint32_t)impl->captured_timestamp_times.size();
+}
+
+uint64_t RenderingDevice::get_captured_timestamp_gpu_time(uint32_t p_index) const {
+	ERR_FAIL_INDEX_V((int64_t)p_index, (int64_t)(uint32_t)impl->captured_timestamp_times.size(), 0);
+	return impl->captured_timestamp_times[p_index];
+}
+
+String RenderingDevice::get_captured_timestamp_name(uint32_t p_index) const {
+	ERR_FAIL_INDEX_V((int64_t)p_index, (int64_t)(uint32_t)impl->captured_timestamp_names.size(), String());
+	return impl->captured_timestamp_names[p_index];
+}
+
+/*****************/
+/**** BUFFERS ****/
+/*****************/
+
+RID RDImpl::buffer_create(Buffer::Kind p_kind, uint32_t p_size, VkBufferUsageFlags p_usage, const void *p_data) {
+	ERR_FAIL_COND_V_MSG(!initialized, RID(), "RenderingDevice is not initialized.");
+	ERR_FAIL_COND_V_MSG(p_size == 0, RID(), "Buffer size must be greater than zero.");
+	ERR_FAIL_COND_V_MSG(list.active, RID(), "Buffers with contents cannot be created while a draw or compute list is open.");
+	Buffer b;
+	b.kind = p_kind;
+	b.size = p_size;
+	if (!create_buffer(p_size, p_usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, b.buffer, b.memory)) {
+		return RID();
+	}
+	if (p_data) {
+		upload_to_buffer(b.buffer, 0, p_size, p_data);
+	} else {
+		full_barrier();
+		vkCmdFillBuffer(command_buffer, b.buffer, 0, VK_WHOLE_SIZE, 0);
+		full_barrier();
+	}
+	return buffer_owner.make_rid(b);
+}
+
+RID RenderingDevice::storage_buffer_create(uint32_t p_size, const void *p_data, uint32_t p_usage) {
+	return impl->buffer_create(Impl::Buffer::KIND_STORAGE, p_size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, p_data);
+}
+
+RID RenderingDevice::uniform_buffer_create(uint32_t p_size, const void *p_data) {
+	ERR_FAIL_COND_V_MSG(impl->initialized && p_size > impl->properties.limits.maxUniformBufferRange, RID(), vformat("Uniform buffer size %u exceeds the device limit %u.", p_size, impl->properties.limits.maxUniformBufferRange));
+	return impl->buffer_create(Impl::Buffer::KIND_UNIFORM, p_size, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, p_data);
+}
+
+RID RenderingDevice::vertex_buffer_create(uint32_t p_size, const void *p_data) {
+	return impl->buffer_create(Impl::Buffer::KIND_VERTEX, p_size, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, p_data);
+}
+
+RID RenderingDevice::index_buffer_create(uint32_t p_index_count, IndexBufferFormat p_format, const void *p_data) {
+	ERR_FAIL_COND_V_MSG(p_format != INDEX_BUFFER_FORMAT_UINT16 && p_format != INDEX_BUFFER_FORMAT_UINT32, RID(), "Invalid index buffer format.");
+	uint32_t size = p_index_count * (p_format == INDEX_BUFFER_FORMAT_UINT16 ? 2 : 4);
+	// Keep the size a multiple of 4 (fills and copies want it).
+	uint32_t alloc = (size + 3) & ~3u;
+	std::vector<uint8_t> padded;
+	const void *data = p_data;
+	if (p_data && alloc != size) {
+		padded.assign(alloc, 0);
+		memcpy(padded.data(), p_data, size);
+		data = padded.data();
+	}
+	RID rid = impl->buffer_create(Impl::Buffer::KIND_INDEX, alloc, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, data);
+	Impl::Buffer *b = impl->buffer_owner.get_or_null(rid);
+	if (b) {
+		b->index_format = p_format;
+		b->index_count = p_index_count;
+	}
+	return rid;
+}
+
+bool RenderingDevice::buffer_update(RID p_buffer, uint32_t p_offset, uint32_t p_size, const void *p_data) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, false, "buffer_update is not allowed while a draw or compute list is open.");
+	Impl::Buffer *b = s->buffer_owner.get_or_null(p_buffer);
+	ERR_FAIL_NULL_V_MSG(b, false, "buffer_update: invalid buffer RID.");
+	ERR_FAIL_NULL_V_MSG(p_data, false, "buffer_update: data is null.");
+	ERR_FAIL_COND_V_MSG(p_size == 0, false, "buffer_update: size is zero.");
+	ERR_FAIL_COND_V_MSG((uint64_t)p_offset + p_size > b->size, false, vformat("buffer_update: range [%u, %u) exceeds the buffer size %u.", p_offset, p_offset + p_size, b->size));
+	s->upload_to_buffer(b->buffer, p_offset, p_size, p_data);
+	return true;
+}
+
+bool RenderingDevice::buffer_clear(RID p_buffer, uint32_t p_offset, uint32_t p_size) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, false, "buffer_clear is not allowed while a draw or compute list is open.");
+	Impl::Buffer *b = s->buffer_owner.get_or_null(p_buffer);
+	ERR_FAIL_NULL_V_MSG(b, false, "buffer_clear: invalid buffer RID.");
+	ERR_FAIL_COND_V_MSG((p_offset % 4) != 0 || (p_size % 4) != 0, false, "buffer_clear: offset and size must be multiples of 4.");
+	ERR_FAIL_COND_V_MSG(p_size == 0 || (uint64_t)p_offset + p_size > b->size, false, "buffer_clear: range is empty or out of bounds.");
+	s->full_barrier();
+	vkCmdFillBuffer(s->command_buffer, b->buffer, p_offset, p_size, 0);
+	s->full_barrier();
+	return true;
+}
+
+bool RenderingDevice::buffer_copy(RID p_src, RID p_dst, uint32_t p_src_offset, uint32_t p_dst_offset, uint32_t p_size) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, false, "buffer_copy is not allowed while a draw or compute list is open.");
+	Impl::Buffer *src = s->buffer_owner.get_or_null(p_src);
+	Impl::Buffer *dst = s->buffer_owner.get_or_null(p_dst);
+	ERR_FAIL_NULL_V_MSG(src, false, "buffer_copy: invalid source buffer.");
+	ERR_FAIL_NULL_V_MSG(dst, false, "buffer_copy: invalid destination buffer.");
+	ERR_FAIL_COND_V_MSG(p_size == 0 || (uint64_t)p_src_offset + p_size > src->size || (uint64_t)p_dst_offset + p_size > dst->size, false, "buffer_copy: range is empty or out of bounds.");
+	ERR_FAIL_COND_V_MSG(p_src == p_dst, false, "buffer_copy: source and destination must differ.");
+	s->full_barrier();
+	VkBufferCopy region = { p_src_offset, p_dst_offset, p_size };
+	vkCmdCopyBuffer(s->command_buffer, src->buffer, dst->buffer, 1, &region);
+	s->full_barrier();
+	return true;
+}
+
+std::vector<uint8_t> RenderingDevice::buffer_get_data(RID p_buffer, uint32_t p_offset, uint32_t p_size) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, std::vector<uint8_t>(), "buffer_get_data is not allowed while a draw or compute list is open.");
+	Impl::Buffer *b = s->buffer_owner.get_or_null(p_buffer);
+	ERR_FAIL_NULL_V_MSG(b, std::vector<uint8_t>(), "buffer_get_data: invalid buffer RID.");
+	ERR_FAIL_COND_V_MSG(p_offset >= b->size, std::vector<uint8_t>(), "buffer_get_data: offset out of bounds.");
+	uint32_t size = p_size == 0 ? b->size - p_offset : p_size;
+	ERR_FAIL_COND_V_MSG((uint64_t)p_offset + size > b->size, std::vector<uint8_t>(), "buffer_get_data: range out of bounds.");
+	s->ensure_recording();
+	Impl::Staging st = s->create_staging(size);
+	ERR_FAIL_COND_V(!st.buffer, std::vector<uint8_t>());
+	s->full_barrier();
+	VkBufferCopy region = { p_offset, 0, size };
+	vkCmdCopyBuffer(s->command_buffer, b->buffer, st.buffer, 1, &region);
+	host_read_barrier(s->command_buffer);
+	submit();
+	sync();
+	std::vector<uint8_t> out(size);
+	memcpy(out.data(), st.mapped, size);
+	destroy_staging(s->device, st);
+	return out;
+}
+
+uint32_t RenderingDevice::buffer_get_size(RID p_buffer) const {
+	Impl::Buffer *b = impl->buffer_owner.get_or_null(p_buffer);
+	ERR_FAIL_NULL_V_MSG(b, 0, "buffer_get_size: invalid buffer RID.");
+	return b->size;
+}
+
+/******************/
+/**** TEXTURES ****/
+/******************/
+
+static VkImageUsageFlags texture_usage_to_vk(uint32_t p_bits) {
+	VkImageUsageFlags u = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+	if (p_bits & RenderingDevice::TEXTURE_USAGE_SAMPLING_BIT) {
+		u |= VK_IMAGE_USAGE_SAMPLED_BIT;
+	}
+	if (p_bits & RenderingDevice::TEXTURE_USAGE_COLOR_ATTACHMENT_BIT) {
+		u |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+	}
+	if (p_bits & RenderingDevice::TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) {
+		u |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+	}
+	if (p_bits & RenderingDevice::TEXTURE_USAGE_STORAGE_BIT) {
+		u |= VK_IMAGE_USAGE_STORAGE_BIT;
+	}
+	return u;
+}
+
+static void copy_texture_layer(RDImpl *s, RDImpl::Texture *t, uint32_t p_layer, VkBuffer p_buffer, VkDeviceSize p_buffer_offset, bool p_to_texture) {
+	VkBufferImageCopy region = {};
+	region.bufferOffset = p_buffer_offset;
+	region.imageSubresource.aspectMask = t->aspect;
+	region.imageSubresource.mipLevel = t->base_mip;
+	region.imageSubresource.baseArrayLayer = t->base_layer + p_layer;
+	region.imageSubresource.layerCount = 1;
+	region.imageExtent = { t->format.width, t->format.height, t->format.depth };
+	s->full_barrier();
+	if (p_to_texture) {
+		vkCmdCopyBufferToImage(s->command_buffer, p_buffer, t->image, VK_IMAGE_LAYOUT_GENERAL, 1, &region);
+		s->full_barrier();
+	} else {
+		vkCmdCopyImageToBuffer(s->command_buffer, t->image, VK_IMAGE_LAYOUT_GENERAL, p_buffer, 1, &region);
+		host_read_barrier(s->command_buffer);
+	}
+}
+
+RID RenderingDevice::texture_create(const TextureFormat &p_format, const std::vector<std::vector<uint8_t>> &p_data) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(!s->initialized, RID(), "RenderingDevice is not initialized.");
+	ERR_FAIL_COND_V_MSG(s->list.active, RID(), "Textures cannot be created while a draw or compute list is open.");
+	ERR_FAIL_COND_V_MSG(p_format.format < 0 || p_format.format >= DATA_FORMAT_MAX, RID(), "texture_create: invalid data format.");
+	ERR_FAIL_COND_V_MSG(p_format.format == DATA_FORMAT_R32G32B32_SFLOAT, RID(), "texture_create: R32G32B32_SFLOAT is a vertex-only format.");
+	ERR_FAIL_COND_V_MSG(p_format.width == 0 || p_format.height == 0 || p_format.depth == 0 || p_format.array_layers == 0 || p_format.mipmaps == 0, RID(), "texture_create: width, height, depth, layers and mipmaps must be at least 1.");
+	const VkPhysicalDeviceLimits &lim = s->properties.limits;
+	ERR_FAIL_COND_V_MSG(p_format.width > lim.maxImageDimension2D || p_format.height > lim.maxImageDimension2D, RID(), vformat("texture_create: %ux%u exceeds the device limit %u.", p_format.width, p_format.height, lim.maxImageDimension2D));
+	ERR_FAIL_COND_V_MSG(p_format.array_layers > lim.maxImageArrayLayers, RID(), "texture_create: too many array layers.");
+	TextureType tt = p_format.texture_type;
+	ERR_FAIL_COND_V_MSG(tt < TEXTURE_TYPE_2D || tt > TEXTURE_TYPE_3D, RID(), "texture_create: invalid texture type.");
+	ERR_FAIL_COND_V_MSG(tt == TEXTURE_TYPE_2D && p_format.array_layers != 1, RID(), "texture_create: TEXTURE_TYPE_2D needs array_layers == 1 (use TEXTURE_TYPE_2D_ARRAY).");
+	ERR_FAIL_COND_V_MSG(tt == TEXTURE_TYPE_CUBE && p_format.array_layers != 6, RID(), "texture_create: cube textures need 6 layers.");
+	ERR_FAIL_COND_V_MSG(tt == TEXTURE_TYPE_CUBE_ARRAY && (p_format.array_layers % 6) != 0, RID(), "texture_create: cube array layers must be a multiple of 6.");
+	ERR_FAIL_COND_V_MSG((tt == TEXTURE_TYPE_CUBE || tt == TEXTURE_TYPE_CUBE_ARRAY) && p_format.width != p_format.height, RID(), "texture_create: cube textures must be square.");
+	ERR_FAIL_COND_V_MSG(tt == TEXTURE_TYPE_CUBE_ARRAY && !s->enabled_features.imageCubeArray, RID(), "texture_create: cube arrays are not supported by this device.");
+	ERR_FAIL_COND_V_MSG(tt == TEXTURE_TYPE_3D && p_format.array_layers != 1, RID(), "texture_create: 3D textures have one layer.");
+	ERR_FAIL_COND_V_MSG(tt != TEXTURE_TYPE_3D && p_format.depth != 1, RID(), "texture_create: depth must be 1 unless TEXTURE_TYPE_3D.");
+	bool depth = is_depth_format(p_format.format);
+	ERR_FAIL_COND_V_MSG(depth && (p_format.usage_bits & (TEXTURE_USAGE_COLOR_ATTACHMENT_BIT | TEXTURE_USAGE_STORAGE_BIT)), RID(), "texture_create: depth formats cannot be colour attachments or storage images.");
+	ERR_FAIL_COND_V_MSG(!depth && (p_format.usage_bits & TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT), RID(), "texture_create: depth attachment usage needs a depth format.");
+	uint32_t max_mips = 1;
+	for (uint32_t d = std::max(p_format.width, p_format.height); d > 1; d >>= 1) {
+		max_mips++;
+	}
+	ERR_FAIL_COND_V_MSG(p_format.mipmaps > max_mips, RID(), vformat("texture_create: %u mipmaps requested, at most %u possible.", p_format.mipmaps, max_mips));
+
+	VkFormat vkf = Impl::to_vk_format(p_format.format);
+	VkImageUsageFlags usage = texture_usage_to_vk(p_format.usage_bits);
+	VkImageType image_type = tt == TEXTURE_TYPE_3D ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
+	VkImageCreateFlags flags = (tt == TEXTURE_TYPE_CUBE || tt == TEXTURE_TYPE_CUBE_ARRAY) ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+	VkImageFormatProperties ifp;
+	VkResult res = vkGetPhysicalDeviceImageFormatProperties(s->physical_device, vkf, image_type, VK_IMAGE_TILING_OPTIMAL, usage, flags, &ifp);
+	ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, RID(), vformat("texture_create: format %s is not supported with the requested usage (0x%x) on this device.", get_format_name(p_format.format), p_format.usage_bits));
+
+	uint32_t layer_size = p_format.width * p_format.height * p_format.depth * get_format_size(p_format.format);
+	ERR_FAIL_COND_V_MSG(!p_data.empty() && p_data.size() != p_format.array_layers, RID(), vformat("texture_create: %zu data layers given, texture has %u.", p_data.size(), p_format.array_layers));
+	for (const std::vector<uint8_t> &layer : p_data) {
+		ERR_FAIL_COND_V_MSG(layer.size() != layer_size, RID(), vformat("texture_create: layer data is %zu bytes, expected %u.", layer.size(), layer_size));
+	}
+
+	Impl::Texture t;
+	t.format = p_format;
+	t.aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+	VkImageCreateInfo ici = { VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO };
+	ici.flags = flags;
+	ici.imageType = image_type;
+	ici.format = vkf;
+	ici.extent = { p_format.width, p_format.height, p_format.depth };
+	ici.mipLevels = p_format.mipmaps;
+	ici.arrayLayers = p_format.array_layers;
+	ici.samples = VK_SAMPLE_COUNT_1_BIT;
+	ici.tiling = VK_IMAGE_TILING_OPTIMAL;
+	ici.usage = usage;
+	ici.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+	ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+	res = vkCreateImage(s->device, &ici, nullptr, &t.image);
+	ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, RID(), vformat("vkCreateImage failed (VkResult %d).", res));
+	VkMemoryRequirements req;
+	vkGetImageMemoryRequirements(s->device, t.image, &req);
+	int32_t type = s->find_memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+	if (type < 0) {
+		type = s->find_memory_type(req.memoryTypeBits, 0);
+	}
+	VkMemoryAllocateInfo ai = { VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO };
+	ai.allocationSize = req.size;
+	ai.memoryTypeIndex = (uint32_t)std::max(type, 0);
+	res = type < 0 ? VK_ERROR_OUT_OF_DEVICE_MEMORY : vkAllocateMemory(s->device, &ai, nullptr, &t.memory);
+	if (res != VK_SUCCESS) {
+		vkDestroyImage(s->device, t.image, nullptr);
+		ERR_FAIL_V_MSG(RID(), vformat("Could not allocate %llu bytes for a texture (VkResult %d).", (unsigned long long)req.size, res));
+	}
+	vkBindImageMemory(s->device, t.image, t.memory, 0);
+
+	VkImageViewCreateInfo vci = { VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO };
+	vci.image = t.image;
+	static const VkImageViewType view_types[] = { VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_VIEW_TYPE_2D_ARRAY, VK_IMAGE_VIEW_TYPE_CUBE, VK_IMAGE_VIEW_TYPE_CUBE_ARRAY, VK_IMAGE_VIEW_TYPE_3D };
+	vci.viewType = view_types[tt];
+	vci.format = vkf;
+	vci.subresourceRange = { t.aspect, 0, p_format.mipmaps, 0, p_format.array_layers };
+	res = vkCreateImageView(s->device, &vci, nullptr, &t.view);
+	if (res != VK_SUCCESS) {
+		vkDestroyImage(s->device, t.image, nullptr);
+		vkFreeMemory(s->device, t.memory, nullptr);
+		ERR_FAIL_V_MSG(RID(), vformat("vkCreateImageView failed (VkResult %d).", res));
+	}
+
+	// Move to GENERAL once and for all, then zero it.
+	s->ensure_recording();
+	VkImageMemoryBarrier ib = { VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER };
+	ib.srcAccessMask = 0;
+	ib.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+	ib.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+	ib.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+	ib.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+	ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+	ib.image = t.image;
+	ib.subresourceRange = vci.subresourceRange;
+	vkCmdPipelineBarrier(s->command_buffer, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1, &ib);
+	if (depth) {
+		VkClearDepthStencilValue cv = { 0.0f, 0 };
+		vkCmdClearDepthStencilImage(s->command_buffer, t.image, VK_IMAGE_LAYOUT_GENERAL, &cv, 1, &vci.subresourceRange);
+	} else {
+		VkClearColorValue cv = {};
+		vkCmdClearColorImage(s->command_buffer, t.image, VK_IMAGE_LAYOUT_GENERAL, &cv, 1, &vci.subresourceRange);
+	}
+	s->full_barrier();
+
+	RID rid = s->texture_owner.make_rid(t);
+	Impl::Texture *tp = s->texture_owner.get_or_null(rid);
+	for (uint32_t i = 0; i < p_data.size(); i++) {
+		VkBuffer src;
+		VkDeviceSize src_offset;
+		if (s->stage_data(p_data[i].data(), layer_size, src, src_offset)) {
+			copy_texture_layer(s, tp, i, src, src_offset, true);
+		}
+	}
+	return rid;
+}
+
+RID RenderingDevice::texture_create_shared_from_slice(RID p_texture, uint32_t p_layer, uint32_t p_mipmap) {
+	Impl *s = impl;
+	Impl::Texture *parent = s->texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(parent, RID(), "texture_create_shared_from_slice: invalid texture RID.");
+	ERR_FAIL_COND_V_MSG(parent->is_slice, RID(), "texture_create_shared_from_slice: cannot slice a slice; slice the original texture.");
+	ERR_FAIL_COND_V_MSG(parent->format.texture_type == TEXTURE_TYPE_3D, RID(), "texture_create_shared_from_slice: 3D textures cannot be sliced.");
+	ERR_FAIL_INDEX_V_MSG((int64_t)p_layer, (int64_t)parent->format.array_layers, RID(), "texture_create_shared_from_slice: layer out of range.");
+	ERR_FAIL_INDEX_V_MSG((int64_t)p_mipmap, (int64_t)parent->format.mipmaps, RID(), "texture_create_shared_from_slice: mipmap out of range.");
+	Impl::Texture t;
+	t.image = parent->image;
+	t.is_slice = true;
+	t.parent = p_texture;
+	t.aspect = parent->aspect;
+	t.base_layer = p_layer;
+	t.base_mip = p_mipmap;
+	t.format = parent->format;
+	t.format.texture_type = TEXTURE_TYPE_2D;
+	t.format.array_layers = 1;
+	t.format.mipmaps = 1;
+	t.format.width = std::max(1u, parent->format.width >> p_mipmap);
+	t.format.height = std::max(1u, parent->format.height >> p_mipmap);
+	VkImageViewCreateInfo vci = { VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO };
+	vci.image = t.image;
+	vci.viewType = VK_IMAGE_VIEW_TYPE_2D;
+	vci.format = Impl::to_vk_format(parent->format.format);
+	vci.subresourceRange = { t.aspect, p_mipmap, 1, p_layer, 1 };
+	VkResult res = vkCreateImageView(s->device, &vci, nullptr, &t.view);
+	ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, RID(), vformat("vkCreateImageView failed (VkResult %d).", res));
+	RID rid = s->texture_owner.make_rid(t);
+	s->add_dependency(p_texture, rid);
+	return rid;
+}
+
+bool RenderingDevice::texture_update(RID p_texture, uint32_t p_layer, const std::vector<uint8_t> &p_data) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, false, "texture_update is not allowed while a draw or compute list is open.");
+	Impl::Texture *t = s->texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, false, "texture_update: invalid texture RID.");
+	ERR_FAIL_INDEX_V_MSG((int64_t)p_layer, (int64_t)t->format.array_layers, false, "texture_update: layer out of range.");
+	uint32_t layer_size = t->format.width * t->format.height * t->format.depth * get_format_size(t->format.format);
+	ERR_FAIL_COND_V_MSG(p_data.size() != layer_size, false, vformat("texture_update: data is %zu bytes, expected %u.", p_data.size(), layer_size));
+	VkBuffer src;
+	VkDeviceSize src_offset;
+	ERR_FAIL_COND_V(!s->stage_data(p_data.data(), layer_size, src, src_offset), false);
+	copy_texture_layer(s, t, p_layer, src, src_offset, true);
+	return true;
+}
+
+bool RenderingDevice::texture_clear(RID p_texture, const Color &p_color, uint32_t p_base_mipmap, uint32_t p_mipmaps, uint32_t p_base_layer, uint32_t p_layers) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, false, "texture_clear is not allowed while a draw or compute list is open.");
+	Impl::Texture *t = s->texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, false, "texture_clear: invalid texture RID.");
+	ERR_FAIL_COND_V_MSG(p_mipmaps == 0 || p_layers == 0, false, "texture_clear: empty range.");
+	ERR_FAIL_COND_V_MSG(p_base_mipmap + p_mipmaps > t->format.mipmaps || p_base_layer + p_layers > t->format.array_layers, false, "texture_clear: range out of bounds.");
+	VkImageSubresourceRange range = { t->aspect, t->base_mip + p_base_mipmap, p_mipmaps, t->base_layer + p_base_layer, p_layers };
+	s->full_barrier();
+	if (t->aspect == VK_IMAGE_ASPECT_DEPTH_BIT) {
+		VkClearDepthStencilValue cv = { p_color.r, 0 };
+		vkCmdClearDepthStencilImage(s->command_buffer, t->image, VK_IMAGE_LAYOUT_GENERAL, &cv, 1, &range);
+	} else {
+		VkClearColorValue cv;
+		DataFormat f = t->format.format;
+		if (f == DATA_FORMAT_R32_UINT || f == DATA_FORMAT_R32G32_UINT || f == DATA_FORMAT_R32G32B32A32_UINT) {
+			cv.uint32[0] = (uint32_t)p_color.r;
+			cv.uint32[1] = (uint32_t)p_color.g;
+			cv.uint32[2] = (uint32_t)p_color.b;
+			cv.uint32[3] = (uint32_t)p_color.a;
+		} else if (f == DATA_FORMAT_R32_SINT) {
+			cv.int32[0] = (int32_t)p_color.r;
+			cv.int32[1] = (int32_t)p_color.g;
+			cv.int32[2] = (int32_t)p_color.b;
+			cv.int32[3] = (int32_t)p_color.a;
+		} else {
+			cv.float32[0] = p_color.r;
+			cv.float32[1] = p_color.g;
+			cv.float32[2] = p_color.b;
+			cv.float32[3] = p_color.a;
+		}
+		vkCmdClearColorImage(s->command_buffer, t->image, VK_IMAGE_LAYOUT_GENERAL, &cv, 1, &range);
+	}
+	s->full_barrier();
+	return true;
+}
+
+std::vector<uint8_t> RenderingDevice::texture_get_data(RID p_texture, uint32_t p_layer) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(s->list.active, std::vector<uint8_t>(), "texture_get_data is not allowed while a draw or compute list is open.");
+	Impl::Texture *t = s->texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, std::vector<uint8_t>(), "texture_get_data: invalid texture RID.");
+	ERR_FAIL_INDEX_V_MSG((int64_t)p_layer, (int64_t)t->format.array_layers, std::vector<uint8_t>(), "texture_get_data: layer out of range.");
+	uint32_t layer_size = t->format.width * t->format.height * t->format.depth * get_format_size(t->format.format);
+	s->ensure_recording();
+	Impl::Staging st = s->create_staging(layer_size);
+	ERR_FAIL_COND_V(!st.buffer, std::vector<uint8_t>());
+	copy_texture_layer(s, t, p_layer, st.buffer, 0, false);
+	submit();
+	sync();
+	std::vector<uint8_t> out(layer_size);
+	memcpy(out.data(), st.mapped, layer_size);
+	destroy_staging(s->device, st);
+	return out;
+}
+
+bool RenderingDevice::texture_is_valid(RID p_texture) const {
+	return impl->texture_owner.owns(p_texture) && impl->texture_owner.get_or_null(p_texture) != nullptr;
+}
+
+RenderingDevice::TextureFormat RenderingDevice::texture_get_format(RID p_texture) const {
+	Impl::Texture *t = impl->texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, TextureFormat(), "texture_get_format: invalid texture RID.");
+	return t->format;
+}
+
+/******************/
+/**** SAMPLERS ****/
+/******************/
+
+RID RenderingDevice::sampler_create(const SamplerState &p_state) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(!s->initialized, RID(), "RenderingDevice is not initialized.");
+	static const VkSamplerAddressMode modes[] = { VK_SAMPLER_ADDRESS_MODE_REPEAT, VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER };
+	static const VkBorderColor borders[] = { VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK, VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK, VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE };
+	ERR_FAIL_COND_V_MSG(p_state.repeat_u < 0 || p_state.repeat_u > SAMPLER_REPEAT_MODE_CLAMP_TO_BORDER || p_state.repeat_v < 0 || p_state.repeat_v > SAMPLER_REPEAT_MODE_CLAMP_TO_BORDER || p_state.repeat_w < 0 || p_state.repeat_w > SAMPLER_REPEAT_MODE_CLAMP_TO_BORDER, RID(), "sampler_create: invalid repeat mode.");
+	ERR_FAIL_COND_V_MSG(p_state.border_color < 0 || p_state.border_color > SAMPLER_BORDER_COLOR_FLOAT_OPAQUE_WHITE, RID(), "sampler_create: invalid border colour.");
+	ERR_FAIL_COND_V_MSG(p_state.min_lod > p_state.max_lod, RID(), "sampler_create: min_lod is greater than max_lod.");
+	VkSamplerCreateInfo ci = { VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO };
+	ci.magFilter = p_state.mag_filter == SAMPLER_FILTER_LINEAR ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+	ci.minFilter = p_state.min_filter == SAMPLER_FILTER_LINEAR ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+	ci.mipmapMode = p_state.mip_filter == SAMPLER_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+	ci.addressModeU = modes[p_state.repeat_u];
+	ci.addressModeV = modes[p_state.repeat_v];
+	ci.addressModeW = modes[p_state.repeat_w];
+	ci.mipLodBias = std::min(std::max(p_state.lod_bias, -s->properties.limits.maxSamplerLodBias), s->properties.limits.maxSamplerLodBias);
+	ci.compareEnable = p_state.enable_compare ? VK_TRUE : VK_FALSE;
+	ci.compareOp = Impl::to_vk_compare(p_state.compare_op);
+	ci.minLod = p_state.min_lod;
+	ci.maxLod = p_state.max_lod;
+	ci.borderColor = borders[p_state.border_color];
+	Impl::Sampler smp;
+	VkResult res = vkCreateSampler(s->device, &ci, nullptr, &smp.sampler);
+	ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, RID(), vformat("vkCreateSampler failed (VkResult %d).", res));
+	return s->sampler_owner.make_rid(smp);
+}
+
+/*************/
+/**** FREE ****/
+/*************/
+
+bool RDImpl::free_rid(RID p_rid, bool p_report_error) {
+	// Free dependents first (uniform sets, framebuffers, slices, arrays, pipelines).
+	auto dep = dependents.find(p_rid.get_id());
+	if (dep != dependents.end()) {
+		std::vector<RID> list;
+		list.swap(dep->second);
+		dependents.erase(dep);
+		for (RID d : list) {
+			free_rid(d, false);
+		}
+	}
+	VkDevice dev = device;
+	if (Buffer *b = buffer_owner.get_or_null(p_rid)) {
+		VkBuffer buf = b->buffer;
+		VkDeviceMemory mem = b->memory;
+		pending_destroy.push_back([dev, buf, mem]() {
+			vkDestroyBuffer(dev, buf, nullptr);
+			vkFreeMemory(dev, mem, nullptr);
+		});
+		buffer_owner.free(p_rid);
+	} else if (Texture *t = texture_owner.get_or_null(p_rid)) {
+		VkImageView view = t->view;
+		VkImage image = t->is_slice ? VK_NULL_HANDLE : t->image;
+		VkDeviceMemory mem = t->memory;
+		pending_destroy.push_back([dev, view, image, mem]() {
+			vkDestroyImageView(dev, view, nullptr);
+			if (image) {
+				vkDestroyImage(dev, image, nullptr);
+				vkFreeMemory(dev, mem, nullptr);
+			}
+		});
+		texture_owner.free(p_rid);
+	} else if (Sampler *smp = sampler_owner.get_or_null(p_rid)) {
+		VkSampler h = smp->sampler;
+		pending_destroy.push_back([dev, h]() { vkDestroySampler(dev, h, nullptr); });
+		sampler_owner.free(p_rid);
+	} else if (Shader *sh = shader_owner.get_or_null(p_rid)) {
+		std::vector<VkShaderModule> modules;
+		for (VkShaderModule m : sh->modules) {
+			if (m) {
+				modules.push_back(m);
+			}
+		}
+		VkPipelineLayout layout = sh->pipeline_layout;
+		pending_destroy.push_back([dev, modules, layout]() {
+			for (VkShaderModule m : modules) {
+				vkDestroyShaderModule(dev, m, nullptr);
+			}
+			vkDestroyPipelineLayout(dev, layout, nullptr);
+		});
+		shader_owner.free(p_rid);
+	} else if (UniformSet *us = uniform_set_owner.get_or_null(p_rid)) {
+		VkDescriptorPool pool = us->pool;
+		pending_destroy.push_back([dev, pool]() { vkDestroyDescriptorPool(dev, pool, nullptr); });
+		uniform_set_owner.free(p_rid);
+	} else if (Framebuffer *fb = framebuffer_owner.get_or_null(p_rid)) {
+		VkFramebuffer h = fb->framebuffer;
+		pending_destroy.push_back([dev, h]() { vkDestroyFramebuffer(dev, h, nullptr); });
+		framebuffer_owner.free(p_rid);
+	} else if (vertex_array_owner.get_or_null(p_rid)) {
+		vertex_array_owner.free(p_rid);
+	} else if (index_array_owner.get_or_null(p_rid)) {
+		index_array_owner.free(p_rid);
+	} else if (Pipeline *p = pipeline_owner.get_or_null(p_rid)) {
+		VkPipeline h = p->pipeline;
+		pending_destroy.push_back([dev, h]() { vkDestroyPipeline(dev, h, nullptr); });
+		pipeline_owner.free(p_rid);
+	} else {
+		if (p_report_error) {
+			ERR_PRINT(vformat("RenderingDevice::free: RID %llu is invalid or already freed.", (unsigned long long)p_rid.get_id()));
+		}
+		return false;
+	}
+	return true;
+}
+
+void RenderingDevice::free(RID p_rid) {
+	ERR_FAIL_COND_MSG(!impl->initialized, "RenderingDevice::free: device is not initialized.");
+	if (impl->list.active && (impl->list.pipeline == p_rid)) {
+		ERR_FAIL_MSG("RenderingDevice::free: the pipeline is bound in the open list.");
+	}
+	impl->free_rid(p_rid, true);
+}
+
+void RenderingDevice::set_resource_name(RID p_rid, const String &p_name) {
+	Impl *s = impl;
+	if (!s->set_object_name) {
+		return;
+	}
+	if (Impl::Buffer *b = s->buffer_owner.get_or_null(p_rid)) {
+		s->name_object(VK_OBJECT_TYPE_BUFFER, (uint64_t)b->buffer, p_name);
+	} else if (Impl::Texture *t = s->texture_owner.get_or_null(p_rid)) {
+		if (!t->is_slice) {
+			s->name_object(VK_OBJECT_TYPE_IMAGE, (uint64_t)t->image, p_name);
+		}
+		s->name_object(VK_OBJECT_TYPE_IMAGE_VIEW, (uint64_t)t->view, p_name + " View");
+	} else if (Impl::Sampler *smp = s->sampler_owner.get_or_null(p_rid)) {
+		s->name_object(VK_OBJECT_TYPE_SAMPLER, (uint64_t)smp->sampler, p_name);
+	} else if (Impl::Shader *sh = s->shader_owner.get_or_null(p_rid)) {
+		for (VkShaderModule m : sh->modules) {
+			s->name_object(VK_OBJECT_TYPE_SHADER_MODULE, (uint64_t)m, p_name);
+		}
+		sh->name = p_name;
+	} else if (Impl::UniformSet *us = s->uniform_set_owner.get_or_null(p_rid)) {
+		s->name_object(VK_OBJECT_TYPE_DESCRIPTOR_SET, (uint64_t)us->set, p_name);
+	} else if (Impl::Framebuffer *fb = s->framebuffer_owner.get_or_null(p_rid)) {
+		s->name_object(VK_OBJECT_TYPE_FRAMEBUFFER, (uint64_t)fb->framebuffer, p_name);
+	} else if (Impl::Pipeline *p = s->pipeline_owner.get_or_null(p_rid)) {
+		s->name_object(VK_OBJECT_TYPE_PIPELINE, (uint64_t)p->pipeline, p_name);
+	} else if (!s->vertex_array_owner.owns(p_rid) && !s->index_array_owner.owns(p_rid)) {
+		ERR_PRINT("set_resource_name: invalid RID.");
+	}
+}

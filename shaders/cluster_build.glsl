@@ -1,0 +1,150 @@
+/**************************************************************************/
+/*  cluster_build.glsl                                                    */
+/**************************************************************************/
+/* Builds the cluster masks (layout: cluster_data_inc.glsl). One thread   */
+/* per (cluster, mask word, element type): it computes the view-space     */
+/* AABB of its cluster's frustum piece, tests the 32 elements of its word */
+/* against it and writes the word. Every word is written, so the buffer  */
+/* needs no clearing.                                                     */
+/*                                                                        */
+/* Godot rasterizes proxy meshes (icosphere, cone) into tiles; we test    */
+/* analytic bounding volumes instead, which is exact-conservative on any  */
+/* rasterizer (lavapipe included): no coverage rules, no overfit scales.  */
+/* Conservative = a cluster may get an element that does not touch it,   */
+/* never the reverse; the margins below absorb float rounding.            */
+/*                                                                        */
+/* C++: ClusterBuilderRD (servers/rendering/renderer_rd/                  */
+/* cluster_builder_rd.cpp), push constant mirror ClusterBuilderRD::       */
+/* BuildPushConstant.                                                     */
+
+#[compute]
+
+#version 450
+
+#include "cluster_data_inc.glsl"
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+layout(set = 0, binding = 0, std430) restrict readonly buffer Elements {
+	ClusterElementData data[]; // [type * words_per_type * 32 + index]
+}
+elements;
+
+layout(set = 0, binding = 1, std430) restrict writeonly buffer Clusters {
+	uint data[];
+}
+clusters;
+
+layout(push_constant, std430) uniform Params { // 112 bytes. Mirror: ClusterBuilderRD::BuildPushConstant.
+	mat4 view_from_clip; // Inverse of the (Vulkan depth-corrected) projection.
+	vec2 screen_size; // Pixels.
+	float z_far; // Metres; slices cover view depth 0..z_far.
+	uint words_per_type; // Mask words per cluster and type (max elements per type / 32).
+	uint tiles_x;
+	uint tiles_y;
+	uint pad0;
+	uint pad1;
+	uvec4 element_count; // Elements of each type (x = omni, y = spot, ...).
+}
+params;
+
+// Relative margins. Cluster boxes grow by CLUSTER_BOX_MARGIN of their size plus an absolute 1e-4 m,
+// element volumes by CLUSTER_ELEMENT_MARGIN of their radius: float rounding of the fragment's
+// view position and of the depth/tile mapping is orders of magnitude smaller (~1e-6 relative).
+#define CLUSTER_BOX_MARGIN 1e-3
+#define CLUSTER_ELEMENT_MARGIN 1e-3
+
+// Point of view space on the line through clip-space (ndc.xy, 0) and (ndc.xy, 1) at depth p_depth
+// (a positive distance, z_view = -p_depth). Works for perspective and orthogonal projections.
+vec3 unproject_at_depth(vec2 p_ndc, float p_depth) {
+	vec4 a = params.view_from_clip * vec4(p_ndc, 0.0, 1.0);
+	vec4 b = params.view_from_clip * vec4(p_ndc, 1.0, 1.0);
+	vec3 pa = a.xyz / a.w;
+	vec3 pb = b.xyz / b.w;
+	float t = (-p_depth - pa.z) / (pb.z - pa.z);
+	return mix(pa, pb, t);
+}
+
+bool test_sphere(vec3 p_box_min, vec3 p_box_max, vec3 p_center, float p_radius) {
+	vec3 closest = clamp(p_center, p_box_min, p_box_max);
+	vec3 d = closest - p_center;
+	return dot(d, d) <= p_radius * p_radius;
+}
+
+// Cone (apex p_apex, unit axis p_axis, half angle with cosine/sine p_cos/p_sin) against a sphere
+// bounding the cluster. In the plane through the axis and the sphere centre, with a = axial and
+// b = radial distance of the centre from the apex, b cos - a sin is a lower bound of the distance
+// from the centre to the cone for every half angle in (0, pi) (it is the distance to the cone's
+// boundary line, and its sign tells the side). Wronski 2017, "Cull that cone!".
+bool test_cone(vec3 p_sphere_center, float p_sphere_radius, vec3 p_apex, vec3 p_axis, float p_cos, float p_sin) {
+	vec3 v = p_sphere_center - p_apex;
+	float a = dot(v, p_axis);
+	float b = sqrt(max(dot(v, v) - a * a, 0.0));
+	float dist = b * p_cos - a * p_sin;
+	return dist <= p_sphere_radius;
+}
+
+void main() {
+	uint cluster_count = params.tiles_x * params.tiles_y * CLUSTER_Z_SLICES;
+	uint index = gl_GlobalInvocationID.x;
+	uint type = gl_GlobalInvocationID.z;
+	uint word = gl_GlobalInvocationID.y;
+	if (index >= cluster_count || word >= params.words_per_type || type >= CLUSTER_ELEMENT_TYPE_MAX) {
+		return;
+	}
+	uint slice = index % CLUSTER_Z_SLICES;
+	uint tile_index = index / CLUSTER_Z_SLICES;
+	uvec2 tile = uvec2(tile_index % params.tiles_x, tile_index / params.tiles_x);
+
+	uint out_index = ((type * params.tiles_x * params.tiles_y + tile_index) * CLUSTER_Z_SLICES + slice) * params.words_per_type + word;
+
+	uint count = params.element_count[type];
+	uint first = word * 32;
+	if (first >= count) {
+		clusters.data[out_index] = 0;
+		return;
+	}
+
+	// View-space AABB of the cluster: the 8 corners of its frustum piece.
+	vec2 px_min = vec2(tile) * float(CLUSTER_TILE_SIZE);
+	vec2 px_max = px_min + vec2(float(CLUSTER_TILE_SIZE));
+	vec2 ndc_min = px_min / params.screen_size * 2.0 - 1.0;
+	vec2 ndc_max = px_max / params.screen_size * 2.0 - 1.0;
+	float slice_size = params.z_far / float(CLUSTER_Z_SLICES);
+	float depth_near = float(slice) * slice_size;
+	float depth_far = float(slice + 1) * slice_size;
+	if (slice == CLUSTER_Z_SLICES - 1) {
+		depth_far = params.z_far * 2.0; // Fragments past z_far (clipped anyway) clamp into the last slice.
+	}
+
+	vec3 box_min = vec3(1e30);
+	vec3 box_max = vec3(-1e30);
+	for (uint i = 0; i < 8; i++) {
+		vec2 ndc = vec2((i & 1) != 0 ? ndc_max.x : ndc_min.x, (i & 2) != 0 ? ndc_max.y : ndc_min.y);
+		vec3 p = unproject_at_depth(ndc, (i & 4) != 0 ? depth_far : depth_near);
+		box_min = min(box_min, p);
+		box_max = max(box_max, p);
+	}
+	vec3 margin = (box_max - box_min) * CLUSTER_BOX_MARGIN + vec3(1e-4);
+	box_min -= margin;
+	box_max += margin;
+	vec3 box_center = (box_min + box_max) * 0.5;
+	float box_radius = length(box_max - box_center);
+
+	uint mask = 0;
+	uint last = min(first + 32, count);
+	uint base = type * params.words_per_type * 32;
+	for (uint i = first; i < last; i++) {
+		ClusterElementData e = elements.data[base + i];
+		float radius = e.radius * (1.0 + CLUSTER_ELEMENT_MARGIN);
+		bool hit = test_sphere(box_min, box_max, e.position, radius);
+		if (hit && cluster_get_bound_type(type) == CLUSTER_BOUND_CONE) {
+			// The range sphere, further cut by the cone.
+			hit = test_cone(box_center, box_radius + e.radius * CLUSTER_ELEMENT_MARGIN, e.position, e.direction, e.cone_cos, e.cone_sin);
+		}
+		if (hit) {
+			mask |= 1u << (i - first);
+		}
+	}
+	clusters.data[out_index] = mask;
+}

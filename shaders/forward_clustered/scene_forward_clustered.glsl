@@ -1,0 +1,177 @@
+/**************************************************************************/
+/*  scene_forward_clustered.glsl                                          */
+/**************************************************************************/
+/* The Forward+ scene shader (Godot's scene_forward_clustered.glsl,       */
+/* reduced to our built-in material). Variants (C++:                      */
+/* RenderForwardClustered::SceneShaderVariant):                           */
+/*   0 "" : colour pass, writes linear HDR radiance to location 0;        */
+/*   1 MODE_DEPTH : depth pre-pass, no colour output.                     */
+/* Output of the colour pass, per pixel: emission + ambient * albedo *    */
+/* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
+/* + specular); see scene_forward_lights_inc.glsl for light units.        */
+
+#[vertex]
+
+#version 450
+
+#include "scene_forward_clustered_inc.glsl"
+
+layout(location = 0) in vec3 vertex_attrib; // Object space.
+layout(location = 1) in vec3 normal_attrib;
+layout(location = 2) in vec4 tangent_attrib; // xyz, w = binormal sign.
+layout(location = 3) in vec2 uv_attrib;
+
+// Both variants compute gl_Position with identical code; precise (no FMA contraction or reassociation)
+// makes the depth pre-pass and the colour pass produce bit-identical depths, so the colour pass can
+// test with LESS_OR_EQUAL safely. ("invariant gl_Position" does the same in GLSL but SPIR-V puts the
+// decoration on a gl_PerVertex member, which the validation layer warns about.)
+precise gl_Position;
+
+#ifndef MODE_DEPTH
+layout(location = 0) out vec3 vertex_interp; // View space.
+layout(location = 1) out vec3 normal_interp; // View space.
+layout(location = 2) out vec3 tangent_interp; // View space.
+layout(location = 3) out vec3 binormal_interp; // View space.
+layout(location = 4) out vec2 uv_interp;
+#endif
+
+void main() {
+	vec4 world_pos = draw.world_from_model * vec4(vertex_attrib, 1.0);
+	vec4 view_pos = scene_data.view_from_world * world_pos;
+	gl_Position = scene_data.clip_from_view * view_pos;
+
+#ifndef MODE_DEPTH
+	mat3 normal_matrix = mat3(draw.normal_matrix[0].xyz, draw.normal_matrix[1].xyz, draw.normal_matrix[2].xyz);
+	mat3 view_basis = mat3(scene_data.view_from_world);
+	vertex_interp = view_pos.xyz;
+	normal_interp = view_basis * (normal_matrix * normal_attrib);
+	vec3 tangent_world = mat3(draw.world_from_model) * tangent_attrib.xyz;
+	tangent_interp = view_basis * tangent_world;
+	binormal_interp = cross(normal_interp, tangent_interp) * (tangent_attrib.w < 0.0 ? -1.0 : 1.0);
+	uv_interp = uv_attrib;
+#endif
+}
+
+#[fragment]
+
+#version 450
+
+#include "scene_forward_clustered_inc.glsl"
+
+#ifndef MODE_DEPTH
+
+#include "../brdf_inc.glsl"
+#include "../scene_forward_lights_inc.glsl"
+
+layout(location = 0) in vec3 vertex_interp;
+layout(location = 1) in vec3 normal_interp;
+layout(location = 2) in vec3 tangent_interp;
+layout(location = 3) in vec3 binormal_interp;
+layout(location = 4) in vec2 uv_interp;
+
+layout(location = 0) out vec4 frag_color;
+
+vec3 srgb_to_linear(vec3 p_c) {
+	return mix(pow((p_c + vec3(0.055)) * (1.0 / 1.055), vec3(2.4)), p_c * (1.0 / 12.92), lessThan(p_c, vec3(0.04045)));
+}
+
+#endif
+
+void main() {
+#ifndef MODE_DEPTH
+	vec3 albedo = material.albedo.rgb;
+	float alpha = material.albedo.a;
+	if ((material.flags & MATERIAL_FLAG_ALBEDO_TEXTURE) != 0u) {
+		vec4 texel = texture(sampler2D(albedo_texture, material_sampler), uv_interp);
+		albedo *= srgb_to_linear(texel.rgb);
+		alpha *= texel.a;
+	}
+
+	if ((material.flags & MATERIAL_FLAG_UNSHADED) != 0u) {
+		frag_color = vec4(albedo, alpha);
+		return;
+	}
+
+	vec3 vertex = vertex_interp;
+	vec3 V = normalize(-vertex); // Perspective: towards the eye at the origin of view space.
+	if (scene_data.clip_from_view[3][3] == 1.0) {
+		V = vec3(0.0, 0.0, 1.0); // Orthogonal projection: parallel view rays.
+	}
+	vec3 N = normalize(normal_interp);
+	if (!gl_FrontFacing) {
+		N = -N; // Two-sided materials shade their back faces with the flipped normal.
+	}
+	if ((material.flags & MATERIAL_FLAG_NORMAL_MAP) != 0u) {
+		vec3 T = normalize(tangent_interp - N * dot(N, tangent_interp));
+		vec3 B = normalize(binormal_interp);
+		vec3 nm = texture(sampler2D(normal_texture, material_sampler), uv_interp).xyz * 2.0 - 1.0;
+		nm.xy *= material.normal_scale;
+		N = normalize(T * nm.x + B * nm.y + N * max(nm.z, 1e-4));
+	}
+
+	float roughness = clamp(material.roughness, 0.0, 1.0);
+	float metallic = clamp(material.metallic, 0.0, 1.0);
+	// Godot's f0: dielectrics reflect 0.16 * specular^2 (0.5 -> 4 %), metals their albedo.
+	float dielectric = 0.16 * material.specular * material.specular;
+	vec3 f0 = dielectric * (1.0 - metallic) + albedo * metallic;
+	float f90 = brdf_specular_f90(f0, metallic);
+	bool specular_enabled = (material.flags & MATERIAL_FLAG_SPECULAR_DISABLED) == 0u;
+	uint diffuse_mode = material.diffuse_mode;
+
+	vec3 diffuse_light = vec3(0.0);
+	vec3 specular_light = vec3(0.0);
+
+	if ((scene_data.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
+		// Brute force reference: every light, in index order (same order as the clustered walk, so the
+		// sums are bit-identical when clustering drops only lights that contribute exactly 0).
+		for (uint i = 0u; i < scene_data.omni_light_count; i++) {
+			if ((omni_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+				continue;
+			}
+			light_process_omni(omni_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+		}
+		for (uint i = 0u; i < scene_data.spot_light_count; i++) {
+			if ((spot_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+				continue;
+			}
+			light_process_spot(spot_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+		}
+	} else {
+		uvec2 tile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
+		uint slice = cluster_get_slice(-vertex.z, scene_data.z_far);
+		uint words = scene_data.cluster_words_per_type;
+
+		uint omni_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_OMNI, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
+		for (uint w = 0u; w < words; w++) {
+			uint mask = cluster_buffer.data[omni_offset + w];
+			while (mask != 0u) {
+				uint bit = uint(findLSB(mask));
+				mask &= ~(1u << bit);
+				uint i = w * 32u + bit;
+				if (i >= scene_data.omni_light_count || (omni_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+					continue;
+				}
+				light_process_omni(omni_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+			}
+		}
+
+		uint spot_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_SPOT, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
+		for (uint w = 0u; w < words; w++) {
+			uint mask = cluster_buffer.data[spot_offset + w];
+			while (mask != 0u) {
+				uint bit = uint(findLSB(mask));
+				mask &= ~(1u << bit);
+				uint i = w * 32u + bit;
+				if (i >= scene_data.spot_light_count || (spot_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+					continue;
+				}
+				light_process_spot(spot_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+			}
+		}
+	}
+
+	vec3 ambient_light = scene_data.ambient_light.rgb;
+	vec3 color = material.emission.rgb + (ambient_light + diffuse_light) * albedo * (1.0 - metallic) + specular_light;
+	frag_color = vec4(color, alpha);
+#endif
+}

@@ -1,0 +1,116 @@
+/**************************************************************************/
+/*  scene_forward_clustered_inc.glsl                                      */
+/**************************************************************************/
+/* Bindings, push constant and flags of the Forward+ scene shader.        */
+/* C++ mirrors: RenderForwardClustered::SceneDataUBO, ::DrawPushConstant  */
+/* and RendererRD::MaterialStorage::MaterialUBO (render_forward_          */
+/* clustered.h, storage_rd/material_storage.h). Same names, same order.   */
+/*                                                                        */
+/* Descriptor sets by update frequency:                                   */
+/*   set 0: per render pass (scene data, lights, clusters, sampler);      */
+/*   set 1: per material;                                                 */
+/*   per item: the push constant (transforms).                            */
+/* Godot puts never-changing samplers in a set of their own; we fold them */
+/* into set 0 because MODE_DEPTH declares only set 0, binding 0 (sets     */
+/* must stay contiguous).                                                 */
+/*                                                                        */
+/* Variants (defines, structural): MODE_DEPTH = depth pre-pass, no        */
+/* colour output, only the scene data is declared. Cheap toggles (brute-  */
+/* force lights, diffuse model) are data: scene flags / material fields.  */
+
+#ifndef SCENE_FORWARD_CLUSTERED_INC_GLSL
+#define SCENE_FORWARD_CLUSTERED_INC_GLSL
+
+#include "../light_data_inc.glsl"
+#include "../cluster_data_inc.glsl"
+
+// Scene flags. Must match RenderForwardClustered::SceneFlags.
+#define SCENE_FLAG_FORCE_ALL_LIGHTS 1u // Brute force: every light for every fragment, clusters ignored.
+
+// Material flags. Must match RendererRD::MaterialStorage::MaterialFlags.
+#define MATERIAL_FLAG_ALBEDO_TEXTURE 1u
+#define MATERIAL_FLAG_NORMAL_MAP 2u
+#define MATERIAL_FLAG_UNSHADED 4u
+#define MATERIAL_FLAG_SPECULAR_DISABLED 8u
+
+/*************************************************************************/
+/* Set 0: render pass data                                               */
+/*************************************************************************/
+
+layout(set = 0, binding = 0, std140) uniform SceneDataBlock { // 320 bytes; running std140 offsets.
+	mat4 clip_from_view; // 0: projection with Vulkan depth correction (y flipped, depth 0..1).
+	mat4 view_from_clip; // 64
+	mat4 view_from_world; // 128
+	mat4 world_from_view; // 192
+	vec2 viewport_size; // 256: pixels.
+	float z_near; // 264
+	float z_far; // 268: metres; also the depth covered by the cluster slices.
+	vec4 ambient_light; // 272: rgb = linear ambient colour * energy, a unused.
+	uint omni_light_count; // 288
+	uint spot_light_count; // 292
+	uint cluster_tiles_x; // 296
+	uint cluster_tile_count; // 300
+	uint cluster_words_per_type; // 304
+	uint flags; // 308: SCENE_FLAG_*.
+	uint pad0; // 312
+	uint pad1; // 316
+}
+scene_data;
+
+#ifndef MODE_DEPTH
+
+layout(set = 0, binding = 1, std430) restrict readonly buffer OmniLights {
+	LightData data[];
+}
+omni_lights;
+
+layout(set = 0, binding = 2, std430) restrict readonly buffer SpotLights {
+	LightData data[];
+}
+spot_lights;
+
+layout(set = 0, binding = 3, std430) restrict readonly buffer ClusterBuffer {
+	uint data[]; // Layout: cluster_data_inc.glsl.
+}
+cluster_buffer;
+
+layout(set = 0, binding = 4) uniform sampler material_sampler; // Linear, repeat.
+
+/*************************************************************************/
+/* Set 1: material                                                       */
+/*************************************************************************/
+
+layout(set = 1, binding = 0, std140) uniform MaterialBlock { // 64 bytes.
+	vec4 albedo; // 0: linear rgb, alpha.
+	vec4 emission; // 16: linear rgb * emission energy.
+	float roughness; // 32: perceptual roughness.
+	float metallic; // 36
+	float specular; // 40: 0.5 = 4 % f0.
+	float normal_scale; // 44
+	uint flags; // 48: MATERIAL_FLAG_*.
+	uint diffuse_mode; // 52: BRDF_DIFFUSE_*.
+	uint pad0; // 56
+	uint pad1; // 60
+}
+material;
+
+layout(set = 1, binding = 1) uniform texture2D albedo_texture; // sRGB-encoded texels (decoded in the shader).
+layout(set = 1, binding = 2) uniform texture2D normal_texture; // Linear, OpenGL convention (+Y up).
+
+#endif // !MODE_DEPTH
+
+/*************************************************************************/
+/* Per item: push constant                                               */
+/*************************************************************************/
+
+layout(push_constant, std430) uniform DrawData { // 128 bytes.
+	mat4 world_from_model; // 0
+	vec4 normal_matrix[3]; // 64: columns of inverse(transpose(world_from_model.basis)), xyz used.
+	uint layer_mask; // 112: instance render layers, matched with LightData.cull_mask.
+	uint flags; // 116: unused.
+	uint pad0; // 120
+	uint pad1; // 124
+}
+draw;
+
+#endif // SCENE_FORWARD_CLUSTERED_INC_GLSL

@@ -1,0 +1,32 @@
+/**************************************************************************/
+/*  light_data_inc.glsl                                                   */
+/**************************************************************************/
+/* GPU layout of one omni or spot light (std430 storage buffer element).  */
+/* Mirror: struct RendererRD::LightStorage::LightData in                  */
+/* servers/rendering/renderer_rd/storage_rd/light_storage.h. Same field   */
+/* names and order on both sides; 64 bytes, keep it a multiple of 16.     */
+/* Every value is in its shading unit already: LightStorage::             */
+/* update_light_buffers() is the only place that converts (view space,    */
+/* linear colour * energy * pi, inverse range, cosine of the spot angle). */
+
+#ifndef LIGHT_DATA_INC_GLSL
+#define LIGHT_DATA_INC_GLSL
+
+// Must match RendererRD::LightStorage::LightType (light_storage.h).
+#define LIGHT_TYPE_OMNI 0
+#define LIGHT_TYPE_SPOT 1
+
+struct LightData { // Byte offsets (std430).
+	vec3 position; // 0: view space, metres.
+	float inv_radius; // 12: 1 / range (1/m).
+	vec3 direction; // 16: view space, unit; spot axis (the light shines along it). Unused for omni.
+	float size; // 28: light size (m); reserved for soft shadows.
+	vec3 color; // 32: linear colour * energy * pi (see scene_forward_lights_inc.glsl); negative lights negative.
+	float attenuation; // 44: distance exponent ("omni_attenuation"/"spot_attenuation"), pow(d, -attenuation).
+	float cone_attenuation; // 48: spot: "spot_angle_attenuation" exponent of the rim falloff. Omni: 0.
+	float cone_angle; // 52: spot: cos(spot_angle), spot_angle being the half angle. Omni: -1.
+	float specular_amount; // 56: "light_specular" multiplier of the specular lobe.
+	uint cull_mask; // 60: "light_cull_mask" render layers.
+};
+
+#endif // LIGHT_DATA_INC_GLSL

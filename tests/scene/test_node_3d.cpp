@@ -1,0 +1,333 @@
+/**************************************************************************/
+/*  test_node_3d.cpp                                                      */
+/**************************************************************************/
+/* Node tree basics, Node3D transforms (YXZ Euler, global propagation to  */
+/* the server), visibility, Camera3D, MeshInstance3D, WorldEnvironment.   */
+
+#include "scene/3d/node_3d.h"
+
+#include "scene/3d/camera_3d.h"
+#include "scene/3d/mesh_instance_3d.h"
+#include "scene/3d/world_environment.h"
+#include "scene/main/scene_tree.h"
+#include "scene/resources/primitive_meshes.h"
+#include "tests/scene/scene_test_fixture.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+namespace TestNode3D {
+
+using SceneTest::DummyServer;
+using SceneTest::ErrorCatcher;
+
+// Records the tree notifications it receives, tagged with its name.
+class NotificationLog : public Node3D {
+	GDCLASS(NotificationLog, Node3D);
+
+protected:
+	void _notification(int p_what) {
+		if (log && (p_what == NOTIFICATION_ENTER_TREE || p_what == NOTIFICATION_EXIT_TREE || p_what == NOTIFICATION_READY)) {
+			const char *what = p_what == NOTIFICATION_ENTER_TREE ? "enter" : (p_what == NOTIFICATION_EXIT_TREE ? "exit" : "ready");
+			log->push_back(get_name() + ":" + what);
+		}
+		if (p_what == NOTIFICATION_TRANSFORM_CHANGED) {
+			transform_changes++;
+		}
+	}
+
+public:
+	std::vector<String> *log = nullptr;
+	int transform_changes = 0;
+};
+
+TEST_CASE("[Node] children, names, paths and ownership") {
+	DummyServer server;
+	ErrorCatcher errors;
+	Node *root = new Node;
+	root->set_name("Root");
+	Node *a = new Node;
+	a->set_name("A");
+	Node *b = new Node;
+	b->set_name("B");
+	root->add_child(a);
+	a->add_child(b);
+
+	CHECK(root->get_child_count() == 1);
+	CHECK(root->get_child(0) == a);
+	CHECK(root->get_child(-1) == a);
+	CHECK(root->get_node("A/B") == b);
+	CHECK(b->get_node("..") == a);
+	CHECK(b->get_node("../..") == root);
+	CHECK(b->get_node(".") == b);
+	CHECK(b->get_node_or_null("../C") == nullptr);
+	CHECK(root->get_node("/Root/A/B") == b);
+	CHECK(b->get_path() == "Root/A/B");
+
+	SUBCASE("duplicate and empty names are made unique") {
+		Node *dup = new Node;
+		dup->set_name("A");
+		root->add_child(dup);
+		CHECK(dup->get_name() == "A2");
+		Node3D *unnamed = new Node3D;
+		root->add_child(unnamed);
+		CHECK(unnamed->get_name() == "Node3D");
+	}
+	SUBCASE("invalid additions are refused") {
+		root->add_child(nullptr);
+		root->add_child(root);
+		a->add_child(root);
+		Node *other = new Node;
+		other->add_child(b);
+		CHECK(b->get_parent() == a);
+		CHECK(errors.messages.size() == 4);
+		delete other;
+	}
+	SUBCASE("remove_child gives ownership back") {
+		a->remove_child(b);
+		CHECK(b->get_parent() == nullptr);
+		CHECK(a->get_child_count() == 0);
+		delete b;
+	}
+	SUBCASE("invalid characters in names are replaced") {
+		a->set_name("bad/name");
+		CHECK(a->get_name() == "bad_name");
+	}
+	delete root; // Deletes the subtree.
+}
+
+TEST_CASE("[Node] tree notifications: enter top-down, ready bottom-up, exit bottom-up") {
+	DummyServer server;
+	std::vector<String> log;
+	SceneTree *tree = new SceneTree;
+	NotificationLog *p = new NotificationLog;
+	p->set_name("P");
+	p->log = &log;
+	NotificationLog *c = new NotificationLog;
+	c->set_name("C");
+	c->log = &log;
+	p->add_child(c);
+	CHECK(log.empty());
+	CHECK_FALSE(c->is_inside_tree());
+
+	tree->get_root()->add_child(p);
+	CHECK(c->is_inside_tree());
+	CHECK(c->get_tree() == tree);
+	CHECK(c->get_path() == "/root/P/C");
+	REQUIRE(log.size() == 4);
+	CHECK(log[0] == "P:enter");
+	CHECK(log[1] == "C:enter");
+	CHECK(log[2] == "C:ready");
+	CHECK(log[3] == "P:ready");
+
+	log.clear();
+	tree->get_root()->remove_child(p);
+	REQUIRE(log.size() == 2);
+	CHECK(log[0] == "C:exit");
+	CHECK(log[1] == "P:exit");
+	CHECK_FALSE(p->is_inside_tree());
+	delete p;
+	delete tree;
+}
+
+TEST_CASE("[Node3D] defaults and transform set by name as the scene loader does") {
+	DummyServer server;
+	Node3D *n = new Node3D;
+	CHECK(n->get_transform() == Transform3D());
+	CHECK(n->is_visible());
+	CHECK(n->get_scale().is_equal_approx(Vector3(1, 1, 1)));
+	CHECK(n->get_rotation().is_equal_approx(Vector3()));
+
+	Transform3D t(Basis::from_euler(Vector3(0.2f, 0.5f, -0.3f)).scaled(Vector3(2, 2, 2)), Vector3(1, 2, 3));
+	bool valid = false;
+	n->set("transform", t, &valid);
+	CHECK(valid);
+	CHECK(n->get_transform().is_equal_approx(t));
+	CHECK(Vector3(n->get("position")).is_equal_approx(Vector3(1, 2, 3)));
+	CHECK(Vector3(n->get("scale")).is_equal_approx(Vector3(2, 2, 2)));
+	CHECK(Vector3(n->get("rotation")).is_equal_approx(Vector3(0.2f, 0.5f, -0.3f)));
+
+	std::vector<PropertyInfo> list;
+	n->get_property_list(&list);
+	for (const PropertyInfo &p : list) {
+		if (p.name == "transform") {
+			CHECK_MESSAGE(p.usage == PROPERTY_USAGE_NO_EDITOR, "transform is saved (as Godot's .tscn) but edited through position/rotation/scale");
+		}
+		if (p.name == "position" || p.name == "rotation" || p.name == "scale") {
+			CHECK_MESSAGE(!(p.usage & PROPERTY_USAGE_STORAGE), "position/rotation/scale are not saved separately");
+		}
+	}
+	delete n;
+}
+
+TEST_CASE("[Node3D] rotation is YXZ Euler in radians and round-trips") {
+	DummyServer server;
+	Node3D *n = new Node3D;
+	const Vector3 euler(0.3f, -1.2f, 0.7f);
+	n->set_rotation(euler);
+	CHECK(n->get_rotation() == euler);
+	CHECK(n->get_transform().basis.is_equal_approx(Basis::from_euler(euler)));
+	// YXZ: R = Ry * Rx * Rz.
+	Basis expected = Basis::from_axis_angle(Vector3(0, 1, 0), euler.y) * Basis::from_axis_angle(Vector3(1, 0, 0), euler.x) * Basis::from_axis_angle(Vector3(0, 0, 1), euler.z);
+	CHECK(n->get_transform().basis.is_equal_approx(expected));
+	// Decomposing a basis set directly gives the same angles.
+	CHECK(Node3D::basis_get_euler_yxz(expected).is_equal_approx(euler));
+	n->set_rotation_degrees(Vector3(0, 90, 0));
+	CHECK(n->get_transform().basis.xform(Vector3(0, 0, -1)).is_equal_approx(Vector3(-1, 0, 0)));
+	// Scale survives a rotation change and the other way round.
+	n->set_scale(Vector3(1, 2, 3));
+	n->set_rotation(Vector3(0.1f, 0.2f, 0.3f));
+	CHECK(n->get_scale().is_equal_approx(Vector3(1, 2, 3)));
+	CHECK(n->get_transform().basis.get_scale().is_equal_approx(Vector3(1, 2, 3)));
+	delete n;
+}
+
+TEST_CASE("[Node3D] global transform propagates to children and to the server") {
+	DummyServer server;
+	SceneTree *tree = new SceneTree;
+	NotificationLog *parent = new NotificationLog;
+	parent->set_transform(Transform3D(Basis::from_euler(Vector3(0, real_t(Math::PI / 2), 0)), Vector3(1, 2, 3)));
+	MeshInstance3D *child = new MeshInstance3D;
+	Ref<BoxMesh> box;
+	box.instantiate();
+	child->set_mesh(box);
+	child->set_position(Vector3(1, 0, 0));
+	parent->add_child(child);
+
+	// Outside the tree the math already works.
+	CHECK(child->get_global_transform().origin.is_equal_approx(parent->get_transform().xform(Vector3(1, 0, 0))));
+	CHECK(child->get_global_transform().origin.is_equal_approx(Vector3(1, 2, 2)));
+
+	tree->get_root()->add_child(parent);
+	AABB world = RS::get_singleton()->instance_get_aabb(child->get_instance());
+	CHECK(world.get_center().is_equal_approx(Vector3(1, 2, 2)));
+
+	int before = parent->transform_changes;
+	parent->set_position(Vector3(-5, 0, 0));
+	CHECK(parent->transform_changes == before + 1);
+	CHECK(child->get_global_position().is_equal_approx(Vector3(-5, 0, -1)));
+	world = RS::get_singleton()->instance_get_aabb(child->get_instance());
+	CHECK_MESSAGE(world.get_center().is_equal_approx(Vector3(-5, 0, -1)), "moving the parent must update the child's instance on the server");
+
+	child->set_global_position(Vector3(0, 0, 0));
+	CHECK(child->get_global_position().is_equal_approx(Vector3(0, 0, 0)));
+	CHECK(child->get_position().is_equal_approx(Vector3(0, 0, 5)));
+	delete tree;
+}
+
+TEST_CASE("[Node3D] non-finite transforms are rejected and the old value kept") {
+	DummyServer server;
+	ErrorCatcher errors;
+	Node3D *n = new Node3D;
+	n->set_position(Vector3(1, 1, 1));
+	n->set_position(Vector3(NAN, 0, 0));
+	n->set_scale(Vector3(INFINITY, 1, 1));
+	n->set("transform", Transform3D(Basis(), Vector3(0, NAN, 0)));
+	CHECK(n->get_position() == Vector3(1, 1, 1));
+	CHECK(n->get_scale().is_equal_approx(Vector3(1, 1, 1)));
+	CHECK(errors.contains("finite"));
+	delete n;
+}
+
+TEST_CASE("[Node3D] visibility is inherited") {
+	DummyServer server;
+	Node3D *parent = new Node3D;
+	Node3D *child = new Node3D;
+	parent->add_child(child);
+	CHECK(child->is_visible_in_tree());
+	parent->set("visible", false);
+	CHECK(child->is_visible());
+	CHECK_FALSE(child->is_visible_in_tree());
+	parent->show();
+	CHECK(child->is_visible_in_tree());
+	delete parent;
+}
+
+TEST_CASE("[Camera3D] Godot defaults, current camera and projection") {
+	DummyServer server;
+	SceneTree *tree = new SceneTree;
+	Camera3D *cam = new Camera3D;
+	CHECK(cam->get_fov() == doctest::Approx(75.0));
+	CHECK(cam->get_near() == doctest::Approx(0.05));
+	CHECK(cam->get_far() == doctest::Approx(4000.0));
+	CHECK(cam->get("keep_aspect").to_int() == Camera3D::KEEP_HEIGHT);
+	CHECK(cam->get("projection").to_int() == Camera3D::PROJECTION_PERSPECTIVE);
+	CHECK_FALSE(cam->is_current());
+
+	tree->get_root()->add_child(cam);
+	CHECK_MESSAGE(cam->is_current(), "the first camera to enter the tree becomes current");
+	CHECK(tree->get_camera_3d() == cam);
+
+	Camera3D *second = new Camera3D;
+	second->set("current", true);
+	tree->get_root()->add_child(second);
+	CHECK(tree->get_camera_3d() == second);
+	CHECK_FALSE(cam->is_current());
+
+	// Projection: a point on the view axis maps to the centre; a point at the top edge of the
+	// vertical fov maps to y = 1 (OpenGL clip convention).
+	Projection p = cam->get_camera_projection(2.0f);
+	const real_t half = Math::deg_to_rad(75.0f) * 0.5f;
+	Vector3 top = p.xform(Vector3(0, std::tan(half) * 10, -10));
+	CHECK(top.y == doctest::Approx(1.0).epsilon(1e-4));
+	CHECK(top.x == doctest::Approx(0.0));
+
+	cam->set_rotation(Vector3(0, real_t(Math::PI / 2), 0));
+	Vector3 ray = cam->project_ray_normal(Vector2(32, 32), Vector2(64, 64));
+	CHECK_MESSAGE(ray.is_equal_approx(Vector3(-1, 0, 0)), "the centre ray follows the camera's -Z");
+
+	ErrorCatcher errors;
+	cam->set("fov", 0.0);
+	cam->set("near", -1.0);
+	CHECK(cam->get_fov() == doctest::Approx(75.0));
+	CHECK(cam->get_near() == doctest::Approx(0.05));
+	CHECK(errors.contains("fov"));
+	delete tree;
+}
+
+TEST_CASE("[MeshInstance3D] mesh, AABB and surface material override by property name") {
+	DummyServer server;
+	MeshInstance3D *mi = new MeshInstance3D;
+	CHECK(mi->get_aabb().size == Vector3());
+	Ref<SphereMesh> sphere;
+	sphere.instantiate();
+	mi->set("mesh", sphere);
+	CHECK(mi->get_mesh() == sphere);
+	// Rings do not sample the equator exactly, so the bound is slightly inside the ideal one.
+	CHECK(mi->get_aabb().position.y == doctest::Approx(-0.5));
+	CHECK(mi->get_aabb().size.x == doctest::Approx(1.0).epsilon(0.01));
+	CHECK(mi->get_surface_override_material_count() == 1);
+
+	Ref<StandardMaterial3D> mat;
+	mat.instantiate();
+	bool valid = false;
+	mi->set("surface_material_override/0", mat, &valid);
+	CHECK(valid);
+	CHECK(mi->get_surface_override_material(0) == mat);
+	CHECK(mi->get_active_material(0) == mat);
+	CHECK(Ref<Material>(mi->get("surface_material_override/0")) == mat);
+	delete mi;
+}
+
+TEST_CASE("[WorldEnvironment] puts its environment into the tree's world") {
+	DummyServer server;
+	SceneTree *tree = new SceneTree;
+	WorldEnvironment *we = new WorldEnvironment;
+	Ref<Environment> env;
+	env.instantiate();
+	env->set("background_mode", (int)Environment::BG_COLOR);
+	env->set("background_color", Color(0.2f, 0.3f, 0.4f));
+	CHECK(env->get_background() == Environment::BG_COLOR);
+	CHECK(env->get_bg_color() == Color(0.2f, 0.3f, 0.4f));
+	we->set_environment(env);
+	CHECK(tree->get_world_3d()->get_environment().is_null());
+	tree->get_root()->add_child(we);
+	CHECK(tree->get_world_3d()->get_environment() == env);
+	tree->get_root()->remove_child(we);
+	CHECK(tree->get_world_3d()->get_environment().is_null());
+	delete we;
+	delete tree;
+}
+
+} // namespace TestNode3D
