@@ -7,6 +7,8 @@
 /*                   [--width W] [--height H]                             */
 /* godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip] */
 /*                   (B is the reference)                                 */
+/* godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H]  */
+/*                   [--spp N] [--error E] [--shadows on|off] [--seed S]  */
 /* godot-area info                                                        */
 /* Without SCENE the embedded demo scene (demo/demo.tscn) is used.        */
 /* Exit codes: 0 success, 1 runtime failure, 2 bad arguments or files.    */
@@ -21,6 +23,7 @@
 #include "modules/gltf/register_types.h"
 #include "modules/metrics/image_metrics.h"
 #include "modules/openexr/image_saver_exr.h"
+#include "modules/reference/renderer_compositor_reference.h"
 #include "scene/3d/camera_3d.h"
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
@@ -41,7 +44,7 @@
 RenderingDevice *Main::rendering_device = nullptr;
 RenderingServer *Main::rendering_server = nullptr;
 
-bool Main::setup(Backend p_backend, String *r_error) {
+bool Main::setup(Backend p_backend, String *r_error, const void *p_reference_options) {
 	if (p_backend == BACKEND_RD) {
 		rendering_device = new RenderingDevice;
 		String error;
@@ -60,6 +63,12 @@ bool Main::setup(Backend p_backend, String *r_error) {
 			return false;
 		}
 		rendering_server = new RenderingServerDefault(compositor);
+	} else if (p_backend == BACKEND_REFERENCE) {
+		ReferenceRenderOptions options;
+		if (p_reference_options) {
+			options = *static_cast<const ReferenceRenderOptions *>(p_reference_options);
+		}
+		rendering_server = new RenderingServerDefault(new RendererCompositorReference(options));
 	} else {
 		rendering_server = RenderingServerDefault::create_dummy();
 	}
@@ -100,6 +109,8 @@ void _print_usage() {
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
+			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
+			"                       [--seed S] [--png P] [--progress]\n"
 			"  godot-area info\n"
 			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
 			"GODOT_AREA_VALIDATION=1 enables the validation layer.\n");
@@ -111,10 +122,12 @@ bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 		{ "render", { "-o", "--width", "--height", "--png", "--exposure" } },
 		{ "bench", { "--frames", "--warmup", "--csv", "--width", "--height" } },
 		{ "compare", { "--heatmap" } },
+		{ "reference", { "-o", "--width", "--height", "--spp", "--error", "--shadows", "--seed", "--png", "--exposure" } },
 		{ "info", {} },
 	};
 	static const std::map<String, std::vector<String>> flag_options = {
 		{ "compare", { "--json", "--no-hdr-flip" } },
+		{ "reference", { "--progress" } },
 		{ "render", { "--half" } },
 		{ "bench", {} },
 		{ "info", {} },
@@ -191,13 +204,13 @@ bool _has_flag(const Args &p_args, const String &p_flag) {
 	return std::find(p_args.flags.begin(), p_args.flags.end(), p_flag) != p_args.flags.end();
 }
 
-void _print_profile(const std::vector<std::pair<String, double>> &p_profile) {
+void _print_profile(const std::vector<std::pair<String, double>> &p_profile, const char *p_total_label = "GPU total") {
 	double total = 0;
 	for (const auto &p : p_profile) {
 		printf("  %-16s %9.3f ms\n", p.first.c_str(), p.second);
 		total += p.second;
 	}
-	printf("  %-16s %9.3f ms\n", "GPU total", total);
+	printf("  %-16s %9.3f ms\n", p_total_label, total);
 }
 
 // Loads the scene into a tree of the given size. Returns false with r_error on failure.
@@ -228,59 +241,91 @@ int _command_info() {
 	return 0;
 }
 
-int _command_render(const Args &p_args) {
+int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_RD, const void *p_backend_options = nullptr) {
+	const char *cmd = p_backend == Main::BACKEND_REFERENCE ? "reference" : "render";
 	String error;
 	int width = 0, height = 0;
 	float exposure = 0;
 	if (!_get_int(p_args, "--width", 640, 1, 16384, width, &error) || !_get_int(p_args, "--height", 360, 1, 16384, height, &error) || !_get_float(p_args, "--exposure", 0.0f, exposure, &error)) {
-		fprintf(stderr, "godot-area render: %s\n", error.c_str());
+		fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 		return 2;
 	}
 	auto out_it = p_args.options.find("-o");
 	if (out_it == p_args.options.end() || out_it->second.empty()) {
-		fprintf(stderr, "godot-area render: missing -o OUT.exr\n");
+		fprintf(stderr, "godot-area %s: missing -o OUT.exr\n", cmd);
 		return 2;
 	}
 	const String out_path = out_it->second;
-	if (!Main::setup(Main::BACKEND_RD, &error)) {
-		fprintf(stderr, "godot-area render: %s\n", error.c_str());
+	if (!Main::setup(p_backend, &error, p_backend_options)) {
+		fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 		return 1;
 	}
 	int code = 0;
 	{
 		SceneTree tree;
 		if (!_prepare_tree(tree, p_args, width, height, &error)) {
-			fprintf(stderr, "godot-area render: %s\n", error.c_str());
+			fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 			code = 2;
 		} else {
 			Image image = tree.render();
 			if (image.is_empty()) {
-				fprintf(stderr, "godot-area render: the renderer returned no image\n");
+				fprintf(stderr, "godot-area %s: the renderer returned no image\n", cmd);
 				code = 1;
 			} else if (!image.is_finite()) {
-				fprintf(stderr, "godot-area render: the image has NaN or infinite pixels\n");
+				fprintf(stderr, "godot-area %s: the image has NaN or infinite pixels\n", cmd);
 				code = 1;
 			} else if (!ImageSaverEXR::save(image, out_path, _has_flag(p_args, "--half"), &error)) {
-				fprintf(stderr, "godot-area render: %s\n", error.c_str());
+				fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 				code = 1;
 			} else {
 				printf("wrote %s (%dx%d, scene-linear %s)\n", out_path.c_str(), width, height, _has_flag(p_args, "--half") ? "half" : "float");
 				auto png_it = p_args.options.find("--png");
 				if (png_it != p_args.options.end()) {
 					if (!PNGWriter::save(image, png_it->second, &error, exposure, Tonemap::MODE_ACES_FITTED)) {
-						fprintf(stderr, "godot-area render: %s\n", error.c_str());
+						fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 						code = 1;
 					} else {
 						printf("wrote %s (ACES-fitted preview, exposure %+.2f EV)\n", png_it->second.c_str(), exposure);
 					}
 				}
-				printf("device: %s\nGPU time per pass (one frame):\n", RenderingDevice::get_singleton()->get_device_info().name.c_str());
-				_print_profile(RenderingServer::get_singleton()->get_frame_profile());
+				if (p_backend == Main::BACKEND_RD) {
+					printf("device: %s\nGPU time per pass (one frame):\n", RenderingDevice::get_singleton()->get_device_info().name.c_str());
+				} else {
+					printf("CPU reference renderer (Embree), time per pass:\n");
+				}
+				_print_profile(RenderingServer::get_singleton()->get_frame_profile(), p_backend == Main::BACKEND_RD ? "GPU total" : "total");
 			}
 		}
 	}
 	Main::cleanup();
 	return code;
+}
+
+int _command_reference(const Args &p_args) {
+	ReferenceRenderOptions options;
+	String error;
+	int spp = 0, seed = 0;
+	float target = 0;
+	if (!_get_int(p_args, "--spp", options.max_samples, 1, 1 << 24, spp, &error) || !_get_int(p_args, "--seed", 0, 0, 2147483647, seed, &error) ||
+			!_get_float(p_args, "--error", options.target_relative_error, target, &error)) {
+		fprintf(stderr, "godot-area reference: %s\n", error.c_str());
+		return 2;
+	}
+	if (!(target > 0)) {
+		fprintf(stderr, "godot-area reference: --error must be a positive relative standard error (e.g. 0.002)\n");
+		return 2;
+	}
+	auto shadows_it = p_args.options.find("--shadows");
+	if (shadows_it != p_args.options.end() && shadows_it->second != "on" && shadows_it->second != "off") {
+		fprintf(stderr, "godot-area reference: --shadows must be 'on' or 'off', got '%s'\n", shadows_it->second.c_str());
+		return 2;
+	}
+	options.max_samples = spp;
+	options.seed = uint64_t(seed);
+	options.target_relative_error = target;
+	options.shadows = shadows_it == p_args.options.end() || shadows_it->second == "on";
+	options.progress = _has_flag(p_args, "--progress");
+	return _command_render(p_args, Main::BACKEND_REFERENCE, &options);
 }
 
 int _command_bench(const Args &p_args) {
@@ -362,6 +407,9 @@ int Main::run(int p_argc, char **p_argv) {
 	}
 	if (args.command == "compare") {
 		return _command_compare(args);
+	}
+	if (args.command == "reference") {
+		return _command_reference(args);
 	}
 	if (args.command == "render") {
 		return _command_render(args);

@@ -19,6 +19,7 @@ public:
 	enum Backend {
 		BACKEND_RD, // Vulkan Forward+ renderer.
 		BACKEND_DUMMY, // No GPU: scene loading and validation only.
+		BACKEND_REFERENCE, // CPU ground truth on Embree (modules/reference).
 	};
 
 private:
@@ -28,7 +29,8 @@ private:
 public:
 	// Creates the RenderingDevice (for BACKEND_RD), the RenderingServer and registers scene types.
 	// Returns false with r_error when no usable Vulkan device exists.
-	static bool setup(Backend p_backend, String *r_error);
+	// p_reference_options is a ReferenceRenderOptions* (BACKEND_REFERENCE only; null = defaults).
+	static bool setup(Backend p_backend, String *r_error, const void *p_reference_options = nullptr);
 	static void cleanup();
 
 	// Loads p_path, or the embedded demo scene when p_path is empty. Caller owns the node.

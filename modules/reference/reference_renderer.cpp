@@ -1,0 +1,600 @@
+/**************************************************************************/
+/*  reference_renderer.cpp                                                */
+/**************************************************************************/
+/* godot-area: the CPU ground-truth renderer (see reference_renderer.h).  */
+/* Each step names the GPU code it mirrors: ray setup = the rasteriser's  */
+/* pixel centres and clip_from_view of RenderForwardClustered::           */
+/* render_scene; vertex data = RendererRD::MeshStorage::                  */
+/* _create_surface_gpu and the vertex shader; material units =            */
+/* RendererRD::MaterialStorage::_make_ubo; light units = RendererRD::     */
+/* LightStorage::fill_light_data; shading = the fragment shader of        */
+/* shaders/forward_clustered/scene_forward_clustered.glsl.                */
+
+#include "modules/reference/reference_renderer.h"
+
+#include "core/error/error_macros.h"
+#include "core/io/image.h"
+#include "core/math/math_funcs.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+using namespace ReferenceBRDF;
+
+/*************************************************************************/
+/* Frame                                                                 */
+/*************************************************************************/
+
+struct ReferenceRenderer::Frame {
+	RTCScene scene = nullptr;
+	std::vector<Surface> surfaces; // Index = Embree geometry ID.
+	std::vector<Light> lights;
+	int width = 0;
+	int height = 0;
+	Projection view_from_clip; // Inverse of the Vulkan clip_from_view (depth-corrected, y flipped).
+	Transform3D world_from_view;
+	bool orthogonal = false;
+	Vector3 ambient_light; // Linear colour * energy (SceneDataUBO::ambient_light).
+	Color clear_color; // Linear bg colour * energy, alpha 1.
+	ReferenceRenderOptions options;
+	int thread_count = 1;
+	std::atomic<int> next_row{ 0 };
+	std::atomic<int> rows_done{ 0 };
+	std::atomic<uint64_t> shadow_rays{ 0 };
+	std::mutex progress_mutex;
+	int progress_printed = -1;
+};
+
+// Back-face culling for cull_back materials (primary rays only; shadow rays see both faces, as a
+// closed occluder casts the same shadow either way). A hit is front-facing when the ray runs against
+// the face normal (c - a) x (b - a), which is the GPU's clockwise-front rule.
+static void _reference_cull_filter(const RTCFilterFunctionNArguments *p_args) {
+	const std::vector<Vector3> *face_normals = static_cast<const std::vector<Vector3> *>(p_args->geometryUserPtr);
+	for (unsigned i = 0; i < p_args->N; i++) {
+		if (p_args->valid[i] != -1) {
+			continue;
+		}
+		unsigned prim = RTCHitN_primID(p_args->hit, p_args->N, i);
+		Vector3 dir(RTCRayN_dir_x(p_args->ray, p_args->N, i), RTCRayN_dir_y(p_args->ray, p_args->N, i), RTCRayN_dir_z(p_args->ray, p_args->N, i));
+		if ((*face_normals)[prim].dot(dir) >= 0.0f) {
+			p_args->valid[i] = 0;
+		}
+	}
+}
+
+/*************************************************************************/
+/* Construction                                                          */
+/*************************************************************************/
+
+static void _reference_embree_error(void *p_user, RTCError p_code, const char *p_message) {
+	ERR_PRINT(vformat("ReferenceRenderer: Embree error %d: %s", int(p_code), p_message ? p_message : ""));
+}
+
+ReferenceRenderer::ReferenceRenderer(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, const ReferenceRenderOptions &p_options) :
+		light_storage(p_light_storage), mesh_storage(p_mesh_storage), material_storage(p_material_storage), options(p_options) {
+	ERR_FAIL_COND_MSG(!light_storage || !mesh_storage || !material_storage, "ReferenceRenderer needs light, mesh and material storages.");
+	RTCDevice device = rtcNewDevice(nullptr);
+	if (!device) {
+		ERR_PRINT(vformat("ReferenceRenderer: Embree device creation failed (error %d).", int(rtcGetDeviceError(nullptr))));
+		return;
+	}
+	rtcSetDeviceErrorFunction(device, _reference_embree_error, nullptr);
+	embree_device = device;
+}
+
+ReferenceRenderer::~ReferenceRenderer() {
+	if (embree_device) {
+		rtcReleaseDevice(static_cast<RTCDevice>(embree_device));
+		embree_device = nullptr;
+	}
+}
+
+/*************************************************************************/
+/* Render targets                                                        */
+/*************************************************************************/
+
+RID ReferenceRenderer::render_target_create(int p_width, int p_height) {
+	ERR_FAIL_COND_V_MSG(p_width <= 0 || p_height <= 0 || p_width > 16384 || p_height > 16384, RID(), vformat("ReferenceRenderer: invalid render target size %dx%d.", p_width, p_height));
+	RenderTarget rt;
+	rt.width = p_width;
+	rt.height = p_height;
+	rt.data.assign(size_t(p_width) * p_height * 4, 0.0f);
+	for (size_t i = 3; i < rt.data.size(); i += 4) {
+		rt.data[i] = 1.0f;
+	}
+	return render_target_owner.make_rid(rt);
+}
+
+bool ReferenceRenderer::render_target_free(RID p_rid) {
+	if (!render_target_owner.owns(p_rid)) {
+		return false;
+	}
+	render_target_owner.free(p_rid);
+	return true;
+}
+
+std::vector<float> ReferenceRenderer::render_target_get_data(RID p_render_target) {
+	const RenderTarget *rt = render_target_owner.get_or_null(p_render_target);
+	ERR_FAIL_NULL_V_MSG(rt, std::vector<float>(), "ReferenceRenderer::render_target_get_data: invalid render target RID.");
+	return rt->data;
+}
+
+std::vector<std::pair<String, double>> ReferenceRenderer::get_last_frame_profile() const {
+	return { { String("reference"), last_stats.seconds * 1000.0 } };
+}
+
+/*************************************************************************/
+/* Scene data (mirrors the GPU storages' unit conversions)               */
+/*************************************************************************/
+
+ReferenceRenderer::ShadingMaterial ReferenceRenderer::_resolve_material(RID p_material) const {
+	// An invalid material falls back to the defaults, as RD's default_material.
+	RS::MaterialParams p = material_storage->owns_material(p_material) ? material_storage->material_get_params(p_material) : RS::MaterialParams();
+	ShadingMaterial m;
+	Color albedo = p.albedo.srgb_to_linear();
+	m.albedo = Vector3(albedo.r, albedo.g, albedo.b);
+	m.alpha = albedo.a;
+	Color emission = p.emission.srgb_to_linear();
+	m.emission = Vector3(emission.r, emission.g, emission.b) * p.emission_energy;
+	m.roughness = p.roughness;
+	m.metallic = p.metallic;
+	m.specular = p.specular;
+	m.normal_scale = p.normal_scale;
+	m.unshaded = p.unshaded;
+	m.specular_enabled = p.specular_mode != RS::MATERIAL_SPECULAR_DISABLED;
+	// Lambert wrap and toon fall back to Lambert, as on the GPU.
+	m.diffuse_mode = p.diffuse_mode == RS::MATERIAL_DIFFUSE_BURLEY ? BRDF_DIFFUSE_BURLEY : BRDF_DIFFUSE_LAMBERT;
+	m.cull_back = p.cull_back;
+	if (p.albedo_texture.is_valid() && material_storage->owns_texture(p.albedo_texture)) {
+		m.albedo_texture = material_storage->texture_get_image(p.albedo_texture);
+	}
+	if (p.normal_texture.is_valid() && material_storage->owns_texture(p.normal_texture)) {
+		m.normal_texture = material_storage->texture_get_image(p.normal_texture);
+	}
+	return m;
+}
+
+bool ReferenceRenderer::_build_surface(const RS::SurfaceData &p_data, const Transform3D &p_xform, Surface &r_surface) const {
+	const uint32_t count = uint32_t(p_data.vertices.size());
+	if (count == 0) {
+		return false;
+	}
+	if (p_data.indices.empty()) {
+		r_surface.indices.resize(count - count % 3);
+		for (uint32_t i = 0; i < r_surface.indices.size(); i++) {
+			r_surface.indices[i] = i;
+		}
+	} else {
+		r_surface.indices = p_data.indices;
+	}
+	const uint32_t tri_count = uint32_t(r_surface.indices.size() / 3);
+	for (uint32_t idx : r_surface.indices) {
+		ERR_FAIL_COND_V_MSG(idx >= count, false, "ReferenceRenderer: a surface index is out of range; surface skipped.");
+	}
+
+	// Object-space normals: given, or area-weighted face normals (RendererRD::MeshStorage).
+	std::vector<Vector3> normals(count);
+	if (p_data.normals.size() == count) {
+		normals = p_data.normals;
+	} else {
+		std::vector<Vector3> acc(count);
+		for (uint32_t t = 0; t < tri_count; t++) {
+			uint32_t a = r_surface.indices[t * 3], b = r_surface.indices[t * 3 + 1], c = r_surface.indices[t * 3 + 2];
+			Vector3 n = (p_data.vertices[c] - p_data.vertices[a]).cross(p_data.vertices[b] - p_data.vertices[a]);
+			acc[a] += n;
+			acc[b] += n;
+			acc[c] += n;
+		}
+		for (uint32_t i = 0; i < count; i++) {
+			Vector3 n = acc[i].normalized();
+			normals[i] = n == Vector3() ? Vector3(0, 1, 0) : n;
+		}
+	}
+	// Object-space tangents (xyz, w = binormal sign): given, or from a helper axis (RendererRD::MeshStorage).
+	std::vector<float> tangents(size_t(count) * 4);
+	if (p_data.tangents.size() == size_t(count) * 4) {
+		tangents = p_data.tangents;
+	} else {
+		for (uint32_t i = 0; i < count; i++) {
+			Vector3 n = normals[i];
+			Vector3 helper = std::fabs(n.x) < 0.9f ? Vector3(1, 0, 0) : Vector3(0, 1, 0);
+			Vector3 t = (helper - n * n.dot(helper)).normalized();
+			tangents[i * 4 + 0] = t.x;
+			tangents[i * 4 + 1] = t.y;
+			tangents[i * 4 + 2] = t.z;
+			tangents[i * 4 + 3] = 1.0f;
+		}
+	}
+
+	// World space, as the vertex shader computes it (normal matrix = inverse transpose of the basis).
+	Basis normal_basis = p_xform.basis.inverse().transposed();
+	r_surface.positions.resize(count);
+	r_surface.normals.resize(count);
+	r_surface.tangents.resize(count);
+	r_surface.binormals.resize(count);
+	r_surface.uvs.assign(count, Vector2());
+	for (uint32_t i = 0; i < count; i++) {
+		r_surface.positions[i] = p_xform.xform(p_data.vertices[i]);
+		r_surface.normals[i] = normal_basis.xform(normals[i]);
+		Vector3 t(tangents[i * 4 + 0], tangents[i * 4 + 1], tangents[i * 4 + 2]);
+		r_surface.tangents[i] = p_xform.basis.xform(t);
+		r_surface.binormals[i] = r_surface.normals[i].cross(r_surface.tangents[i]) * (tangents[i * 4 + 3] < 0.0f ? -1.0f : 1.0f);
+	}
+	if (p_data.uvs.size() == count) {
+		r_surface.uvs = p_data.uvs;
+	}
+	r_surface.face_normals.resize(tri_count);
+	for (uint32_t t = 0; t < tri_count; t++) {
+		const Vector3 &a = r_surface.positions[r_surface.indices[t * 3]];
+		const Vector3 &b = r_surface.positions[r_surface.indices[t * 3 + 1]];
+		const Vector3 &c = r_surface.positions[r_surface.indices[t * 3 + 2]];
+		r_surface.face_normals[t] = (c - a).cross(b - a);
+	}
+	return tri_count > 0;
+}
+
+bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_instance, Light &r_light) const {
+	RID rid = p_instance.light;
+	ERR_FAIL_COND_V_MSG(!light_storage->owns_light(rid), false, "ReferenceRenderer: a visible light instance has an invalid light RID; skipped.");
+	RS::LightType type = light_storage->light_get_type(rid);
+	if (type == RS::LIGHT_DIRECTIONAL) {
+		return false; // The Forward+ shader has no directional lights yet; mirror it.
+	}
+	// RendererRD::LightStorage::fill_light_data, in world instead of view space.
+	r_light.type = type;
+	LightData &d = r_light.data;
+	d = LightData();
+	d.position = p_instance.transform.origin;
+	Vector3 direction = p_instance.transform.basis.xform(Vector3(0, 0, -1)).normalized();
+	d.direction = direction == Vector3() ? Vector3(0, 0, -1) : direction;
+	float range = std::fmax(light_storage->light_get_param(rid, RS::LIGHT_PARAM_RANGE), 1e-4f);
+	Color linear = light_storage->light_get_color(rid).srgb_to_linear();
+	float energy = light_storage->light_get_param(rid, RS::LIGHT_PARAM_ENERGY) * float(Math::PI) * (light_storage->light_is_negative(rid) ? -1.0f : 1.0f);
+	d.inv_radius = 1.0f / range;
+	d.size = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SIZE);
+	d.color = Vector3(linear.r * energy, linear.g * energy, linear.b * energy);
+	d.attenuation = light_storage->light_get_param(rid, RS::LIGHT_PARAM_ATTENUATION);
+	if (type == RS::LIGHT_SPOT) {
+		d.cone_attenuation = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPOT_ATTENUATION);
+		d.cone_angle = std::cos(Math::deg_to_rad(light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPOT_ANGLE)));
+	} else {
+		d.cone_attenuation = 0.0f;
+		d.cone_angle = -1.0f;
+	}
+	d.specular_amount = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR);
+	d.cull_mask = light_storage->light_get_cull_mask(rid);
+	return true;
+}
+
+/*************************************************************************/
+/* Texture sampling                                                      */
+/*************************************************************************/
+
+Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv) {
+	const int w = p_image.get_width();
+	const int h = p_image.get_height();
+	if (w <= 0 || h <= 0) {
+		return Color(1, 1, 1, 1);
+	}
+	const std::vector<float> &data = p_image.get_data();
+	// Vulkan LINEAR: texel space coordinate u * size - 0.5, weights from its fraction, REPEAT wrap.
+	float fx = p_uv.x * float(w) - 0.5f;
+	float fy = p_uv.y * float(h) - 0.5f;
+	float x0f = std::floor(fx);
+	float y0f = std::floor(fy);
+	float ax = fx - x0f;
+	float ay = fy - y0f;
+	auto wrap = [](long p_i, int p_n) { long m = p_i % p_n; return int(m < 0 ? m + p_n : m); };
+	int x0 = wrap(long(x0f), w), x1 = wrap(long(x0f) + 1, w);
+	int y0 = wrap(long(y0f), h), y1 = wrap(long(y0f) + 1, h);
+	float out[4];
+	for (int c = 0; c < 4; c++) {
+		float t00 = data[(size_t(y0) * w + x0) * 4 + c];
+		float t10 = data[(size_t(y0) * w + x1) * 4 + c];
+		float t01 = data[(size_t(y1) * w + x0) * 4 + c];
+		float t11 = data[(size_t(y1) * w + x1) * 4 + c];
+		out[c] = (t00 * (1.0f - ax) + t10 * ax) * (1.0f - ay) + (t01 * (1.0f - ax) + t11 * ax) * ay;
+	}
+	return Color(out[0], out[1], out[2], out[3]);
+}
+
+/*************************************************************************/
+/* Rendering                                                             */
+/*************************************************************************/
+
+void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render_target) {
+	RenderTarget *rt = render_target_owner.get_or_null(p_render_target);
+	ERR_FAIL_NULL_MSG(rt, "ReferenceRenderer::render_scene: invalid render target RID.");
+	ERR_FAIL_NULL_MSG(embree_device, "ReferenceRenderer::render_scene: no Embree device (creation failed).");
+	auto start = std::chrono::steady_clock::now();
+	RTCDevice device = static_cast<RTCDevice>(embree_device);
+
+	Frame frame;
+	frame.width = rt->width;
+	frame.height = rt->height;
+	frame.options = options;
+
+	// Camera: the same clip_from_view as RenderForwardClustered (OpenGL projection, Vulkan correction).
+	Projection clip_from_view = Projection::create_depth_correction(true) * p_data.cam_projection;
+	frame.view_from_clip = clip_from_view.inverse();
+	frame.world_from_view = p_data.cam_transform;
+	frame.orthogonal = p_data.cam_projection.columns[3].w == 1.0f;
+
+	// Environment: linearised exactly as RenderForwardClustered::render_scene.
+	const RenderSceneData::EnvironmentData &env = p_data.environment;
+	Color ambient = env.ambient_color.srgb_to_linear();
+	frame.ambient_light = Vector3(ambient.r * env.ambient_energy, ambient.g * env.ambient_energy, ambient.b * env.ambient_energy);
+	Color bg = env.bg_color.srgb_to_linear();
+	frame.clear_color = Color(bg.r * env.bg_energy, bg.g * env.bg_energy, bg.b * env.bg_energy, 1.0f);
+
+	// Geometry: every surface of every visible instance, in world space.
+	for (const RenderSceneData::GeometryInstance &g : p_data.geometry) {
+		int surface_count = mesh_storage->owns_mesh(g.mesh) ? mesh_storage->mesh_get_surface_count(g.mesh) : 0;
+		for (int s = 0; s < surface_count; s++) {
+			const RS::SurfaceData *data = mesh_storage->mesh_get_surface(g.mesh, s);
+			if (!data) {
+				continue;
+			}
+			Surface surface;
+			if (!_build_surface(*data, g.transform, surface)) {
+				continue;
+			}
+			RID material = g.material_override.is_valid() ? g.material_override : mesh_storage->mesh_surface_get_material(g.mesh, s);
+			surface.material = _resolve_material(material);
+			surface.layer_mask = g.layer_mask;
+			frame.surfaces.push_back(std::move(surface));
+		}
+	}
+	for (const RenderSceneData::LightInstance &li : p_data.lights) {
+		Light light;
+		if (_make_light(li, light)) {
+			frame.lights.push_back(light);
+		}
+	}
+	if (!p_data.directional_lights.empty()) {
+		WARN_PRINT_ONCE("ReferenceRenderer: directional lights are ignored (the Forward+ shader has none yet).");
+	}
+
+	// Embree scene (built per frame; the surfaces vector is not resized after this point).
+	frame.scene = rtcNewScene(device);
+	uint64_t triangles = 0;
+	for (uint32_t i = 0; i < frame.surfaces.size(); i++) {
+		Surface &s = frame.surfaces[i];
+		RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+		float *vb = static_cast<float *>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), s.positions.size()));
+		unsigned *ib = static_cast<unsigned *>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), s.indices.size() / 3));
+		if (!vb || !ib) {
+			ERR_PRINT("ReferenceRenderer: Embree buffer allocation failed; surface skipped.");
+			rtcReleaseGeometry(geom);
+			continue;
+		}
+		for (size_t v = 0; v < s.positions.size(); v++) {
+			vb[v * 3 + 0] = s.positions[v].x;
+			vb[v * 3 + 1] = s.positions[v].y;
+			vb[v * 3 + 2] = s.positions[v].z;
+		}
+		for (size_t k = 0; k < s.indices.size(); k++) {
+			ib[k] = s.indices[k];
+		}
+		if (s.material.cull_back) {
+			rtcSetGeometryUserData(geom, &s.face_normals);
+			rtcSetGeometryIntersectFilterFunction(geom, _reference_cull_filter);
+		}
+		rtcCommitGeometry(geom);
+		rtcAttachGeometryByID(frame.scene, geom, i);
+		rtcReleaseGeometry(geom);
+		triangles += s.indices.size() / 3;
+	}
+	rtcCommitScene(frame.scene);
+
+	// Workers: rows handed out by an atomic counter; each pixel has its own generator.
+	int threads = options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency());
+	threads = std::max(1, std::min(threads, frame.height));
+	frame.thread_count = threads;
+	std::vector<float> pixels(size_t(frame.width) * frame.height * 4, 0.0f);
+	std::vector<std::thread> workers;
+	for (int t = 1; t < threads; t++) {
+		workers.emplace_back([&frame, &pixels, t]() { _render_rows(frame, t, pixels); });
+	}
+	_render_rows(frame, 0, pixels);
+	for (std::thread &w : workers) {
+		w.join();
+	}
+	if (options.progress) {
+		fprintf(stderr, "\n");
+	}
+	rtcReleaseScene(frame.scene);
+	frame.scene = nullptr;
+	rt->data.swap(pixels);
+
+	last_stats = ReferenceRenderStats();
+	last_stats.width = frame.width;
+	last_stats.height = frame.height;
+	last_stats.threads = threads;
+	last_stats.primary_rays = uint64_t(frame.width) * frame.height;
+	last_stats.shadow_rays = frame.shadow_rays.load();
+	last_stats.triangles = triangles;
+	last_stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels) {
+	Frame &frame = const_cast<Frame &>(p_frame); // Only the atomics and the progress state change.
+	uint64_t shadow_rays = 0;
+	while (true) {
+		int y = frame.next_row.fetch_add(1);
+		if (y >= frame.height) {
+			break;
+		}
+		for (int x = 0; x < frame.width; x++) {
+			uint64_t index = uint64_t(y) * frame.width + x;
+			ReferenceRNG rng = ReferenceRNG::for_pixel(frame.options.seed, index);
+			Color c = _shade_pixel(frame, x, y, rng, shadow_rays);
+			float *p = &r_pixels[index * 4];
+			p[0] = c.r;
+			p[1] = c.g;
+			p[2] = c.b;
+			p[3] = c.a;
+		}
+		int done = frame.rows_done.fetch_add(1) + 1;
+		if (frame.options.progress) {
+			int percent = int(int64_t(done) * 100 / frame.height);
+			std::lock_guard<std::mutex> lock(frame.progress_mutex);
+			if (percent > frame.progress_printed) {
+				frame.progress_printed = percent;
+				int bar = percent / 5;
+				fprintf(stderr, "\r[reference] [%.*s%.*s] %3d%% (%d threads)", bar, "====================", 20 - bar, "                    ", percent, frame.thread_count);
+				fflush(stderr);
+			}
+		}
+	}
+	frame.shadow_rays.fetch_add(shadow_rays);
+}
+
+Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays) {
+	// Pixel centre in Vulkan NDC (y down, top row first), unprojected at depth 0 (near) and 1 (far):
+	// the segment the rasteriser's depth range covers for this pixel.
+	float ndc_x = (float(p_x) + 0.5f) / float(p_frame.width) * 2.0f - 1.0f;
+	float ndc_y = (float(p_y) + 0.5f) / float(p_frame.height) * 2.0f - 1.0f;
+	Vector3 near_view = p_frame.view_from_clip.xform(Vector3(ndc_x, ndc_y, 0.0f));
+	Vector3 far_view = p_frame.view_from_clip.xform(Vector3(ndc_x, ndc_y, 1.0f));
+	Vector3 origin = p_frame.world_from_view.xform(near_view);
+	Vector3 segment = p_frame.world_from_view.xform(far_view) - origin;
+	float seg_len = segment.length();
+	if (!(seg_len > 0.0f) || !std::isfinite(seg_len)) {
+		return p_frame.clear_color;
+	}
+	Vector3 dir = segment / seg_len;
+
+	RTCIntersectContext context;
+	rtcInitIntersectContext(&context);
+	RTCRayHit rh;
+	rh.ray.org_x = origin.x;
+	rh.ray.org_y = origin.y;
+	rh.ray.org_z = origin.z;
+	rh.ray.dir_x = dir.x;
+	rh.ray.dir_y = dir.y;
+	rh.ray.dir_z = dir.z;
+	rh.ray.tnear = 0.0f;
+	rh.ray.tfar = seg_len;
+	rh.ray.time = 0.0f;
+	rh.ray.mask = 0xFFFFFFFF;
+	rh.ray.id = 0;
+	rh.ray.flags = 0;
+	rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+	rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+	rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+	rtcIntersect1(p_frame.scene, &context, &rh);
+	if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+		return p_frame.clear_color;
+	}
+
+	// Interpolation with the hit's barycentrics = the rasteriser's perspective-correct interpolation.
+	const Surface &s = p_frame.surfaces[rh.hit.geomID];
+	const ShadingMaterial &m = s.material;
+	const uint32_t prim = rh.hit.primID;
+	const uint32_t i0 = s.indices[prim * 3], i1 = s.indices[prim * 3 + 1], i2 = s.indices[prim * 3 + 2];
+	const float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
+	Vector3 vertex = s.positions[i0] * b0 + s.positions[i1] * b1 + s.positions[i2] * b2;
+	Vector3 normal_interp = s.normals[i0] * b0 + s.normals[i1] * b1 + s.normals[i2] * b2;
+	Vector2 uv = s.uvs[i0] * b0 + s.uvs[i1] * b1 + s.uvs[i2] * b2;
+	const bool front_facing = s.face_normals[prim].dot(dir) < 0.0f;
+
+	// Fragment shader (scene_forward_clustered.glsl).
+	Vector3 albedo = m.albedo;
+	float alpha = m.alpha;
+	if (m.albedo_texture) {
+		Color texel = reference_sample_texture_bilinear(*m.albedo_texture, uv);
+		albedo = albedo * Vector3(Color::srgb_to_linear_channel(texel.r), Color::srgb_to_linear_channel(texel.g), Color::srgb_to_linear_channel(texel.b));
+		alpha *= texel.a;
+	}
+	if (m.unshaded) {
+		return Color(albedo.x, albedo.y, albedo.z, alpha);
+	}
+
+	Vector3 V = p_frame.orthogonal ? p_frame.world_from_view.basis.get_column(2).normalized() : (p_frame.world_from_view.origin - vertex).normalized();
+	Vector3 N = normal_interp.normalized();
+	if (!front_facing) {
+		N = -N;
+	}
+	if (m.normal_texture) {
+		Vector3 tangent_interp = s.tangents[i0] * b0 + s.tangents[i1] * b1 + s.tangents[i2] * b2;
+		Vector3 binormal_interp = s.binormals[i0] * b0 + s.binormals[i1] * b1 + s.binormals[i2] * b2;
+		Vector3 T = (tangent_interp - N * N.dot(tangent_interp)).normalized();
+		Vector3 B = binormal_interp.normalized();
+		Color t = reference_sample_texture_bilinear(*m.normal_texture, uv);
+		Vector3 nm(t.r * 2.0f - 1.0f, t.g * 2.0f - 1.0f, t.b * 2.0f - 1.0f);
+		nm.x *= m.normal_scale;
+		nm.y *= m.normal_scale;
+		N = (T * nm.x + B * nm.y + N * std::max(nm.z, 1e-4f)).normalized();
+	}
+
+	float roughness = glsl_clamp(m.roughness, 0.0f, 1.0f);
+	float metallic = glsl_clamp(m.metallic, 0.0f, 1.0f);
+	float dielectric = 0.16f * m.specular * m.specular;
+	Vector3 f0 = Vector3(dielectric, dielectric, dielectric) * (1.0f - metallic) + albedo * metallic;
+	float f90 = brdf_specular_f90(f0, metallic);
+
+	Vector3 diffuse_light;
+	Vector3 specular_light;
+
+	// Shadow-ray origin: the hit point pushed off the surface towards the light's side.
+	Vector3 ng = s.face_normals[prim].normalized();
+	float max_coord = std::max(std::fabs(vertex.x), std::max(std::fabs(vertex.y), std::fabs(vertex.z)));
+	float offset = 1e-4f * std::max(1.0f, max_coord);
+
+	// Light loop. Punctual (delta) lights: one exact evaluation each. An area light type slots in as a
+	// further case that calls integrate_adaptive() with an integrand over the light's [0,1]^2
+	// parameterisation (radiance * BRDF * cos * visibility / pdf), using r_rng and the options'
+	// target_relative_error / max_samples.
+	(void)r_rng;
+	for (const Light &light : p_frame.lights) {
+		if ((light.data.cull_mask & s.layer_mask) == 0) {
+			continue;
+		}
+		Vector3 L, radiance;
+		float distance = 0.0f;
+		bool lit = light.type == RS::LIGHT_SPOT ? light_spot_radiance(light.data, vertex, L, distance, radiance) : light_omni_radiance(light.data, vertex, L, distance, radiance);
+		if (!lit) {
+			continue;
+		}
+		if (p_frame.options.shadows && N.dot(L) > 0.0f) {
+			Vector3 side = ng.dot(L) >= 0.0f ? ng : -ng;
+			Vector3 o = vertex + side * offset;
+			Vector3 to_light = light.data.position - o;
+			float d = to_light.length();
+			if (d > 2.0f * offset) {
+				RTCRay ray;
+				Vector3 ldir = to_light / d;
+				ray.org_x = o.x;
+				ray.org_y = o.y;
+				ray.org_z = o.z;
+				ray.dir_x = ldir.x;
+				ray.dir_y = ldir.y;
+				ray.dir_z = ldir.z;
+				ray.tnear = 0.0f;
+				ray.tfar = d - offset;
+				ray.time = 0.0f;
+				ray.mask = 0xFFFFFFFF;
+				ray.id = 0;
+				ray.flags = 0;
+				RTCIntersectContext ctx;
+				rtcInitIntersectContext(&ctx);
+				rtcOccluded1(p_frame.scene, &ctx, &ray);
+				r_shadow_rays++;
+				if (ray.tfar < 0.0f) {
+					continue; // Occluded (Embree sets tfar to -inf).
+				}
+			}
+		}
+		light_compute(N, L, V, radiance, light.data.specular_amount, m.diffuse_mode, roughness, f0, f90, m.specular_enabled, diffuse_light, specular_light);
+	}
+
+	Vector3 color = m.emission + (p_frame.ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light;
+	return Color(color.x, color.y, color.z, alpha);
+}

@@ -1,0 +1,149 @@
+/**************************************************************************/
+/*  reference_renderer.h                                                  */
+/**************************************************************************/
+/* godot-area: the CPU ground-truth renderer. Traces one primary ray per  */
+/* pixel centre (the GPU rasteriser's sample point) through the scene's   */
+/* world-space triangles with Embree 3, and shades the hit with the C++   */
+/* twins of the GPU shader code (brdf.h, forward_lights.h), reading the   */
+/* same storages and RenderSceneData as the GPU renderer. Differences to  */
+/* the GPU image are therefore the GPU method's own error (and, with      */
+/* shadows on, visibility).                                               */
+/*                                                                        */
+/* Part of the backend RendererCompositorReference:                       */
+/*   new RenderingServerDefault(new RendererCompositorReference(opts));   */
+
+#pragma once
+
+#include "core/templates/rid_owner.h"
+#include "modules/reference/forward_lights.h"
+#include "modules/reference/sampling.h"
+#include "servers/rendering/renderer_scene_render.h"
+#include "servers/rendering/storage/light_storage.h"
+#include "servers/rendering/storage/material_storage.h"
+#include "servers/rendering/storage/mesh_storage.h"
+
+#include <cstdint>
+
+class Image;
+
+/*************************************************************************/
+/* Definition                                                            */
+/*************************************************************************/
+
+struct ReferenceRenderOptions {
+	// Sample cap of every adaptive integral of a pixel (area lights; punctual lights are exact).
+	int max_samples = 4096;
+	// Adaptive integrals stop when their relative standard error is below this (0.002 = 0.2 %).
+	float target_relative_error = 0.002f;
+	// Trace shadow rays (hard shadows for omni and spot lights). Off: every light is unoccluded, as in
+	// the GPU renderer, which has no shadows yet.
+	bool shadows = false;
+	// Worker threads; 0 = std::thread::hardware_concurrency().
+	int threads = 0;
+	// Seed of the per-pixel random generators (same seed: bit-identical image).
+	uint64_t seed = 0;
+	// Print a progress bar on stderr.
+	bool progress = false;
+};
+
+// Counters of the last render_scene() call.
+struct ReferenceRenderStats {
+	int width = 0;
+	int height = 0;
+	int threads = 0;
+	uint64_t primary_rays = 0;
+	uint64_t shadow_rays = 0;
+	uint64_t triangles = 0;
+	double seconds = 0.0; // Wall time (reported, never asserted).
+};
+
+class ReferenceRenderer : public RendererSceneRender {
+public:
+	/*************************************************************************/
+	/* Public Methods                                                        */
+	/*************************************************************************/
+
+	void render_scene(const RenderSceneData &p_data, RID p_render_target) override;
+	RID render_target_create(int p_width, int p_height) override;
+	bool render_target_free(RID p_rid) override;
+	bool owns_render_target(RID p_rid) const override { return render_target_owner.owns(p_rid); }
+	// Linear RGBA floats, top row first; opaque black before the first render.
+	std::vector<float> render_target_get_data(RID p_render_target) override;
+	// One entry ("reference", wall milliseconds of the last frame).
+	std::vector<std::pair<String, double>> get_last_frame_profile() const override;
+	// No effect: the reference always shades every light.
+	void set_debug_force_all_lights(bool p_enable) override {}
+
+	void set_options(const ReferenceRenderOptions &p_options) { options = p_options; }
+	const ReferenceRenderOptions &get_options() const { return options; }
+	const ReferenceRenderStats &get_last_stats() const { return last_stats; }
+
+	// Storages are not owned; they must outlive the renderer.
+	ReferenceRenderer(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, const ReferenceRenderOptions &p_options = ReferenceRenderOptions());
+	~ReferenceRenderer() override;
+
+	/*************************************************************************/
+	/* Private Members                                                       */
+	/*************************************************************************/
+private:
+	struct RenderTarget {
+		int width = 0;
+		int height = 0;
+		std::vector<float> data;
+	};
+
+	// Material parameters in shading units (as RendererRD::MaterialStorage::_make_ubo converts them).
+	struct ShadingMaterial {
+		Vector3 albedo = Vector3(1, 1, 1); // Linear.
+		float alpha = 1.0f;
+		Vector3 emission; // Linear * emission energy.
+		float roughness = 1.0f;
+		float metallic = 0.0f;
+		float specular = 0.5f;
+		float normal_scale = 1.0f;
+		uint32_t diffuse_mode = ReferenceBRDF::BRDF_DIFFUSE_BURLEY;
+		bool unshaded = false;
+		bool specular_enabled = true;
+		bool cull_back = true;
+		const Image *albedo_texture = nullptr; // Valid during render_scene() only.
+		const Image *normal_texture = nullptr;
+	};
+
+	// One mesh surface of one instance, in world space (one Embree geometry).
+	struct Surface {
+		std::vector<Vector3> positions; // World.
+		std::vector<Vector3> normals; // normal_matrix * object normal (not normalised, as the GPU).
+		std::vector<Vector3> tangents; // world basis * object tangent.
+		std::vector<Vector3> binormals; // cross(normal, tangent) * sign, per vertex (as the GPU).
+		std::vector<Vector2> uvs; // Zero when the surface has none.
+		std::vector<uint32_t> indices; // 3 per triangle.
+		std::vector<Vector3> face_normals; // (c - a) x (b - a): points to the front (clockwise) side.
+		ShadingMaterial material;
+		uint32_t layer_mask = 1;
+	};
+
+	struct Light {
+		RS::LightType type = RS::LIGHT_OMNI;
+		ReferenceBRDF::LightData data;
+	};
+
+	struct Frame; // Everything render_scene() sets up for the workers (Embree scene, camera, lights).
+
+	RendererLightStorage *light_storage = nullptr;
+	RendererMeshStorage *mesh_storage = nullptr;
+	RendererMaterialStorage *material_storage = nullptr;
+	ReferenceRenderOptions options;
+	ReferenceRenderStats last_stats;
+	void *embree_device = nullptr; // RTCDevice.
+	mutable RID_Owner<RenderTarget, true> render_target_owner{ "ReferenceRenderTarget" };
+
+	ShadingMaterial _resolve_material(RID p_material) const;
+	bool _build_surface(const RS::SurfaceData &p_data, const Transform3D &p_xform, Surface &r_surface) const;
+	bool _make_light(const RenderSceneData::LightInstance &p_instance, Light &r_light) const;
+	static void _render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels);
+	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays);
+};
+
+// Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres
+// at (i + 0.5) / size), as the GPU's material sampler. Returns raw texels (no colour conversion).
+Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv);
