@@ -77,6 +77,10 @@ bool Main::setup(Backend p_backend, String *r_error, const void *p_reference_opt
 	return true;
 }
 
+int Main::get_validation_error_count() {
+	return rendering_device ? int(rendering_device->get_validation_error_count()) : 0;
+}
+
 void Main::cleanup() {
 	uninitialize_gltf_module();
 	unregister_scene_types();
@@ -297,6 +301,10 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 			}
 		}
 	}
+	if (Main::get_validation_error_count() > 0) {
+		fprintf(stderr, "godot-area: the Vulkan validation layer reported %d error(s) (see above)\n", Main::get_validation_error_count());
+		code = code ? code : 1;
+	}
 	Main::cleanup();
 	return code;
 }
@@ -369,6 +377,10 @@ int _command_bench(const Args &p_args) {
 			}
 		}
 	}
+	if (Main::get_validation_error_count() > 0) {
+		fprintf(stderr, "godot-area: the Vulkan validation layer reported %d error(s) (see above)\n", Main::get_validation_error_count());
+		code = code ? code : 1;
+	}
 	Main::cleanup();
 	return code;
 }
@@ -415,8 +427,4 @@ int Main::run(int p_argc, char **p_argv) {
 		return _command_render(args);
 	}
 	return _command_bench(args);
-}
-
-int main(int argc, char **argv) {
-	return Main::run(argc, argv);
 }

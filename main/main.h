@@ -32,6 +32,8 @@ public:
 	// p_reference_options is a ReferenceRenderOptions* (BACKEND_REFERENCE only; null = defaults).
 	static bool setup(Backend p_backend, String *r_error, const void *p_reference_options = nullptr);
 	static void cleanup();
+	// Errors the validation layer reported so far (0 without validation or without a device).
+	static int get_validation_error_count();
 
 	// Loads p_path, or the embedded demo scene when p_path is empty. Caller owns the node.
 	static Node *load_scene(const String &p_path, String *r_error);
