@@ -193,7 +193,8 @@ void Node3D::_notification(int p_what) {
 		} break;
 		case NOTIFICATION_PARENTED:
 		case NOTIFICATION_UNPARENTED: {
-			global_dirty = true;
+			// The whole subtree's cached global transforms depend on the new parent chain.
+			_propagate_transform_changed();
 		} break;
 	}
 }

@@ -4,11 +4,11 @@
 /* godot-area: Mesh (abstract: surfaces, AABB, RS mesh RID) and ArrayMesh */
 /* (surfaces added from RS::SurfaceData triangle lists).                  */
 /*                                                                        */
-/* Winding convention (all meshes made here, and what the renderer must  */
-/* treat as front): a triangle (a, b, c) is FRONT-facing when it is       */
-/* counter-clockwise seen from outside, i.e. cross(b - a, c - a) points   */
-/* along the outward normal. (Godot's internal arrays use clockwise; we   */
-/* use the glTF / OpenGL convention instead.) Tangents are 4 floats: xyz  */
+/* Winding convention (all meshes made here, and what the renderer treats */
+/* as front): Godot's. A triangle (a, b, c) is FRONT-facing when it is    */
+/* clockwise seen from outside, i.e. cross(b - a, c - a) points INTO the  */
+/* surface, against the outward normal. glTF files are counter-clockwise; */
+/* the glTF importer reverses them. Tangents are 4 floats: xyz            */
 /* along +U, w = +1 or -1 so that cross(normal, tangent.xyz) * w points   */
 /* along -V (towards the top of the texture; OpenGL-style normal maps).   */
 

@@ -31,8 +31,9 @@ void PrimitiveMesh::add_grid(RS::SurfaceData &r_arrays, const Vector3 &p_corner,
 	}
 
 	// For a cell with corners a (i, j), b (i+1, j), c (i, j+1), d (i+1, j+1):
-	// cross(b - a, c - a) is along cross(U, V); keep that order when it agrees with the normal.
-	const bool uv_agrees = p_u.cross(p_v).dot(normal) > 0;
+	// cross(b - a, c - a) is along cross(U, V). Front faces are clockwise seen from outside
+	// (Godot's convention, see mesh.h), so that order is used when cross(U, V) points INWARD.
+	const bool uv_agrees = p_u.cross(p_v).dot(normal) < 0;
 	for (int j = 0; j < p_segments_v; j++) {
 		for (int i = 0; i < p_segments_u; i++) {
 			const uint32_t a = base + j * columns + i;
@@ -340,7 +341,8 @@ void SphereMesh::create_sphere_arrays(RS::SurfaceData &r_arrays, float p_radius,
 			const uint32_t b = base + j * columns + (i - 1);
 			const uint32_t c = base + (j - 1) * columns + i;
 			const uint32_t d = base + j * columns + i;
-			r_arrays.indices.insert(r_arrays.indices.end(), { a, b, c, c, b, d });
+			// Clockwise seen from outside (mesh.h).
+			r_arrays.indices.insert(r_arrays.indices.end(), { a, c, b, c, d, b });
 		}
 	}
 }

@@ -5,7 +5,7 @@
 /* and PlaneMesh, QuadMesh, BoxMesh, SphereMesh with Godot 4.7 property   */
 /* names and defaults. Each generates one indexed triangle surface with   */
 /* normals, tangents and UVs; winding and tangent conventions are the     */
-/* ones documented in mesh.h (counter-clockwise front seen from outside). */
+/* ones documented in mesh.h (clockwise front seen from outside, Godot). */
 /* Geometry is rebuilt lazily: setters mark it dirty, the next read       */
 /* (get_rid, get_aabb, get_mesh_arrays...) regenerates it.                */
 /* The create_*_arrays() statics are the plain generators (no RS needed). */
@@ -55,7 +55,7 @@ public:
 
 	// Appends a (p_segments_u + 1) x (p_segments_v + 1) vertex grid spanning p_corner + [0,1]·p_u
 	// + [0,1]·p_v with normal p_normal, UVs mapped to p_uv_pos + [0,1]·p_uv_size, and its
-	// triangles wound counter-clockwise seen from the side p_normal points to.
+	// triangles wound clockwise seen from the side p_normal points to (front faces, mesh.h).
 	static void add_grid(RS::SurfaceData &r_arrays, const Vector3 &p_corner, const Vector3 &p_u, const Vector3 &p_v, const Vector3 &p_normal, int p_segments_u, int p_segments_v, const Vector2 &p_uv_pos, const Vector2 &p_uv_size);
 
 	PrimitiveMesh();

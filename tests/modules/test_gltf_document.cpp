@@ -70,3 +70,64 @@ TEST_CASE("[GLTF] malformed or missing files give a clear error") {
 }
 
 } // namespace TestGLTFDocument
+
+#include "modules/gltf/register_types.h"
+#include "scene/3d/mesh_instance_3d.h"
+#include "scene/resources/material.h"
+#include "scene/resources/mesh.h"
+#include "scene/resources/resource_format_text.h"
+#include "tests/scene/scene_test_fixture.h"
+
+#include <filesystem>
+#include <fstream>
+
+namespace TestGLTFDocument {
+
+TEST_CASE("[GLTF][SceneTree] a .tscn instances a glTF file as MeshInstance3D nodes with clockwise front faces") {
+	SceneTest::DummyServer server;
+	initialize_gltf_module();
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_gltf";
+	std::filesystem::create_directories(dir);
+	{
+		std::ofstream f(dir / "tri.gltf");
+		f << TRIANGLE_GLTF;
+	}
+	const String tscn = "[gd_scene load_steps=2 format=3]\n\n"
+						"[ext_resource type=\"PackedScene\" path=\"tri.gltf\" id=\"1\"]\n\n"
+						"[node name=\"Root\" type=\"Node3D\"]\n\n"
+						"[node name=\"Model\" parent=\".\" instance=ExtResource(\"1\")]\n"
+						"transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -5)\n";
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(tscn, (dir / "scene.tscn").string(), &error);
+	REQUIRE_MESSAGE(root != nullptr, error);
+	Node *model = root->get_node_or_null("Model");
+	REQUIRE(model != nullptr);
+	MeshInstance3D *tri = Object::cast_to<MeshInstance3D>(model->get_node_or_null("Tri"));
+	REQUIRE(tri != nullptr);
+	Ref<ArrayMesh> mesh = tri->get_mesh();
+	REQUIRE(mesh.is_valid());
+	REQUIRE(mesh->get_surface_count() == 1);
+	RS::SurfaceData s = mesh->surface_get_arrays(0);
+	// glTF's counter-clockwise (0, 1, 2) becomes Godot's clockwise (0, 2, 1): cross(b - a, c - a) opposes the normal.
+	CHECK(s.indices == std::vector<uint32_t>{ 0, 2, 1 });
+	Vector3 face = (s.vertices[s.indices[1]] - s.vertices[s.indices[0]]).cross(s.vertices[s.indices[2]] - s.vertices[s.indices[0]]);
+	CHECK(face.dot(s.normals[0]) < 0);
+	Ref<StandardMaterial3D> mat = mesh->surface_get_material(0);
+	REQUIRE(mat.is_valid());
+	// Linear 0.8 in glTF is sRGB ~0.906 in StandardMaterial3D.
+	CHECK(Math::is_equal_approx(mat->get_albedo().r, Color::linear_to_srgb_channel(0.8f), 1e-5f));
+	CHECK(Math::is_equal_approx(mat->get_roughness(), 0.4f));
+
+	delete root;
+	// A missing glTF file is a warning naming it; the rest of the scene still loads.
+	set_error_print_silenced(true);
+	Node *partial = ResourceFormatText::load_scene_from_string(tscn, (dir / "missing" / "scene.tscn").string(), &error);
+	set_error_print_silenced(false);
+	REQUIRE(partial != nullptr);
+	CHECK(partial->get_node_or_null("Model") == nullptr);
+	delete partial;
+	uninitialize_gltf_module();
+	std::filesystem::remove_all(dir);
+}
+
+} // namespace TestGLTFDocument

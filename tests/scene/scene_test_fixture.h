@@ -42,11 +42,15 @@ struct ErrorCatcher {
 
 // Create first in a test case; everything scene-side must be deleted before it goes.
 struct DummyServer {
+	RasterizerDummy *rasterizer = nullptr; // Owned by rs.
 	RenderingServerDefault *rs = nullptr;
 	DummyServer() {
-		rs = new RenderingServerDefault(new RasterizerDummy);
+		rasterizer = new RasterizerDummy;
+		rs = new RenderingServerDefault(rasterizer);
 		register_scene_types();
 	}
+	// What the server handed to the (dummy) renderer in the last draw.
+	const RenderSceneData &last_scene() const { return rasterizer->get_scene_dummy()->get_last_scene_data(); }
 	~DummyServer() { delete rs; }
 };
 

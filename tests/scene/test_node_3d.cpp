@@ -7,6 +7,7 @@
 #include "scene/3d/node_3d.h"
 
 #include "scene/3d/camera_3d.h"
+#include "scene/3d/light_3d.h"
 #include "scene/3d/mesh_instance_3d.h"
 #include "scene/3d/world_environment.h"
 #include "scene/main/scene_tree.h"
@@ -193,7 +194,13 @@ TEST_CASE("[Node3D] global transform propagates to children and to the server") 
 	box.instantiate();
 	child->set_mesh(box);
 	child->set_position(Vector3(1, 0, 0));
+	// Cached globals of a subtree follow a new parent.
+	Node3D *grandchild = new Node3D;
+	grandchild->set_position(Vector3(0, 1, 0));
+	child->add_child(grandchild);
+	CHECK(grandchild->get_global_transform().origin.is_equal_approx(Vector3(1, 1, 0)));
 	parent->add_child(child);
+	CHECK(grandchild->get_global_transform().origin.is_equal_approx(Vector3(1, 3, 2)));
 
 	// Outside the tree the math already works.
 	CHECK(child->get_global_transform().origin.is_equal_approx(parent->get_transform().xform(Vector3(1, 0, 0))));
@@ -327,6 +334,78 @@ TEST_CASE("[WorldEnvironment] puts its environment into the tree's world") {
 	tree->get_root()->remove_child(we);
 	CHECK(tree->get_world_3d()->get_environment().is_null());
 	delete we;
+	delete tree;
+}
+
+TEST_CASE("[SceneTree] a scene reaches the renderer: camera, visible geometry, lights, environment") {
+	DummyServer server;
+	SceneTree *tree = new SceneTree;
+	Node3D *scene = new Node3D;
+
+	Camera3D *cam = new Camera3D;
+	cam->set_position(Vector3(0, 0, 5));
+	cam->set_fov(60.0f);
+	scene->add_child(cam);
+
+	MeshInstance3D *box = new MeshInstance3D;
+	Ref<BoxMesh> mesh;
+	mesh.instantiate();
+	box->set_mesh(mesh);
+	Ref<StandardMaterial3D> mat;
+	mat.instantiate();
+	mat->set("albedo_color", Color(1, 0, 0));
+	mat->set("roughness", 0.25);
+	box->set("material_override", mat);
+	scene->add_child(box);
+
+	MeshInstance3D *hidden = new MeshInstance3D;
+	hidden->set_mesh(mesh);
+	hidden->set_visible(false);
+	scene->add_child(hidden);
+
+	OmniLight3D *omni = new OmniLight3D;
+	omni->set_position(Vector3(0, 2, 0));
+	scene->add_child(omni);
+	DirectionalLight3D *sun = new DirectionalLight3D;
+	scene->add_child(sun);
+	DirectionalLight3D *editor_sun = new DirectionalLight3D;
+	editor_sun->set("editor_only", true);
+	scene->add_child(editor_sun);
+
+	WorldEnvironment *we = new WorldEnvironment;
+	Ref<Environment> env;
+	env.instantiate();
+	env->set("background_mode", (int)Environment::BG_COLOR);
+	env->set("background_color", Color(0, 0, 1));
+	we->set_environment(env);
+	scene->add_child(we);
+
+	tree->get_root()->add_child(scene);
+	tree->set_size(64, 32);
+	tree->render();
+
+	const RenderSceneData &d = server.last_scene();
+	CHECK(d.viewport_width == 64);
+	CHECK(d.fovy_degrees == doctest::Approx(60.0));
+	CHECK(d.cam_transform.origin.is_equal_approx(Vector3(0, 0, 5)));
+	REQUIRE_MESSAGE(d.geometry.size() == 1, "the hidden mesh instance is not drawn");
+	CHECK(d.geometry[0].material_override == mat->get_rid());
+	CHECK(d.geometry[0].mesh == mesh->get_rid());
+	CHECK(d.lights.size() == 1);
+	CHECK_MESSAGE(d.directional_lights.size() == 1, "editor_only lights are not drawn outside the editor");
+	CHECK(d.environment.has_environment);
+	CHECK(d.environment.background == RS::ENV_BG_COLOR);
+	CHECK(d.environment.bg_color == Color(0, 0, 1));
+	RS::MaterialParams params = RS::get_singleton()->material_get_params(mat->get_rid());
+	CHECK(params.albedo == Color(1, 0, 0));
+	CHECK(params.roughness == doctest::Approx(0.25));
+
+	// Showing the hidden instance and moving the camera are picked up on the next draw.
+	hidden->show();
+	cam->set_position(Vector3(0, 1, 6));
+	tree->render();
+	CHECK(server.last_scene().geometry.size() == 2);
+	CHECK(server.last_scene().cam_transform.origin.is_equal_approx(Vector3(0, 1, 6)));
 	delete tree;
 }
 

@@ -2,7 +2,7 @@
 /*  test_primitive_meshes.cpp                                             */
 /**************************************************************************/
 /* PlaneMesh, QuadMesh, BoxMesh, SphereMesh and ArrayMesh: Godot 4.7      */
-/* defaults, vertex counts, unit outward normals, counter-clockwise       */
+/* defaults, vertex counts, unit outward normals, clockwise (Godot)      */
 /* winding seen from outside, tangent frames, AABBs, index validity and   */
 /* rejection of bad parameters.                                           */
 
@@ -46,8 +46,8 @@ static void check_surface_valid(const RS::SurfaceData &p_s) {
 	CHECK(bad_indices == 0);
 }
 
-// For every non-degenerate triangle: cross(b - a, c - a) agrees with the vertex normals
-// (counter-clockwise front faces), and the stored tangent frame agrees with the UV layout:
+// For every non-degenerate triangle: cross(b - a, c - a) opposes the vertex normals
+// (clockwise front faces seen from outside, Godot's convention), and the stored tangent frame agrees with the UV layout:
 // tangent along dP/du, cross(N, T) * w along -dP/dv. Returns the number of triangles checked.
 static int check_winding_and_tangents(const RS::SurfaceData &p_s) {
 	int checked = 0, bad_winding = 0, bad_tangent = 0, bad_bitangent = 0;
@@ -61,7 +61,7 @@ static int check_winding_and_tangents(const RS::SurfaceData &p_s) {
 		}
 		checked++;
 		const Vector3 n = (p_s.normals[ia] + p_s.normals[ib] + p_s.normals[ic]).normalized();
-		bad_winding += face.dot(n) <= 0;
+		bad_winding += face.dot(n) >= 0;
 
 		const Vector2 d1 = p_s.uvs[ib] - p_s.uvs[ia];
 		const Vector2 d2 = p_s.uvs[ic] - p_s.uvs[ia];
