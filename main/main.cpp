@@ -9,6 +9,7 @@
 /*                   (B is the reference)                                 */
 /* godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H]  */
 /*                   [--spp N] [--error E] [--shadows on|off] [--seed S]  */
+/* godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH]     */
 /* godot-area info                                                        */
 /* Without SCENE the embedded demo scene (demo/demo.tscn) is used.        */
 /* Exit codes: 0 success, 1 runtime failure, 2 bad arguments or files.    */
@@ -21,6 +22,7 @@
 #include "drivers/png/png_writer.h"
 #include "main/demo_scene.gen.h"
 #include "modules/gltf/register_types.h"
+#include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/metrics/image_metrics.h"
 #include "modules/openexr/image_saver_exr.h"
 #include "modules/reference/renderer_compositor_reference.h"
@@ -115,6 +117,7 @@ void _print_usage() {
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
 			"                       [--seed S] [--png P] [--progress]\n"
+			"  godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N]\n"
 			"  godot-area info\n"
 			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
 			"GODOT_AREA_VALIDATION=1 enables the validation layer.\n");
@@ -407,6 +410,10 @@ int _command_compare(const Args &p_args) {
 } // namespace
 
 int Main::run(int p_argc, char **p_argv) {
+	if (p_argc >= 2 && String(p_argv[1]) == "ltc-fit") {
+		// The LTC LUT fitter has its own options (modules/ltc_fit/ltc_fit_command.h).
+		return ltc_fit_command(std::vector<String>(p_argv + 2, p_argv + p_argc));
+	}
 	Args args;
 	String error;
 	if (!_parse_args(p_argc, p_argv, args, &error)) {
