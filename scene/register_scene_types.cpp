@@ -32,6 +32,7 @@ void register_scene_types() {
 	GDREGISTER_CLASS(DirectionalLight3D);
 	GDREGISTER_CLASS(OmniLight3D);
 	GDREGISTER_CLASS(SpotLight3D);
+	GDREGISTER_CLASS(AreaLight3D);
 	GDREGISTER_CLASS(WorldEnvironment);
 
 	// Resources.

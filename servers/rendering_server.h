@@ -103,6 +103,7 @@ public:
 		LIGHT_DIRECTIONAL,
 		LIGHT_OMNI,
 		LIGHT_SPOT,
+		LIGHT_AREA, // Rectangle in the light's local XY plane, emitting along local -Z (AreaLight3D).
 	};
 
 	enum LightParam {
@@ -151,6 +152,12 @@ public:
 		LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_AND_SKY,
 		LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_ONLY,
 		LIGHT_DIRECTIONAL_SKY_MODE_SKY_ONLY,
+	};
+
+	// How an area light is shaded. Values equal AreaLight3D::AreaShadingMethod (saved in scene
+	// files as integers); new methods are appended, never inserted.
+	enum LightAreaShadingMethod {
+		LIGHT_AREA_SHADING_LTC, // Linearly transformed cosines (Heitz et al. 2016).
 	};
 
 	/* ENVIRONMENT API enums */
@@ -203,6 +210,8 @@ public:
 		VIEWPORT_DEBUG_DRAW_OCCLUDERS,
 		VIEWPORT_DEBUG_DRAW_MOTION_VECTORS,
 		VIEWPORT_DEBUG_DRAW_INTERNAL_BUFFER,
+		// godot-area addition (appended to keep Godot's values): per-pixel count of area lights in the pixel's cluster.
+		VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS,
 	};
 
 	/* INSTANCE API enums */
@@ -257,6 +266,8 @@ public:
 	virtual RID omni_light_create() = 0;
 	// Creates a spot light resource.
 	virtual RID spot_light_create() = 0;
+	// Creates a rectangular area light resource (storage defaults: size 1 x 1 m, energy normalised, LTC).
+	virtual RID area_light_create() = 0;
 	// Sets one scalar parameter; NaN/inf or out-of-domain values print an error and are ignored.
 	virtual void light_set_param(RID p_light, LightParam p_param, float p_value) = 0;
 	// Sets the light colour (sRGB, as the node property).
@@ -283,12 +294,27 @@ public:
 	virtual void light_directional_set_blend_splits(RID p_light, bool p_enable) = 0;
 	// Sets whether a directional light affects the sky, the scene, or both.
 	virtual void light_directional_set_sky_mode(RID p_light, LightDirectionalSkyMode p_mode) = 0;
+	// Sets the rectangle of an area light in metres: x along the light's local +X, y along +Y. Both
+	// components must be finite and >= 0 (a zero area emits nothing); bad values are ignored with an error.
+	virtual void light_area_set_size(RID p_light, const Vector2 &p_size) = 0;
+	// True: the emitted radiance is divided by the rectangle's area, so the light's power does not
+	// change with its size (L_e = colour * energy * pi / (size.x * size.y)); false: L_e = colour * energy * pi.
+	virtual void light_area_set_normalize_energy(RID p_light, bool p_enable) = 0;
+	// Sets the shading method of an area light.
+	virtual void light_area_set_shading_method(RID p_light, LightAreaShadingMethod p_method) = 0;
 	// Returns the light type (LIGHT_DIRECTIONAL for an invalid RID, with an error).
 	virtual LightType light_get_type(RID p_light) const = 0;
 	// Returns one scalar parameter (0 for an invalid RID or index).
 	virtual float light_get_param(RID p_light, LightParam p_param) const = 0;
-	// Returns the local-space bound (omni: cube of side 2 * range; spot: cone AABB; directional: empty).
+	// Returns the local-space bound (omni: cube of side 2 * range; spot: cone AABB; directional: empty;
+	// area: the box (a + 2r) x (b + 2r) x r in front of the rectangle, z from -r to 0).
 	virtual AABB light_get_aabb(RID p_light) const = 0;
+	// Returns the rectangle of an area light (metres; zero with an error for an invalid RID).
+	virtual Vector2 light_area_get_size(RID p_light) const = 0;
+	// Returns whether an area light normalises its energy by its area.
+	virtual bool light_area_get_normalize_energy(RID p_light) const = 0;
+	// Returns the shading method of an area light.
+	virtual LightAreaShadingMethod light_area_get_shading_method(RID p_light) const = 0;
 
 	/* CAMERA API */
 

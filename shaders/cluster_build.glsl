@@ -44,7 +44,7 @@ layout(push_constant, std430) uniform Params { // 112 bytes. Mirror: ClusterBuil
 	uint tiles_y;
 	uint pad0;
 	uint pad1;
-	uvec4 element_count; // Elements of each type (x = omni, y = spot, ...).
+	uvec4 element_count; // Elements of each type (x = omni, y = spot, z = area).
 }
 params;
 
@@ -82,6 +82,50 @@ bool test_cone(vec3 p_sphere_center, float p_sphere_radius, vec3 p_apex, vec3 p_
 	float b = sqrt(max(dot(v, v) - a * a, 0.0));
 	float dist = b * p_cos - a * p_sin;
 	return dist <= p_sphere_radius;
+}
+
+// Oriented box (centre p_center, orthonormal axes p_u0..2, half sizes p_h) against the axis-aligned
+// cluster box: the separating axis theorem (Gottschalk et al. 1996, "OBBTree"). Two convex boxes are
+// disjoint iff their projections are disjoint on one of 15 axes: the 3 + 3 face normals and the 9
+// cross products of edge directions. Exact; a nearly degenerate cross-product axis (parallel edges) is
+// skipped, which can only keep a cluster (conservative), never drop one.
+bool test_obb(vec3 p_box_min, vec3 p_box_max, vec3 p_center, vec3 p_u0, vec3 p_u1, vec3 p_u2, vec3 p_h) {
+	vec3 box_center = (p_box_min + p_box_max) * 0.5;
+	vec3 box_half = (p_box_max - p_box_min) * 0.5;
+	vec3 t = p_center - box_center;
+	mat3 u = mat3(p_u0, p_u1, p_u2);
+	// Cluster box face normals (x, y, z): the OBB's projected radius is sum_j h_j |u_j[i]|.
+	for (int i = 0; i < 3; i++) {
+		float rb = p_h.x * abs(p_u0[i]) + p_h.y * abs(p_u1[i]) + p_h.z * abs(p_u2[i]);
+		if (abs(t[i]) > box_half[i] + rb) {
+			return false;
+		}
+	}
+	// OBB face normals.
+	for (int j = 0; j < 3; j++) {
+		vec3 l = u[j];
+		float ra = dot(box_half, abs(l));
+		if (abs(dot(t, l)) > ra + p_h[j]) {
+			return false;
+		}
+	}
+	// Edge cross products e_i x u_j.
+	for (int i = 0; i < 3; i++) {
+		vec3 e = vec3(0.0);
+		e[i] = 1.0;
+		for (int j = 0; j < 3; j++) {
+			vec3 l = cross(e, u[j]);
+			if (dot(l, l) < 1e-8) {
+				continue;
+			}
+			float ra = dot(box_half, abs(l));
+			float rb = p_h.x * abs(dot(p_u0, l)) + p_h.y * abs(dot(p_u1, l)) + p_h.z * abs(dot(p_u2, l));
+			if (abs(dot(t, l)) > ra + rb) {
+				return false;
+			}
+		}
+	}
+	return true;
 }
 
 void main() {
@@ -137,10 +181,25 @@ void main() {
 	for (uint i = first; i < last; i++) {
 		ClusterElementData e = elements.data[base + i];
 		float radius = e.radius * (1.0 + CLUSTER_ELEMENT_MARGIN);
-		bool hit = test_sphere(box_min, box_max, e.position, radius);
+		vec3 sphere_center = e.position;
+		if (cluster_get_bound_type(type) == CLUSTER_BOUND_BOX) {
+			// Area light: the box centre sits r / 2 in front of the light; the sphere (eq. 5.1) is centred on the light.
+			sphere_center -= e.direction * e.extents.z;
+		}
+		bool hit = test_sphere(box_min, box_max, sphere_center, radius);
 		if (hit && cluster_get_bound_type(type) == CLUSTER_BOUND_CONE) {
 			// The range sphere, further cut by the cone.
 			hit = test_cone(box_center, box_radius + e.radius * CLUSTER_ELEMENT_MARGIN, e.position, e.direction, e.cone_cos, e.cone_sin);
+		}
+		if (hit && cluster_get_bound_type(type) == CLUSTER_BOUND_BOX) {
+			// Box AND the thesis' eq. 5.1 sphere (tested above): both contain the influence region (points in
+			// front within r of the rectangle), so their intersection does too. The box is not inside the
+			// sphere (its corners stick out for small lights), so testing both guarantees the area light
+			// never takes more clusters than the sphere alone, and usually far fewer.
+			vec3 u2 = e.direction;
+			vec3 u0 = e.axis_x;
+			vec3 u1 = cross(u2, u0);
+			hit = test_obb(box_min, box_max, e.position, u0, u1, u2, e.extents * (1.0 + CLUSTER_ELEMENT_MARGIN) + vec3(1e-5));
 		}
 		if (hit) {
 			mask |= 1u << (i - first);

@@ -33,26 +33,36 @@
 // Element types. Must match ClusterBuilderRD::ElementType.
 #define CLUSTER_ELEMENT_TYPE_OMNI 0
 #define CLUSTER_ELEMENT_TYPE_SPOT 1
-#define CLUSTER_ELEMENT_TYPE_MAX 2
+#define CLUSTER_ELEMENT_TYPE_AREA 2
+#define CLUSTER_ELEMENT_TYPE_MAX 3
 
 // Bounding volume kinds. Must match ClusterBuilderRD::BoundType. A new element type picks one of these
 // (or adds one, with its test in cluster_build.glsl).
 #define CLUSTER_BOUND_SPHERE 0 // Sphere (position, radius).
 #define CLUSTER_BOUND_CONE 1 // Sphere (position, radius) intersected with the cone (apex position, axis direction, cone_cos/cone_sin).
+#define CLUSTER_BOUND_BOX 2 // Oriented box (centre position, unit axes axis_x, cross(direction, axis_x), direction, half sizes extents) intersected with the sphere of radius `radius` centred at position - direction * extents.z.
 
 // Bounding volume of each element type. Adding a type = a define above, a line here, and (for a new
 // bound kind) its test in cluster_build.glsl.
 uint cluster_get_bound_type(uint p_type) {
-	return p_type == CLUSTER_ELEMENT_TYPE_SPOT ? CLUSTER_BOUND_CONE : CLUSTER_BOUND_SPHERE;
+	if (p_type == CLUSTER_ELEMENT_TYPE_SPOT) {
+		return CLUSTER_BOUND_CONE;
+	}
+	if (p_type == CLUSTER_ELEMENT_TYPE_AREA) {
+		return CLUSTER_BOUND_BOX; // (a + 2r) x (b + 2r) x r in front of the light (thesis section 5.1.1).
+	}
+	return CLUSTER_BOUND_SPHERE;
 }
 
-struct ClusterElementData { // 48 bytes, std430. Mirror: ClusterBuilderRD::ElementData.
-	vec3 position; // 0: view space centre (sphere) / apex (cone), metres.
-	float radius; // 12: metres.
-	vec3 direction; // 16: unit axis of the cone, view space.
+struct ClusterElementData { // 64 bytes, std430. Mirror: ClusterBuilderRD::ElementData.
+	vec3 position; // 0: view space centre (sphere, box) / apex (cone), metres.
+	float radius; // 12: metres; box: radius of the thesis' eq. 5.1 sphere r + |(a, b)| / 2 around the light centre.
+	vec3 direction; // 16: unit axis of the cone / box axis z (area light normal), view space.
 	float cone_cos; // 28: cosine of the cone half angle.
-	vec3 extents; // 32: reserved for box bounds (area lights), half sizes.
+	vec3 extents; // 32: box half sizes along axis_x, cross(direction, axis_x), direction (metres).
 	float cone_sin; // 44: sine of the cone half angle.
+	vec3 axis_x; // 48: box unit axis x, view space.
+	float pad0; // 60
 };
 
 // Index of the first mask word of cluster (p_tile, p_slice) for element type p_type.

@@ -8,6 +8,12 @@
 /* Every value is in its shading unit already: LightStorage::             */
 /* update_light_buffers() is the only place that converts (view space,    */
 /* linear colour * energy * pi, inverse range, cosine of the spot angle). */
+/*                                                                        */
+/* Area lights have their own array of AreaLightData (thesis Listing A.2: */
+/* a separate buffer, binding 5 of the scene shader): a rectangle needs   */
+/* two axes and a normal, which would bloat every omni/spot entry if the  */
+/* two shared one struct. Mirror: RendererRD::LightStorage::              */
+/* AreaLightData; 80 bytes, same field names.                             */
 
 #ifndef LIGHT_DATA_INC_GLSL
 #define LIGHT_DATA_INC_GLSL
@@ -27,6 +33,22 @@ struct LightData { // Byte offsets (std430).
 	float cone_angle; // 52: spot: cos(spot_angle), spot_angle being the half angle. Omni: -1.
 	float specular_amount; // 56: "light_specular" multiplier of the specular lobe.
 	uint cull_mask; // 60: "light_cull_mask" render layers.
+};
+
+// Must match RS::LightAreaShadingMethod (servers/rendering_server.h).
+#define AREA_SHADING_LTC 0u
+
+struct AreaLightData { // Byte offsets (std430), 80 bytes.
+	vec3 position; // 0: view space centre of the rectangle, metres.
+	float inv_radius; // 12: 1 / area_range (1/m); range = max distance from any point of the rectangle.
+	vec3 half_axis_x; // 16: view space, local +X scaled by area_size.x / 2 (metres).
+	float attenuation; // 28: area_attenuation, exponent of the range window W(d) (0 = no window).
+	vec3 half_axis_y; // 32: view space, local +Y scaled by area_size.y / 2 (metres).
+	float specular_amount; // 44: "light_specular" multiplier of the specular lobe.
+	vec3 normal; // 48: view space unit emission direction (the light's local -Z); only this side emits.
+	uint shading_method; // 60: AREA_SHADING_*.
+	vec3 color; // 64: emitted radiance L_e = linear colour * energy * pi / A_n (A_n = a b when energy is normalised, else 1); 0 for a zero-size light.
+	uint cull_mask; // 76: "light_cull_mask" render layers.
 };
 
 #endif // LIGHT_DATA_INC_GLSL

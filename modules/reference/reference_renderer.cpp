@@ -47,6 +47,7 @@ struct ReferenceRenderer::Frame {
 	std::atomic<int> next_row{ 0 };
 	std::atomic<int> rows_done{ 0 };
 	std::atomic<uint64_t> shadow_rays{ 0 };
+	std::atomic<uint64_t> area_samples{ 0 };
 	std::mutex progress_mutex;
 	int progress_printed = -1;
 };
@@ -246,6 +247,22 @@ bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_inst
 	if (type == RS::LIGHT_DIRECTIONAL) {
 		return false; // The Forward+ shader has no directional lights yet; mirror it.
 	}
+	if (type == RS::LIGHT_AREA) {
+		// The area-light contract's units (area_light.h); scale is ignored, as for every light.
+		r_light.type = type;
+		AreaLightData &a = r_light.area;
+		a = AreaLightData();
+		area_light_set_frame(a, p_instance.transform);
+		const Vector2 size = light_storage->light_area_get_size(rid);
+		a.size_x = size.x;
+		a.size_y = size.y;
+		a.radiance = area_light_emitted_radiance(light_storage->light_get_color(rid), light_storage->light_get_param(rid, RS::LIGHT_PARAM_ENERGY), light_storage->light_is_negative(rid), size, light_storage->light_area_get_normalize_energy(rid));
+		a.range = light_storage->light_get_param(rid, RS::LIGHT_PARAM_RANGE);
+		a.attenuation = std::fmax(light_storage->light_get_param(rid, RS::LIGHT_PARAM_ATTENUATION), 0.0f);
+		a.specular_amount = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR);
+		a.cull_mask = light_storage->light_get_cull_mask(rid);
+		return true;
+	}
 	// RendererRD::LightStorage::fill_light_data, in world instead of view space.
 	r_light.type = type;
 	LightData &d = r_light.data;
@@ -419,6 +436,7 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 	last_stats.threads = threads;
 	last_stats.primary_rays = uint64_t(frame.width) * frame.height;
 	last_stats.shadow_rays = frame.shadow_rays.load();
+	last_stats.area_light_samples = frame.area_samples.load();
 	last_stats.triangles = triangles;
 	last_stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -426,6 +444,7 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels) {
 	Frame &frame = const_cast<Frame &>(p_frame); // Only the atomics and the progress state change.
 	uint64_t shadow_rays = 0;
+	uint64_t area_samples = 0;
 	while (true) {
 		int y = frame.next_row.fetch_add(1);
 		if (y >= frame.height) {
@@ -434,7 +453,7 @@ void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::ve
 		for (int x = 0; x < frame.width; x++) {
 			uint64_t index = uint64_t(y) * frame.width + x;
 			ReferenceRNG rng = ReferenceRNG::for_pixel(frame.options.seed, index);
-			Color c = _shade_pixel(frame, x, y, rng, shadow_rays);
+			Color c = _shade_pixel(frame, x, y, rng, shadow_rays, area_samples);
 			float *p = &r_pixels[index * 4];
 			p[0] = c.r;
 			p[1] = c.g;
@@ -454,9 +473,110 @@ void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::ve
 		}
 	}
 	frame.shadow_rays.fetch_add(shadow_rays);
+	frame.area_samples.fetch_add(area_samples);
 }
 
-Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays) {
+// True when a segment from p_origin along unit p_dir up to p_tfar hits any surface (both faces).
+static bool _reference_occluded(RTCScene p_scene, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar) {
+	RTCRay ray;
+	ray.org_x = p_origin.x;
+	ray.org_y = p_origin.y;
+	ray.org_z = p_origin.z;
+	ray.dir_x = p_dir.x;
+	ray.dir_y = p_dir.y;
+	ray.dir_z = p_dir.z;
+	ray.tnear = 0.0f;
+	ray.tfar = p_tfar;
+	ray.time = 0.0f;
+	ray.mask = 0xFFFFFFFF;
+	ray.id = 0;
+	ray.flags = 0;
+	RTCIntersectContext context;
+	rtcInitIntersectContext(&context);
+	rtcOccluded1(p_scene, &context, &ray);
+	return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit.
+}
+
+// Shading inputs of one surface point, shared by every sample of an area-light integral.
+struct ReferenceAreaShadingPoint {
+	Vector3 vertex; // World position.
+	Vector3 N; // Shading normal (unit).
+	Vector3 V; // Towards the eye (unit).
+	Vector3 ng; // Geometric normal (unit), for the shadow-ray offset.
+	float offset = 0.0f; // Shadow-ray origin offset (m).
+	uint32_t diffuse_mode = BRDF_DIFFUSE_BURLEY;
+	float roughness = 1.0f;
+	Vector3 f0;
+	float f90 = 1.0f;
+	bool specular_enabled = true;
+	Vector3 diffuse_weight; // albedo * (1 - metallic): what the diffuse sum is multiplied by.
+};
+
+// Outgoing radiance at p_point from one area light (added to r_radiance):
+//   W(d) * integral over the rectangle of f(l, v) L_e (n.l) dw,
+// with dw = cos(theta_light) dA / dist^2 and the rectangle parameterised by (u, v) in [0,1]^2 (so the
+// integrand carries the factor a * b). Adaptive stratified integration until the relative standard
+// error target or the sample cap; one shadow ray per sample when shadows are on. Points on or behind
+// the light plane, outside the range, or a zero-area light give exactly 0.
+static void _reference_shade_area_light(RTCScene p_scene, const ReferenceRenderOptions &p_options, const AreaLightData &p_light, const ReferenceAreaShadingPoint &p_point, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_samples, Vector3 &r_radiance) {
+	const float area = p_light.get_area();
+	if (!(area > 0.0f) || p_light.radiance == Vector3()) {
+		return;
+	}
+	if (!(area_light_front_distance(p_light, p_point.vertex) > 0.0f)) {
+		return; // One-sided: nothing on or behind the light plane is lit.
+	}
+	const float window = area_light_window(area_light_closest_distance(p_light, p_point.vertex), p_light.range, p_light.attenuation);
+	if (window <= 0.0f) {
+		return;
+	}
+	const bool shadows = p_options.shadows;
+	uint64_t shadow_rays = 0;
+	ReferenceIntegrand integrand = [&](double p_u, double p_v, double *r_value) {
+		r_value[0] = r_value[1] = r_value[2] = 0.0;
+		const Vector3 sample = p_light.center + p_light.axis_x * float((p_u - 0.5) * p_light.size_x) + p_light.axis_y * float((p_v - 0.5) * p_light.size_y);
+		const Vector3 to_light = sample - p_point.vertex;
+		const float dist2 = to_light.length_squared();
+		if (!(dist2 > 0.0f)) {
+			return;
+		}
+		const float dist = std::sqrt(dist2);
+		const Vector3 L = to_light / dist;
+		const float cos_light = -L.dot(p_light.emit_dir);
+		if (cos_light <= 0.0f || p_point.N.dot(L) <= 0.0f) {
+			return;
+		}
+		if (shadows) {
+			const Vector3 side = p_point.ng.dot(L) >= 0.0f ? p_point.ng : -p_point.ng;
+			const Vector3 origin = p_point.vertex + side * p_point.offset;
+			const Vector3 to_sample = sample - origin;
+			const float d = to_sample.length();
+			if (d > 2.0f * p_point.offset) {
+				shadow_rays++;
+				if (_reference_occluded(p_scene, origin, to_sample / d, d - p_point.offset)) {
+					return;
+				}
+			}
+		}
+		// Radiance arriving per unit (u, v): L_e * dw/(du dv) = L_e * cos_light * area / dist^2.
+		const Vector3 incoming = p_light.radiance * (cos_light * area / dist2);
+		Vector3 diffuse, specular;
+		light_compute(p_point.N, L, p_point.V, incoming, p_light.specular_amount, p_point.diffuse_mode, p_point.roughness, p_point.f0, p_point.f90, p_point.specular_enabled, diffuse, specular);
+		const Vector3 out = diffuse * p_point.diffuse_weight + specular;
+		r_value[0] = out.x;
+		r_value[1] = out.y;
+		r_value[2] = out.z;
+	};
+	AdaptiveIntegrationSettings settings;
+	settings.max_samples = std::max(p_options.max_samples, 1);
+	settings.target_relative_error = p_options.target_relative_error;
+	AdaptiveIntegrationResult result = integrate_adaptive(integrand, 3, settings, r_rng);
+	r_shadow_rays += shadow_rays;
+	r_samples += uint64_t(result.samples);
+	r_radiance += Vector3(float(result.value[0]), float(result.value[1]), float(result.value[2])) * window;
+}
+
+Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_area_samples) {
 	// Pixel centre in Vulkan NDC (y down, top row first), unprojected at depth 0 (near) and 1 (far):
 	// the segment the rasteriser's depth range covers for this pixel.
 	float ndc_x = (float(p_x) + 0.5f) / float(p_frame.width) * 2.0f - 1.0f;
@@ -548,12 +668,29 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 	float max_coord = std::max(std::fabs(vertex.x), std::max(std::fabs(vertex.y), std::fabs(vertex.z)));
 	float offset = 1e-4f * std::max(1.0f, max_coord);
 
-	// Light loop. Punctual (delta) lights: one exact evaluation each. An area light type slots in as a
-	// further case that calls integrate_adaptive() with an integrand over the light's [0,1]^2
-	// parameterisation (radiance * BRDF * cos * visibility / pdf), using r_rng and the options'
-	// target_relative_error / max_samples.
-	(void)r_rng;
+	// Light loop. Punctual (delta) lights: one exact evaluation each. Area lights: an adaptive integral
+	// over the rectangle (_reference_shade_area_light), whose result (diffuse already weighted by
+	// albedo * (1 - metallic), plus specular) is accumulated in area_light.
+	Vector3 area_light;
+	ReferenceAreaShadingPoint point;
+	point.vertex = vertex;
+	point.N = N;
+	point.V = V;
+	point.ng = ng;
+	point.offset = offset;
+	point.diffuse_mode = m.diffuse_mode;
+	point.roughness = roughness;
+	point.f0 = f0;
+	point.f90 = f90;
+	point.specular_enabled = m.specular_enabled;
+	point.diffuse_weight = albedo * (1.0f - metallic);
 	for (const Light &light : p_frame.lights) {
+		if (light.type == RS::LIGHT_AREA) {
+			if ((light.area.cull_mask & s.layer_mask) != 0) {
+				_reference_shade_area_light(p_frame.scene, p_frame.options, light.area, point, r_rng, r_shadow_rays, r_area_samples, area_light);
+			}
+			continue;
+		}
 		if ((light.data.cull_mask & s.layer_mask) == 0) {
 			continue;
 		}
@@ -595,6 +732,6 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		light_compute(N, L, V, radiance, light.data.specular_amount, m.diffuse_mode, roughness, f0, f90, m.specular_enabled, diffuse_light, specular_light);
 	}
 
-	Vector3 color = m.emission + (p_frame.ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light;
+	Vector3 color = m.emission + (p_frame.ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
 	return Color(color.x, color.y, color.z, alpha);
 }

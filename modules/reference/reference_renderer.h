@@ -15,6 +15,7 @@
 #pragma once
 
 #include "core/templates/rid_owner.h"
+#include "modules/reference/area_light.h"
 #include "modules/reference/forward_lights.h"
 #include "modules/reference/sampling.h"
 #include "servers/rendering/renderer_scene_render.h"
@@ -35,8 +36,8 @@ struct ReferenceRenderOptions {
 	int max_samples = 4096;
 	// Adaptive integrals stop when their relative standard error is below this (0.002 = 0.2 %).
 	float target_relative_error = 0.002f;
-	// Trace shadow rays (hard shadows for omni and spot lights). Off: every light is unoccluded, as in
-	// the GPU renderer, which has no shadows yet.
+	// Trace shadow rays (hard shadows for omni and spot lights, one ray per sample of an area light).
+	// Off: every light is unoccluded, as in the GPU renderer, which has no shadows yet.
 	bool shadows = false;
 	// Worker threads; 0 = std::thread::hardware_concurrency().
 	int threads = 0;
@@ -53,6 +54,7 @@ struct ReferenceRenderStats {
 	int threads = 0;
 	uint64_t primary_rays = 0;
 	uint64_t shadow_rays = 0;
+	uint64_t area_light_samples = 0; // Integrand evaluations of all area-light integrals.
 	uint64_t triangles = 0;
 	double seconds = 0.0; // Wall time (reported, never asserted).
 };
@@ -124,7 +126,8 @@ private:
 
 	struct Light {
 		RS::LightType type = RS::LIGHT_OMNI;
-		ReferenceBRDF::LightData data;
+		ReferenceBRDF::LightData data; // Omni and spot.
+		ReferenceBRDF::AreaLightData area; // LIGHT_AREA.
 	};
 
 	struct Frame; // Everything render_scene() sets up for the workers (Embree scene, camera, lights).
@@ -141,7 +144,7 @@ private:
 	bool _build_surface(const RS::SurfaceData &p_data, const Transform3D &p_xform, Surface &r_surface) const;
 	bool _make_light(const RenderSceneData::LightInstance &p_instance, Light &r_light) const;
 	static void _render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels);
-	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays);
+	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_area_samples);
 };
 
 // Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres

@@ -16,6 +16,7 @@
 String Light3D::get_param_property_name(Param p_param) const {
 	const bool directional = type == RS::LIGHT_DIRECTIONAL;
 	const bool spot = type == RS::LIGHT_SPOT;
+	const bool area = type == RS::LIGHT_AREA;
 	switch (p_param) {
 		case PARAM_ENERGY:
 			return "light_energy";
@@ -26,11 +27,11 @@ String Light3D::get_param_property_name(Param p_param) const {
 		case PARAM_SPECULAR:
 			return "light_specular";
 		case PARAM_RANGE:
-			return directional ? "range (PARAM_RANGE, unused by DirectionalLight3D)" : (spot ? "spot_range" : "omni_range");
+			return directional ? "range (PARAM_RANGE, unused by DirectionalLight3D)" : (spot ? "spot_range" : (area ? "area_range" : "omni_range"));
 		case PARAM_SIZE:
 			return directional ? "light_angular_distance" : "light_size";
 		case PARAM_ATTENUATION:
-			return directional ? "attenuation (PARAM_ATTENUATION, unused by DirectionalLight3D)" : (spot ? "spot_attenuation" : "omni_attenuation");
+			return directional ? "attenuation (PARAM_ATTENUATION, unused by DirectionalLight3D)" : (spot ? "spot_attenuation" : (area ? "area_attenuation" : "omni_attenuation"));
 		case PARAM_SPOT_ANGLE:
 			return "spot_angle";
 		case PARAM_SPOT_ATTENUATION:
@@ -70,8 +71,14 @@ String Light3D::validate_param(Param p_param, float p_value) const {
 		return "must be finite (not NaN or infinity)";
 	}
 	switch (p_param) {
-		// Signed by design: attenuation exponents, easing curves and the transmittance bias.
 		case PARAM_ATTENUATION:
+			// The area light raises its range window to this power (0 = no falloff); negative would
+			// amplify light towards the range limit. Omni/spot: a signed distance exponent.
+			if (type == RS::LIGHT_AREA) {
+				return p_value < 0.0f ? "must not be negative" : String();
+			}
+			return String();
+		// Signed by design: easing curves and the transmittance bias.
 		case PARAM_SPOT_ATTENUATION:
 		case PARAM_TRANSMITTANCE_BIAS:
 			return String();
@@ -234,6 +241,8 @@ AABB Light3D::get_aabb() const {
 			const real_t radius = std::sin(angle) * r;
 			return AABB(Vector3(-radius, -radius, -r), Vector3(radius * 2, radius * 2, r));
 		}
+		case RS::LIGHT_AREA:
+			break; // AreaLight3D::get_aabb (the size lives there).
 	}
 	return AABB();
 }
@@ -246,6 +255,11 @@ std::vector<String> Light3D::get_configuration_warnings() const {
 	if (type == RS::LIGHT_SPOT && shadow && param[PARAM_SPOT_ANGLE] >= 90.0f) {
 		warnings.push_back("A SpotLight3D with an angle wider than 90 degrees cannot cast shadows.");
 	}
+	if (const AreaLight3D *area = Object::cast_to<AreaLight3D>(this)) {
+		if (area->get_area_size().x <= 0.0f || area->get_area_size().y <= 0.0f) {
+			warnings.push_back("An AreaLight3D with a zero area_size component emits no light.");
+		}
+	}
 	if (type != RS::LIGHT_DIRECTIONAL && !shadow && projector.is_valid()) {
 		warnings.push_back("Projector texture only works with shadows active.");
 	}
@@ -257,6 +271,10 @@ void Light3D::_validate_property(PropertyInfo &p_property) const {
 	if (!shadow && (n == "shadow_bias" || n == "shadow_normal_bias" || n == "shadow_reverse_cull_face" || n == "shadow_transmittance_bias" || n == "shadow_opacity" || n == "shadow_blur" || n == "distance_fade_shadow" || n == "shadow_caster_mask")) {
 		// Saved, but not shown while shadows are off.
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	// An area light's extent is area_size; the punctual light_size (soft shadows) does not apply.
+	if (type == RS::LIGHT_AREA && n == "light_size") {
+		p_property.usage = PROPERTY_USAGE_NONE;
 	}
 	if (type != RS::LIGHT_DIRECTIONAL && (n == "light_angular_distance" || n == "light_intensity_lux")) {
 		p_property.usage = PROPERTY_USAGE_NONE;
@@ -383,6 +401,9 @@ Light3D::Light3D(RS::LightType p_type) {
 		case RS::LIGHT_SPOT:
 			light = rs->spot_light_create();
 			break;
+		case RS::LIGHT_AREA:
+			light = rs->area_light_create();
+			break;
 	}
 	set_base(light);
 
@@ -420,7 +441,7 @@ Light3D::Light3D(RS::LightType p_type) {
 }
 
 Light3D::Light3D() {
-	ERR_PRINT("Light3D should not be instantiated directly; use the DirectionalLight3D, OmniLight3D or SpotLight3D subtypes instead.");
+	ERR_PRINT("Light3D should not be instantiated directly; use the DirectionalLight3D, OmniLight3D, SpotLight3D or AreaLight3D subtypes instead.");
 }
 
 Light3D::~Light3D() {
@@ -558,4 +579,63 @@ SpotLight3D::SpotLight3D() :
 		Light3D(RS::LIGHT_SPOT) {
 	// Godot lowers the default shadow bias for spot lights.
 	set_param(PARAM_SHADOW_BIAS, 0.03f);
+}
+
+/* AreaLight3D */
+
+void AreaLight3D::set_area_size(const Vector2 &p_size) {
+	ERR_FAIL_COND_MSG(!p_size.is_finite() || p_size.x < 0.0f || p_size.y < 0.0f, vformat("AreaLight3D \"%s\": area_size must be finite and not negative in both components (got (%s, %s)); the old value (%s, %s) is kept.", get_name().c_str(), rtos(p_size.x).c_str(), rtos(p_size.y).c_str(), rtos(area_size.x).c_str(), rtos(area_size.y).c_str()));
+	area_size = p_size;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_size(get_light(), area_size);
+	}
+}
+
+void AreaLight3D::set_area_normalize_energy(bool p_enable) {
+	area_normalize_energy = p_enable;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_normalize_energy(get_light(), area_normalize_energy);
+	}
+}
+
+void AreaLight3D::set_area_shading_method(AreaShadingMethod p_method) {
+	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method > AREA_SHADING_LTC, vformat("AreaLight3D \"%s\": area_shading_method must be 0 (LTC); got %d. The old value is kept.", get_name().c_str(), (int)p_method));
+	area_shading_method = p_method;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_shading_method(get_light(), RS::LightAreaShadingMethod(p_method));
+	}
+}
+
+AABB AreaLight3D::get_aabb() const {
+	const real_t r = get_param(PARAM_RANGE);
+	const real_t half_a = area_size.x * 0.5f + r;
+	const real_t half_b = area_size.y * 0.5f + r;
+	return AABB(-Vector3(half_a, half_b, r), Vector3(half_a * 2, half_b * 2, r));
+}
+
+void AreaLight3D::_bind_methods() {
+	ClassDB::bind_method(D_METHOD("set_area_size", "size"), &AreaLight3D::set_area_size);
+	ClassDB::bind_method(D_METHOD("get_area_size"), &AreaLight3D::get_area_size);
+	ClassDB::bind_method(D_METHOD("set_area_normalize_energy", "enabled"), &AreaLight3D::set_area_normalize_energy);
+	ClassDB::bind_method(D_METHOD("is_area_normalizing_energy"), &AreaLight3D::is_area_normalizing_energy);
+	ClassDB::bind_method(D_METHOD("set_area_shading_method", "method"), &AreaLight3D::set_area_shading_method);
+	ClassDB::bind_method(D_METHOD("get_area_shading_method"), &AreaLight3D::get_area_shading_method);
+
+	ADD_GROUP("Area", "area_");
+	ADD_PROPERTY(PropertyInfo(Variant::VECTOR2, "area_size", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,suffix:m"), "set_area_size", "get_area_size");
+	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_range", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,exp,suffix:m"), "set_param", "get_param", PARAM_RANGE);
+	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_attenuation", PROPERTY_HINT_RANGE, "0,10,0.001,or_greater"), "set_param", "get_param", PARAM_ATTENUATION);
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "area_normalize_energy"), "set_area_normalize_energy", "is_area_normalizing_energy");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC"), "set_area_shading_method", "get_area_shading_method");
+	ADD_GROUP("", "");
+
+	BIND_ENUM_CONSTANT(AREA_SHADING_LTC);
+}
+
+AreaLight3D::AreaLight3D() :
+		Light3D(RS::LIGHT_AREA) {
+	// The contract's defaults (range 5 and attenuation 1 come from Light3D), pushed to the server.
+	set_area_size(Vector2(1, 1));
+	set_area_normalize_energy(true);
+	set_area_shading_method(AREA_SHADING_LTC);
 }

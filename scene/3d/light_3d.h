@@ -2,8 +2,10 @@
 /*  light_3d.h                                                            */
 /**************************************************************************/
 /* godot-area: Light3D (abstract) and its leaves DirectionalLight3D,      */
-/* OmniLight3D and SpotLight3D. Property names, groups, hints, enum order */
-/* and defaults follow Godot 4.7 (checked against Godot's light_3d.cpp),  */
+/* OmniLight3D, SpotLight3D and AreaLight3D (a one-sided rectangle in    */
+/* its local XY plane, emitting along -Z). Property names, groups, hints, */
+/* enum order and defaults follow Godot 4.7 (checked against Godot's      */
+/* light_3d.cpp; AreaLight3D against the area-light contract),            */
 /* so scene files load unchanged. Lights shine along their node's -Z.     */
 /*                                                                        */
 /* The node keeps a copy of every value (getters never ask the server),   */
@@ -136,7 +138,7 @@ public:
 	RID get_light() const { return light; }
 
 	// Local-space bounds: omni a cube of side 2·range; spot the cone's box (the omni cube
-	// above 90 degrees); directional the unit cube (-1..1).
+	// above 90 degrees); directional the unit cube (-1..1). AreaLight3D overrides it.
 	AABB get_aabb() const override;
 
 	// Configuration warnings (empty when fine), as Godot's.
@@ -214,8 +216,46 @@ public:
 	SpotLight3D();
 };
 
+// A rectangular area light: area_size.x along local +X by area_size.y along +Y, centred at the
+// origin; it emits uniform radiance along local -Z only (nothing behind it, z > 0, is lit):
+//   L_e = srgb_to_linear(light_color) * light_energy * pi / A_n,  A_n = x * y if area_normalize_energy else 1,
+// windowed by W(d) = (max(1 - (d / area_range)^4, 0)^2)^area_attenuation, d = distance to the closest
+// point of the rectangle. A zero area emits nothing.
+class AreaLight3D : public Light3D {
+	GDCLASS(AreaLight3D, Light3D);
+
+public:
+	enum AreaShadingMethod {
+		AREA_SHADING_LTC = RS::LIGHT_AREA_SHADING_LTC,
+	};
+
+private:
+	Vector2 area_size = Vector2(1, 1);
+	bool area_normalize_energy = true;
+	AreaShadingMethod area_shading_method = AREA_SHADING_LTC;
+
+protected:
+	static void _bind_methods();
+
+public:
+	// Metres; both components finite and >= 0 (else rejected with a message, the old value kept).
+	void set_area_size(const Vector2 &p_size);
+	Vector2 get_area_size() const { return area_size; }
+	void set_area_normalize_energy(bool p_enable);
+	bool is_area_normalizing_energy() const { return area_normalize_energy; }
+	void set_area_shading_method(AreaShadingMethod p_method);
+	AreaShadingMethod get_area_shading_method() const { return area_shading_method; }
+
+	// Thesis Listing A.1: the rectangle grown by the range r sideways and in front:
+	// AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)) (z from -r to 0).
+	AABB get_aabb() const override;
+
+	AreaLight3D();
+};
+
 VARIANT_ENUM_CAST(Light3D::Param);
 VARIANT_ENUM_CAST(Light3D::BakeMode);
 VARIANT_ENUM_CAST(DirectionalLight3D::ShadowMode);
 VARIANT_ENUM_CAST(DirectionalLight3D::SkyMode);
 VARIANT_ENUM_CAST(OmniLight3D::ShadowMode);
+VARIANT_ENUM_CAST(AreaLight3D::AreaShadingMethod);

@@ -379,6 +379,13 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 			bool culled;
 			if (light.type == RS::LIGHT_OMNI) {
 				culled = is_sphere_culled(planes, instance->transform.origin, range);
+			} else if (light.type == RS::LIGHT_AREA) {
+				// Thesis eq. 5.1: every point of the rectangle lights up to `range` away, so the sphere
+				// around its centre has radius range + half the diagonal (scaled like the range: conservative).
+				const real_t max_scale = std::fmax(scale.x, std::fmax(scale.y, scale.z));
+				const Vector2 size = RSG::light_storage->light_area_get_size(instance->base);
+				const real_t radius = RendererLightStorage::compute_area_light_cull_radius(range, size * max_scale);
+				culled = is_sphere_culled(planes, instance->transform.origin, radius);
 			} else {
 				const Vector3 axis = (-instance->transform.basis.get_column(2)).normalized();
 				const real_t angle = RSG::light_storage->light_get_param(instance->base, RS::LIGHT_PARAM_SPOT_ANGLE);

@@ -6,8 +6,10 @@
 /* pairing). Bounds are recomputed from storage on every cull, so storage */
 /* changes (mesh surfaces, light range/angle) need no dependency tracking.*/
 /* Geometry is culled by its world AABB; omni lights by their range      */
-/* sphere; spot lights by the exact spherical-sector (cone) bound;       */
-/* directional lights are never culled.                                  */
+/* sphere; spot lights by the exact spherical-sector (cone) bound; area  */
+/* lights by the sphere of thesis eq. 5.1 around the rectangle's centre  */
+/* (radius = range + half the diagonal); directional lights are never    */
+/* culled.                                                               */
 
 #pragma once
 
@@ -44,7 +46,7 @@ public:
 	struct CullStats {
 		int geometry_visible = 0;
 		int geometry_culled = 0; // Outside the frustum (hidden or layer-masked instances are not counted).
-		int lights_visible = 0; // Omni and spot lights.
+		int lights_visible = 0; // Omni, spot and area lights.
 		int lights_culled = 0;
 		int directional_lights = 0;
 	};

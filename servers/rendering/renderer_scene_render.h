@@ -58,7 +58,7 @@ struct RenderSceneData {
 
 	std::vector<GeometryInstance> geometry; // Visible geometry, scenario order.
 	std::vector<LightInstance> directional_lights; // All visible directional lights.
-	std::vector<LightInstance> lights; // Omni and spot lights that passed frustum culling.
+	std::vector<LightInstance> lights; // Omni, spot and area lights that passed frustum culling.
 	EnvironmentData environment;
 };
 

@@ -143,6 +143,10 @@ RID RenderingServerDefault::spot_light_create() {
 	return _light_create(LIGHT_SPOT);
 }
 
+RID RenderingServerDefault::area_light_create() {
+	return _light_create(LIGHT_AREA);
+}
+
 void RenderingServerDefault::light_set_param(RID p_light, LightParam p_param, float p_value) {
 	RSG::light_storage->light_set_param(p_light, p_param, p_value);
 }
@@ -195,6 +199,18 @@ void RenderingServerDefault::light_directional_set_sky_mode(RID p_light, LightDi
 	RSG::light_storage->light_directional_set_sky_mode(p_light, p_mode);
 }
 
+void RenderingServerDefault::light_area_set_size(RID p_light, const Vector2 &p_size) {
+	RSG::light_storage->light_area_set_size(p_light, p_size);
+}
+
+void RenderingServerDefault::light_area_set_normalize_energy(RID p_light, bool p_enable) {
+	RSG::light_storage->light_area_set_normalize_energy(p_light, p_enable);
+}
+
+void RenderingServerDefault::light_area_set_shading_method(RID p_light, LightAreaShadingMethod p_method) {
+	RSG::light_storage->light_area_set_shading_method(p_light, p_method);
+}
+
 RS::LightType RenderingServerDefault::light_get_type(RID p_light) const {
 	return RSG::light_storage->light_get_type(p_light);
 }
@@ -205,6 +221,18 @@ float RenderingServerDefault::light_get_param(RID p_light, LightParam p_param) c
 
 AABB RenderingServerDefault::light_get_aabb(RID p_light) const {
 	return RSG::light_storage->light_get_aabb(p_light);
+}
+
+Vector2 RenderingServerDefault::light_area_get_size(RID p_light) const {
+	return RSG::light_storage->light_area_get_size(p_light);
+}
+
+bool RenderingServerDefault::light_area_get_normalize_energy(RID p_light) const {
+	return RSG::light_storage->light_area_get_normalize_energy(p_light);
+}
+
+RS::LightAreaShadingMethod RenderingServerDefault::light_area_get_shading_method(RID p_light) const {
+	return RSG::light_storage->light_area_get_shading_method(p_light);
 }
 
 /* CAMERA API */

@@ -60,6 +60,7 @@ public:
 	RID directional_light_create() override;
 	RID omni_light_create() override;
 	RID spot_light_create() override;
+	RID area_light_create() override;
 	void light_set_param(RID p_light, LightParam p_param, float p_value) override;
 	void light_set_color(RID p_light, const Color &p_color) override;
 	void light_set_shadow(RID p_light, bool p_enabled) override;
@@ -73,9 +74,15 @@ public:
 	void light_directional_set_shadow_mode(RID p_light, LightDirectionalShadowMode p_mode) override;
 	void light_directional_set_blend_splits(RID p_light, bool p_enable) override;
 	void light_directional_set_sky_mode(RID p_light, LightDirectionalSkyMode p_mode) override;
+	void light_area_set_size(RID p_light, const Vector2 &p_size) override;
+	void light_area_set_normalize_energy(RID p_light, bool p_enable) override;
+	void light_area_set_shading_method(RID p_light, LightAreaShadingMethod p_method) override;
 	LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, LightParam p_param) const override;
 	AABB light_get_aabb(RID p_light) const override;
+	Vector2 light_area_get_size(RID p_light) const override;
+	bool light_area_get_normalize_energy(RID p_light) const override;
+	LightAreaShadingMethod light_area_get_shading_method(RID p_light) const override;
 
 	RID camera_create() override;
 	void camera_set_perspective(RID p_camera, float p_fovy_degrees, float p_z_near, float p_z_far) override;

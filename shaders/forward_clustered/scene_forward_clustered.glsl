@@ -5,7 +5,9 @@
 /* reduced to our built-in material). Variants (C++:                      */
 /* RenderForwardClustered::SceneShaderVariant):                           */
 /*   0 "" : colour pass, writes linear HDR radiance to location 0;        */
-/*   1 MODE_DEPTH : depth pre-pass, no colour output.                     */
+/*   1 MODE_DEPTH : depth pre-pass, no colour output;                     */
+/*   2 USE_AREA_LIGHTS : colour pass with area lights (LTC), used only    */
+/*     when the view has area lights.                                     */
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -62,6 +64,9 @@ void main() {
 
 #include "../brdf_inc.glsl"
 #include "../scene_forward_lights_inc.glsl"
+#ifdef USE_AREA_LIGHTS
+#include "../area_light_ltc_inc.glsl"
+#endif
 
 layout(location = 0) in vec3 vertex_interp;
 layout(location = 1) in vec3 normal_interp;
@@ -79,6 +84,20 @@ vec3 srgb_to_linear(vec3 p_c) {
 
 void main() {
 #ifndef MODE_DEPTH
+	if ((scene_data.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
+		// Debug view (RS::VIEWPORT_DEBUG_DRAW_CLUSTER_*): how many elements of one type the cluster of
+		// this fragment lists, written to every colour channel.
+		uvec2 dtile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
+		uint dslice = cluster_get_slice(-vertex_interp.z, scene_data.z_far);
+		uint doffset = cluster_get_offset(min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1)), dtile, dslice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, scene_data.cluster_words_per_type);
+		uint dcount = 0u;
+		for (uint w = 0u; w < scene_data.cluster_words_per_type; w++) {
+			dcount += uint(bitCount(cluster_buffer.data[doffset + w]));
+		}
+		frag_color = vec4(vec3(float(dcount)), 1.0);
+		return;
+	}
+
 	vec3 albedo = material.albedo.rgb;
 	float alpha = material.albedo.a;
 	if ((material.flags & MATERIAL_FLAG_ALBEDO_TEXTURE) != 0u) {
@@ -136,6 +155,14 @@ void main() {
 			}
 			light_process_spot(spot_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
 		}
+#ifdef USE_AREA_LIGHTS
+		for (uint i = 0u; i < scene_data.area_light_count; i++) {
+			if ((area_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+				continue;
+			}
+			light_process_area(area_lights.data[i], vertex, N, V, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+		}
+#endif
 	} else {
 		uvec2 tile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
 		uint slice = cluster_get_slice(-vertex.z, scene_data.z_far);
@@ -168,6 +195,23 @@ void main() {
 				light_process_spot(spot_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
 			}
 		}
+
+#ifdef USE_AREA_LIGHTS
+		// Thesis Listing A.3: the area lights of this cluster.
+		uint area_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_AREA, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
+		for (uint w = 0u; w < words; w++) {
+			uint mask = cluster_buffer.data[area_offset + w];
+			while (mask != 0u) {
+				uint bit = uint(findLSB(mask));
+				mask &= ~(1u << bit);
+				uint i = w * 32u + bit;
+				if (i >= scene_data.area_light_count || (area_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+					continue;
+				}
+				light_process_area(area_lights.data[i], vertex, N, V, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+			}
+		}
+#endif
 	}
 
 	vec3 ambient_light = scene_data.ambient_light.rgb;

@@ -15,7 +15,11 @@
 /* must stay contiguous).                                                 */
 /*                                                                        */
 /* Variants (defines, structural): MODE_DEPTH = depth pre-pass, no        */
-/* colour output, only the scene data is declared. Cheap toggles (brute-  */
+/* colour output, only the scene data is declared. USE_AREA_LIGHTS =      */
+/* colour pass with area lights: declares bindings 5-7 (area light array, */
+/* LTC LUT texture and sampler) and compiles the LTC code; chosen at run  */
+/* time only for views with area lights, so a scene without area lights  */
+/* never compiles nor runs any of it. Cheap toggles (brute-               */
 /* force lights, diffuse model) are data: scene flags / material fields.  */
 
 #ifndef SCENE_FORWARD_CLUSTERED_INC_GLSL
@@ -26,6 +30,7 @@
 
 // Scene flags. Must match RenderForwardClustered::SceneFlags.
 #define SCENE_FLAG_FORCE_ALL_LIGHTS 1u // Brute force: every light for every fragment, clusters ignored.
+#define SCENE_FLAG_DEBUG_CLUSTER 2u // Debug view: output the element count of cluster type debug_cluster_type.
 
 // Material flags. Must match RendererRD::MaterialStorage::MaterialFlags.
 #define MATERIAL_FLAG_ALBEDO_TEXTURE 1u
@@ -52,8 +57,8 @@ layout(set = 0, binding = 0, std140) uniform SceneDataBlock { // 320 bytes; runn
 	uint cluster_tile_count; // 300
 	uint cluster_words_per_type; // 304
 	uint flags; // 308: SCENE_FLAG_*.
-	uint pad0; // 312
-	uint pad1; // 316
+	uint area_light_count; // 312
+	uint debug_cluster_type; // 316: CLUSTER_ELEMENT_TYPE_* shown by SCENE_FLAG_DEBUG_CLUSTER.
 }
 scene_data;
 
@@ -75,6 +80,17 @@ layout(set = 0, binding = 3, std430) restrict readonly buffer ClusterBuffer {
 cluster_buffer;
 
 layout(set = 0, binding = 4) uniform sampler material_sampler; // Linear, repeat.
+
+#ifdef USE_AREA_LIGHTS
+// Thesis Listing A.2: area lights in their own buffer.
+layout(set = 0, binding = 5, std430) restrict readonly buffer AreaLights {
+	AreaLightData data[];
+}
+area_lights;
+
+layout(set = 0, binding = 6) uniform texture2DArray ltc_lut_texture; // LTCLutRD: layer 0 (a, b, c, d), layer 1 (e, fn, fg, 0).
+layout(set = 0, binding = 7) uniform sampler ltc_lut_sampler; // Linear, clamp to edge.
+#endif
 
 /*************************************************************************/
 /* Set 1: material                                                       */

@@ -100,6 +100,7 @@ void ClusterBuilderRD::begin(const Projection &p_clip_from_view, float p_z_far) 
 
 bool ClusterBuilderRD::add_light(ElementType p_type, const Vector3 &p_position, float p_radius, const Vector3 &p_direction, float p_spot_half_angle) {
 	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)ELEMENT_TYPE_MAX, false, "ClusterBuilderRD::add_light: type is not an ElementType value.");
+	ERR_FAIL_COND_V_MSG(p_type == ELEMENT_TYPE_AREA_LIGHT, false, "ClusterBuilderRD::add_light: area lights need their rectangle; use add_area_light().");
 	if (element_count[p_type] >= max_elements) {
 		return false;
 	}
@@ -117,6 +118,39 @@ bool ClusterBuilderRD::add_light(ElementType p_type, const Vector3 &p_position, 
 	e.cone_cos = std::cos(half_angle);
 	e.cone_sin = std::sin(half_angle);
 	element_count[p_type]++;
+	return true;
+}
+
+bool ClusterBuilderRD::add_area_light(const Vector3 &p_center, const Vector3 &p_half_axis_x, const Vector3 &p_half_axis_y, const Vector3 &p_normal, float p_range) {
+	if (element_count[ELEMENT_TYPE_AREA_LIGHT] >= max_elements) {
+		return false;
+	}
+	float r = std::fmax(p_range, 0.0f);
+	Vector3 n = p_normal.normalized();
+	Vector3 ax = p_half_axis_x - n * n.dot(p_half_axis_x); // Orthogonalised against the normal.
+	float half_a = p_half_axis_x.length();
+	float half_b = p_half_axis_y.length();
+	if (ax.length_squared() < 1e-20f) {
+		// Zero width: any axis perpendicular to n will do.
+		ax = std::fabs(n.x) < 0.9f ? Vector3(1, 0, 0) : Vector3(0, 1, 0);
+		ax = ax - n * n.dot(ax);
+	}
+	ax = ax.normalized();
+	ElementData &e = elements[ELEMENT_TYPE_AREA_LIGHT * max_elements + element_count[ELEMENT_TYPE_AREA_LIGHT]];
+	e = ElementData();
+	// Box centre: r / 2 in front of the rectangle.
+	Vector3 c = p_center + n * (r * 0.5f);
+	Vector3 ext(half_a + r, half_b + r, r * 0.5f);
+	for (int i = 0; i < 3; i++) {
+		e.position[i] = c[i];
+		e.direction[i] = n[i];
+		e.axis_x[i] = ax[i];
+		e.extents[i] = ext[i];
+	}
+	e.radius = r + std::sqrt(half_a * half_a + half_b * half_b); // Thesis eq. 5.1.
+	e.cone_cos = 1.0f;
+	e.cone_sin = 0.0f;
+	element_count[ELEMENT_TYPE_AREA_LIGHT]++;
 	return true;
 }
 

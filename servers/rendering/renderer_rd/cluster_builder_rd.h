@@ -12,9 +12,10 @@
 /* tests each element's analytic bounding volume against each cluster's  */
 /* view-space AABB: exact-conservative on every rasterizer.               */
 /*                                                                        */
-/* Adding an element type (area lights): a value in ElementType (and the  */
-/* matching define), a bound kind in cluster_get_bound_type() and, for a  */
-/* new kind, its test in cluster_build.glsl.                              */
+/* Adding an element type: a value in ElementType (and the matching       */
+/* define), a bound kind in cluster_get_bound_type() and, for a new kind, */
+/* its test in cluster_build.glsl. Area lights did exactly that: type     */
+/* AREA, bound kind BOX (oriented box, separating-axis test).             */
 
 #pragma once
 
@@ -35,19 +36,22 @@ public:
 	enum ElementType {
 		ELEMENT_TYPE_OMNI_LIGHT,
 		ELEMENT_TYPE_SPOT_LIGHT,
+		ELEMENT_TYPE_AREA_LIGHT,
 		ELEMENT_TYPE_MAX,
 	};
 
-	// Mirror of ClusterElementData (shaders/cluster_data_inc.glsl), 48 bytes std430.
+	// Mirror of ClusterElementData (shaders/cluster_data_inc.glsl), 64 bytes std430.
 	struct ElementData {
-		float position[3]; // View space centre / cone apex.
-		float radius;
-		float direction[3]; // View space unit cone axis.
+		float position[3]; // View space centre (sphere, box) / cone apex.
+		float radius; // Sphere radius; box: eq. 5.1 radius r + sqrt(a^2 + b^2) / 2 around position - direction * extents.z.
+		float direction[3]; // View space unit cone axis; box: unit axis z (the area light's normal).
 		float cone_cos; // cos(half angle).
-		float extents[3]; // Reserved: box half sizes (area lights).
+		float extents[3]; // Box half sizes along axis_x, axis_y (= direction x axis_x) and direction.
 		float cone_sin; // sin(half angle).
+		float axis_x[3]; // Box: unit axis x (view space).
+		float pad0;
 	};
-	static_assert(sizeof(ElementData) == 48, "ElementData must match shaders/cluster_data_inc.glsl.");
+	static_assert(sizeof(ElementData) == 64, "ElementData must match shaders/cluster_data_inc.glsl.");
 	static_assert(sizeof(ElementData) % 16 == 0, "ElementData must stay a multiple of 16 bytes.");
 
 	// Mirror of the push constant in shaders/cluster_build.glsl, 112 bytes.
@@ -105,6 +109,12 @@ public:
 	// Adds a light in view space. Omni: bound sphere (p_position, p_radius). Spot: range sphere cut by the
 	// cone of half angle p_spot_half_angle (radians) around p_direction. Returns false when full.
 	bool add_light(ElementType p_type, const Vector3 &p_position, float p_radius, const Vector3 &p_direction = Vector3(0, 0, -1), float p_spot_half_angle = 0.0f);
+	// Adds an area light (type AREA) in view space: rectangle centre p_center, half axes p_half_axis_x/y
+	// (size / 2 along the light's local X and Y), unit emission normal p_normal, range p_range. Bound:
+	// the oriented box (a + 2r) x (b + 2r) x r in front of the rectangle (thesis section 5.1.1), which
+	// contains every point in front within distance r of the rectangle, intersected with the thesis'
+	// eq. 5.1 sphere (radius r + sqrt(a^2 + b^2) / 2 around the centre). Returns false when full.
+	bool add_area_light(const Vector3 &p_center, const Vector3 &p_half_axis_x, const Vector3 &p_half_axis_y, const Vector3 &p_normal, float p_range);
 	// Uploads the elements and records the build dispatch (outside any list).
 	void bake_cluster();
 

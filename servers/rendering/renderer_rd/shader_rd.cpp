@@ -342,6 +342,14 @@ bool ShaderRD::is_compute() const {
 	return has_stage[RenderingDevice::SHADER_STAGE_COMPUTE];
 }
 
+bool ShaderRD::is_variant_created(int p_variant) const {
+	auto it = versions.find(default_version.get_id());
+	if (it == versions.end() || p_variant < 0 || p_variant >= (int)it->second.shaders.size()) {
+		return false;
+	}
+	return it->second.shaders[p_variant].is_valid();
+}
+
 RID ShaderRD::version_get_shader(int p_variant) {
 	return version_get_shader(default_version, p_variant);
 }

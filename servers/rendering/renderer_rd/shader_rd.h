@@ -50,6 +50,9 @@ public:
 	// get_last_error()). The returned shader RID is owned by ShaderRD: do not free it.
 	RID version_get_shader(RID p_version, int p_variant);
 	RID version_get_shader(int p_variant);
+	// True when variant p_variant of the default version has been turned into a shader (compiled or
+	// loaded from the cache); never compiles anything.
+	bool is_variant_created(int p_variant) const;
 
 	int get_variant_count() const { return (int)variant_defines.size(); }
 	// glslang compilations performed (cache misses), cache hits, and variants turned into shaders.

@@ -110,7 +110,34 @@ bool RendererLightStorage::validate_param(RS::LightParam p_param, float p_value)
 	return true;
 }
 
-AABB RendererLightStorage::compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees) {
+bool RendererLightStorage::validate_param(RS::LightType p_type, RS::LightParam p_param, float p_value) {
+	if (!validate_param(p_param, p_value)) {
+		return false;
+	}
+	if (p_type == RS::LIGHT_AREA && p_param == RS::LIGHT_PARAM_ATTENUATION) {
+		// The area light's range window is raised to this power: (max(1 - (d/r)^4, 0)^2)^attenuation.
+		ERR_FAIL_COND_V_MSG(p_value < 0.0f, false, vformat("LIGHT_PARAM_ATTENUATION of an area light must not be negative, got %s; the old value is kept.", rtos(p_value).c_str()));
+	}
+	return true;
+}
+
+bool RendererLightStorage::validate_area_size(const Vector2 &p_size) {
+	ERR_FAIL_COND_V_MSG(!p_size.is_finite(), false, vformat("Area light size must be finite, got (%s, %s); the old value is kept.", rtos(p_size.x).c_str(), rtos(p_size.y).c_str()));
+	ERR_FAIL_COND_V_MSG(p_size.x < 0.0f || p_size.y < 0.0f, false, vformat("Area light size must not be negative, got (%s, %s); the old value is kept.", rtos(p_size.x).c_str(), rtos(p_size.y).c_str()));
+	return true;
+}
+
+AABB RendererLightStorage::compute_area_light_aabb(float p_range, const Vector2 &p_size) {
+	const real_t half_a = p_size.x * 0.5f + p_range;
+	const real_t half_b = p_size.y * 0.5f + p_range;
+	return AABB(Vector3(-half_a, -half_b, -p_range), Vector3(half_a * 2.0f, half_b * 2.0f, p_range));
+}
+
+float RendererLightStorage::compute_area_light_cull_radius(float p_range, const Vector2 &p_size) {
+	return p_range + 0.5f * std::sqrt(p_size.x * p_size.x + p_size.y * p_size.y);
+}
+
+AABB RendererLightStorage::compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees, const Vector2 &p_area_size) {
 	switch (p_type) {
 		case RS::LIGHT_DIRECTIONAL:
 			return AABB();
@@ -126,6 +153,8 @@ AABB RendererLightStorage::compute_light_aabb(RS::LightType p_type, float p_rang
 			float radial = p_range * std::sin(Math::deg_to_rad(p_spot_angle_degrees));
 			return AABB(Vector3(-radial, -radial, -p_range), Vector3(radial * 2.0f, radial * 2.0f, p_range));
 		}
+		case RS::LIGHT_AREA:
+			return compute_area_light_aabb(p_range, p_area_size);
 	}
 	ERR_FAIL_V_MSG(AABB(), vformat("Invalid light type %d.", (int)p_type));
 }

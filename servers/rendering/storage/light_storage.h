@@ -20,9 +20,24 @@ public:
 	// (range, size, attenuation, spot angle 0..180, ...). Prints an error naming the parameter and
 	// returns false when the value must be rejected (the caller keeps the old value).
 	static bool validate_param(RS::LightParam p_param, float p_value);
+	// Type-aware check: validate_param(p_param, p_value), plus the rules of the light type (an area
+	// light's attenuation is an exponent >= 0 of its range window). Prints an error naming the parameter
+	// and returns false when the value must be rejected.
+	static bool validate_param(RS::LightType p_type, RS::LightParam p_param, float p_value);
+	// Checks an area light size: both components finite and >= 0. Prints an error and returns false otherwise.
+	static bool validate_area_size(const Vector2 &p_size);
+	// Storage default of an area light's size (1 x 1 m).
+	static Vector2 get_default_area_size() { return Vector2(1, 1); }
 	// Returns the local-space bound of a light: omni cube of side 2 * range, spot cone AABB
-	// (along -Z; a sphere cube when the angle is 90 degrees or more), directional empty.
-	static AABB compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees);
+	// (along -Z; a sphere cube when the angle is 90 degrees or more), directional empty, area
+	// compute_area_light_aabb(p_range, p_area_size).
+	static AABB compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees, const Vector2 &p_area_size = Vector2());
+	// Local-space bound of an area light (thesis Listing A.1): the rectangle a x b in the XY plane grown
+	// by the range r sideways and in front (-Z): AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)).
+	static AABB compute_area_light_aabb(float p_range, const Vector2 &p_size);
+	// Radius of the culling sphere of an area light around its centre (thesis eq. 5.1):
+	// R = r + sqrt(a^2 + b^2) / 2, the range plus half the rectangle's diagonal.
+	static float compute_area_light_cull_radius(float p_range, const Vector2 &p_size);
 	// Returns the parameter's enum name ("LIGHT_PARAM_RANGE"), for messages.
 	static const char *get_param_name(RS::LightParam p_param);
 
@@ -59,6 +74,12 @@ public:
 	virtual void light_directional_set_blend_splits(RID p_light, bool p_enable) = 0;
 	// Sets the directional sky mode.
 	virtual void light_directional_set_sky_mode(RID p_light, RS::LightDirectionalSkyMode p_mode) = 0;
+	// Sets an area light's rectangle (validate_area_size; bump the version: the bound changes).
+	virtual void light_area_set_size(RID p_light, const Vector2 &p_size) = 0;
+	// Sets whether an area light divides its radiance by its area.
+	virtual void light_area_set_normalize_energy(RID p_light, bool p_enable) = 0;
+	// Sets an area light's shading method.
+	virtual void light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) = 0;
 
 	// Returns the type (LIGHT_DIRECTIONAL with an error for an invalid RID).
 	virtual RS::LightType light_get_type(RID p_light) const = 0;
@@ -94,6 +115,12 @@ public:
 	virtual bool light_directional_get_blend_splits(RID p_light) const = 0;
 	// Returns the directional sky mode.
 	virtual RS::LightDirectionalSkyMode light_directional_get_sky_mode(RID p_light) const = 0;
+	// Returns an area light's rectangle in metres (zero with an error for an invalid RID).
+	virtual Vector2 light_area_get_size(RID p_light) const = 0;
+	// Returns whether an area light normalises its energy.
+	virtual bool light_area_get_normalize_energy(RID p_light) const = 0;
+	// Returns an area light's shading method.
+	virtual RS::LightAreaShadingMethod light_area_get_shading_method(RID p_light) const = 0;
 	// Returns the local-space bound (see compute_light_aabb).
 	virtual AABB light_get_aabb(RID p_light) const = 0;
 	// Returns a counter bumped whenever culling or shadows are affected (cached shadows compare it).

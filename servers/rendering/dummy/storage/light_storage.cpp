@@ -19,7 +19,7 @@ using namespace RendererDummy;
 	ERR_FAIL_NULL_V_MSG(m_var, m_ret, "Invalid light RID.")
 
 RID LightStorage::light_create(RS::LightType p_type) {
-	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)RS::LIGHT_SPOT + 1, RID(), "Light type is not a LightType value.");
+	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)RS::LIGHT_AREA + 1, RID(), "Light type is not a LightType value.");
 	Light light;
 	light.type = p_type;
 	for (int i = 0; i < RS::LIGHT_PARAM_MAX; i++) {
@@ -39,7 +39,7 @@ bool LightStorage::light_free(RID p_rid) {
 void LightStorage::light_set_param(RID p_light, RS::LightParam p_param, float p_value) {
 	GET_LIGHT_OR_FAIL(light);
 	ERR_FAIL_INDEX_MSG((int)p_param, (int)RS::LIGHT_PARAM_MAX, "Light parameter is not a LightParam value.");
-	if (!validate_param(p_param, p_value)) {
+	if (!validate_param(light->type, p_param, p_value)) {
 		return;
 	}
 	if (light->param[p_param] == p_value) {
@@ -157,6 +157,32 @@ void LightStorage::light_directional_set_sky_mode(RID p_light, RS::LightDirectio
 	light->directional_sky_mode = p_mode;
 }
 
+void LightStorage::light_area_set_size(RID p_light, const Vector2 &p_size) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_size: the light is not an area light.");
+	if (!validate_area_size(p_size)) {
+		return;
+	}
+	if (light->area_size == p_size) {
+		return;
+	}
+	light->area_size = p_size;
+	light->version++; // The culling sphere and bound change.
+}
+
+void LightStorage::light_area_set_normalize_energy(RID p_light, bool p_enable) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_normalize_energy: the light is not an area light.");
+	light->area_normalize_energy = p_enable;
+}
+
+void LightStorage::light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shading_method: the light is not an area light.");
+	ERR_FAIL_INDEX_MSG((int)p_method, (int)RS::LIGHT_AREA_SHADING_LTC + 1, "Area shading method is not a LightAreaShadingMethod value.");
+	light->area_shading_method = p_method;
+}
+
 RS::LightType LightStorage::light_get_type(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_DIRECTIONAL);
 	return light->type;
@@ -243,9 +269,24 @@ RS::LightDirectionalSkyMode LightStorage::light_directional_get_sky_mode(RID p_l
 	return light->directional_sky_mode;
 }
 
+Vector2 LightStorage::light_area_get_size(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, Vector2());
+	return light->area_size;
+}
+
+bool LightStorage::light_area_get_normalize_energy(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->area_normalize_energy;
+}
+
+RS::LightAreaShadingMethod LightStorage::light_area_get_shading_method(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADING_LTC);
+	return light->area_shading_method;
+}
+
 AABB LightStorage::light_get_aabb(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, AABB());
-	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE]);
+	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE], light->area_size);
 }
 
 uint64_t LightStorage::light_get_version(RID p_light) const {

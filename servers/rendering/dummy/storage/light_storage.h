@@ -30,6 +30,9 @@ class LightStorage : public RendererLightStorage {
 		RS::LightDirectionalShadowMode directional_shadow_mode = RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL;
 		bool directional_blend_splits = false;
 		RS::LightDirectionalSkyMode directional_sky_mode = RS::LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_AND_SKY;
+		Vector2 area_size = RendererLightStorage::get_default_area_size();
+		bool area_normalize_energy = true;
+		RS::LightAreaShadingMethod area_shading_method = RS::LIGHT_AREA_SHADING_LTC;
 		uint64_t version = 0;
 	};
 
@@ -53,6 +56,9 @@ public:
 	void light_directional_set_shadow_mode(RID p_light, RS::LightDirectionalShadowMode p_mode) override;
 	void light_directional_set_blend_splits(RID p_light, bool p_enable) override;
 	void light_directional_set_sky_mode(RID p_light, RS::LightDirectionalSkyMode p_mode) override;
+	void light_area_set_size(RID p_light, const Vector2 &p_size) override;
+	void light_area_set_normalize_energy(RID p_light, bool p_enable) override;
+	void light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) override;
 
 	RS::LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, RS::LightParam p_param) const override;
@@ -71,6 +77,9 @@ public:
 	RS::LightDirectionalShadowMode light_directional_get_shadow_mode(RID p_light) const override;
 	bool light_directional_get_blend_splits(RID p_light) const override;
 	RS::LightDirectionalSkyMode light_directional_get_sky_mode(RID p_light) const override;
+	Vector2 light_area_get_size(RID p_light) const override;
+	bool light_area_get_normalize_energy(RID p_light) const override;
+	RS::LightAreaShadingMethod light_area_get_shading_method(RID p_light) const override;
 	AABB light_get_aabb(RID p_light) const override;
 	uint64_t light_get_version(RID p_light) const override;
 };

@@ -59,10 +59,11 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	if (initialized) {
 		return true;
 	}
-	std::vector<String> variants = { "", "#define MODE_DEPTH\n" };
+	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
 	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants), false,
 			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
-	for (int v = 0; v < SCENE_SHADER_MAX; v++) {
+	// The area-light variant is compiled on first use (render_scene), never for scenes without area lights.
+	for (int v = 0; v < SCENE_SHADER_COLOR_AREA; v++) {
 		ERR_FAIL_COND_V_MSG(!scene_shader.version_get_shader(v).is_valid(), false,
 				vformat("RenderForwardClustered: scene shader variant %d failed to compile: %s", v, scene_shader.get_last_error().c_str()));
 	}
@@ -100,6 +101,9 @@ void RenderForwardClustered::finalize() {
 	scene_set_color = RID();
 	scene_set_depth = RID();
 	scene_set_cluster_buffer = RID();
+	scene_set_color_area = RID();
+	scene_set_color_area_cluster_buffer = RID();
+	ltc_lut.finalize();
 	cluster_builder.finalize();
 	scene_shader.clear();
 	initialized = false;
@@ -208,9 +212,36 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 	return pipeline;
 }
 
-bool RenderForwardClustered::_ensure_scene_sets() {
+bool RenderForwardClustered::_ensure_scene_sets(bool p_area) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	RID cluster_buffer = cluster_builder.get_cluster_buffer();
+	if (p_area) {
+		if (!ltc_lut.is_initialized()) {
+			ERR_FAIL_COND_V_MSG(!ltc_lut.initialize(), false, "RenderForwardClustered: the LTC lookup table could not be created.");
+		}
+		bool area_ok = scene_set_color_area.is_valid() && rd->uniform_set_is_valid(scene_set_color_area) && scene_set_color_area_cluster_buffer == cluster_buffer;
+		if (!area_ok) {
+			if (scene_set_color_area.is_valid() && rd->uniform_set_is_valid(scene_set_color_area)) {
+				rd->free(scene_set_color_area);
+			}
+			RID shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR_AREA);
+			ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "RenderForwardClustered: the area-light scene shader variant failed to compile: " + scene_shader.get_last_error());
+			std::vector<RD::Uniform> u;
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, scene_ubo));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, light_storage->get_omni_light_buffer()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, light_storage->get_spot_light_buffer()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, cluster_buffer));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 4, material_storage->get_sampler()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, light_storage->get_area_light_buffer()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 6, ltc_lut.get_texture()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 7, ltc_lut.get_sampler()));
+			scene_set_color_area = rd->uniform_set_create(u, shader, 0);
+			scene_set_color_area_cluster_buffer = cluster_buffer;
+		}
+		if (!scene_set_color_area.is_valid()) {
+			return false;
+		}
+	}
 	bool color_ok = scene_set_color.is_valid() && rd->uniform_set_is_valid(scene_set_color) && scene_set_cluster_buffer == cluster_buffer;
 	if (!color_ok) {
 		if (scene_set_color.is_valid() && rd->uniform_set_is_valid(scene_set_color)) {
@@ -272,10 +303,27 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.cluster_tiles_x = cluster_builder.get_tiles_x();
 	ubo.cluster_tile_count = cluster_builder.get_tiles_x() * cluster_builder.get_tiles_y();
 	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
+	ubo.area_light_count = light_storage->get_area_light_count();
 	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
+	int cluster_debug = debug_cluster_type;
+	if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS) {
+		cluster_debug = ClusterBuilderRD::ELEMENT_TYPE_OMNI_LIGHT;
+	} else if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_SPOT_LIGHTS) {
+		cluster_debug = ClusterBuilderRD::ELEMENT_TYPE_SPOT_LIGHT;
+	} else if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS) {
+		cluster_debug = ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT;
+	}
+	if (cluster_debug >= 0 && cluster_debug < ClusterBuilderRD::ELEMENT_TYPE_MAX) {
+		ubo.flags |= SCENE_FLAG_DEBUG_CLUSTER;
+		ubo.debug_cluster_type = uint32_t(cluster_debug);
+	}
 	rd->buffer_update(scene_ubo, 0, sizeof(ubo), &ubo);
 
-	ERR_FAIL_COND_MSG(!_ensure_scene_sets(), "render_scene: scene uniform sets could not be created.");
+	// Area-light variant only when this view has area lights (a scene without them pays nothing).
+	const bool use_area = ubo.area_light_count > 0;
+	const SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	ERR_FAIL_COND_MSG(!_ensure_scene_sets(use_area), "render_scene: scene uniform sets could not be created.");
+	RID color_set = use_area ? scene_set_color_area : scene_set_color;
 
 	// Draw items (material sets are created/updated here, outside any list).
 	struct DrawItem {
@@ -285,6 +333,8 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		DrawPushConstant pc;
 	};
 	std::vector<DrawItem> items;
+	// Material sets (set 1) are made against the plain colour variant: set 1 is declared identically in
+	// both colour variants, so the sets are compatible with either pipeline and are not rebuilt per variant.
 	RID color_shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR);
 	for (const RenderSceneData::GeometryInstance &g : p_data.geometry) {
 		int surface_count = mesh_storage->owns_mesh(g.mesh) ? mesh_storage->mesh_get_surface_count(g.mesh) : 0;
@@ -349,8 +399,8 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RD::FramebufferFormatID color_format = rd->framebuffer_get_format(rt->fb_color);
 	list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, { clear_color }, 1.0f);
 	for (const DrawItem &item : items) {
-		rd->draw_list_bind_render_pipeline(list, _get_pipeline(SCENE_SHADER_COLOR, item.cull, color_format));
-		rd->draw_list_bind_uniform_set(list, scene_set_color, 0);
+		rd->draw_list_bind_render_pipeline(list, _get_pipeline(color_variant, item.cull, color_format));
+		rd->draw_list_bind_uniform_set(list, color_set, 0);
 		rd->draw_list_bind_uniform_set(list, item.material_set, 1);
 		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);
 		rd->draw_list_set_push_constant(list, &item.pc, sizeof(item.pc));

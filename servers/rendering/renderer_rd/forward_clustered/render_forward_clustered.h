@@ -14,6 +14,16 @@
 /* timestamp) for get_last_frame_profile(): "depth_prepass",              */
 /* "cluster_build", "opaque" in milliseconds.                             */
 /*                                                                        */
+/* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
+/* (USE_AREA_LIGHTS, LTC shading) only when the view has area lights; it  */
+/* is compiled on first use, so scenes without area lights never compile */
+/* or run area-light code. The LTC LUT texture is uploaded on first use.  */
+/*                                                                        */
+/* Debug view: RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS / _SPOT_LIGHTS */
+/* (and set_debug_cluster_element_type() for area lights until the RS     */
+/* enum has a CLUSTER_AREA_LIGHTS value) write the per-pixel cluster      */
+/* element count of that type into every colour channel.                  */
+/*                                                                        */
 /* Shaders: shaders/forward_clustered/scene_forward_clustered.glsl and    */
 /* its includes; GPU struct mirrors below are static_asserted.            */
 
@@ -21,6 +31,7 @@
 
 #include "core/templates/rid_owner.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
+#include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_scene_render.h"
 
@@ -42,12 +53,14 @@ public:
 	enum SceneShaderVariant {
 		SCENE_SHADER_COLOR,
 		SCENE_SHADER_DEPTH, // MODE_DEPTH
+		SCENE_SHADER_COLOR_AREA, // USE_AREA_LIGHTS: colour pass with area lights.
 		SCENE_SHADER_MAX,
 	};
 
 	// Must match SCENE_FLAG_* in shaders/forward_clustered/scene_forward_clustered_inc.glsl.
 	enum SceneFlags {
 		SCENE_FLAG_FORCE_ALL_LIGHTS = 1,
+		SCENE_FLAG_DEBUG_CLUSTER = 2,
 	};
 
 	// Must match BRDF_DIFFUSE_* in shaders/brdf_inc.glsl.
@@ -72,8 +85,8 @@ public:
 		uint32_t cluster_tile_count;
 		uint32_t cluster_words_per_type;
 		uint32_t flags; // SceneFlags.
-		uint32_t pad0;
-		uint32_t pad1;
+		uint32_t area_light_count;
+		uint32_t debug_cluster_type; // ClusterBuilderRD::ElementType shown by SCENE_FLAG_DEBUG_CLUSTER.
 	};
 	static_assert(sizeof(SceneDataUBO) == 320, "SceneDataUBO must match scene_forward_clustered_inc.glsl.");
 	static_assert(sizeof(SceneDataUBO) % 16 == 0, "SceneDataUBO must stay a multiple of 16 bytes.");
@@ -111,21 +124,25 @@ private:
 
 	ShaderRD scene_shader;
 	ClusterBuilderRD cluster_builder;
+	LTCLutRD ltc_lut; // Uploaded on the first frame with area lights.
 	RID_Owner<RenderTarget> render_target_owner{ "RenderForwardClustered::RenderTarget" };
 
 	RID scene_ubo;
 	RID scene_set_color; // Set 0 of the colour variant (invalid after the cluster buffer changes).
 	RID scene_set_depth; // Set 0 of the depth variant.
 	RID scene_set_cluster_buffer; // Cluster buffer scene_set_color was made with.
+	RID scene_set_color_area; // Set 0 of the area-light colour variant.
+	RID scene_set_color_area_cluster_buffer;
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16.
 
 	bool force_all_lights = false;
+	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
 	uint64_t frame_counter = 0;
 
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format);
-	bool _ensure_scene_sets();
+	bool _ensure_scene_sets(bool p_area);
 	void _free_render_target(RenderTarget *p_rt);
 	void _read_profile(const String &p_prefix);
 
@@ -148,6 +165,12 @@ public:
 	std::vector<std::pair<String, double>> get_last_frame_profile() const override { return last_profile; }
 	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
 	bool is_debug_force_all_lights() const { return force_all_lights; }
+	// Debug view: output the per-pixel cluster element count of p_type (a ClusterBuilderRD::ElementType)
+	// instead of shading; -1 turns it off. Overrides RenderSceneData::debug_draw.
+	void set_debug_cluster_element_type(int p_type) { debug_cluster_type = p_type; }
+	// The scene shader (tests check which variants were compiled).
+	const ShaderRD &get_scene_shader() const { return scene_shader; }
+	bool is_scene_shader_variant_compiled(SceneShaderVariant p_variant) const { return scene_shader.is_variant_created(p_variant); }
 
 	// The cluster builder of the last frame (tests read its buffer and counts).
 	ClusterBuilderRD *get_cluster_builder() { return &cluster_builder; }

@@ -45,11 +45,14 @@ bool LightStorage::initialize_gpu(uint32_t p_max_lights) {
 	uint32_t size = max_lights * sizeof(LightData);
 	omni_light_buffer = rd->storage_buffer_create(size);
 	spot_light_buffer = rd->storage_buffer_create(size);
+	area_light_buffer = rd->storage_buffer_create(max_lights * sizeof(AreaLightData));
 	rd->set_resource_name(omni_light_buffer, "LightStorage omni lights");
 	rd->set_resource_name(spot_light_buffer, "LightStorage spot lights");
+	rd->set_resource_name(area_light_buffer, "LightStorage area lights");
 	omni_light_count = 0;
 	spot_light_count = 0;
-	return omni_light_buffer.is_valid() && spot_light_buffer.is_valid();
+	area_light_count = 0;
+	return omni_light_buffer.is_valid() && spot_light_buffer.is_valid() && area_light_buffer.is_valid();
 }
 
 void LightStorage::finalize_gpu() {
@@ -61,9 +64,13 @@ void LightStorage::finalize_gpu() {
 		if (spot_light_buffer.is_valid()) {
 			rd->free(spot_light_buffer);
 		}
+		if (area_light_buffer.is_valid()) {
+			rd->free(area_light_buffer);
+		}
 	}
 	omni_light_buffer = RID();
 	spot_light_buffer = RID();
+	area_light_buffer = RID();
 }
 
 LightStorage::~LightStorage() {
@@ -74,6 +81,7 @@ bool LightStorage::fill_light_data(RID p_light, const Transform3D &p_world_from_
 	const Light *light = light_owner.get_or_null(p_light);
 	ERR_FAIL_NULL_V_MSG(light, false, "LightStorage::fill_light_data: invalid light RID.");
 	ERR_FAIL_COND_V_MSG(light->type == RS::LIGHT_DIRECTIONAL, false, "LightStorage::fill_light_data: directional lights are not clustered.");
+	ERR_FAIL_COND_V_MSG(light->type == RS::LIGHT_AREA, false, "LightStorage::fill_light_data: area lights use fill_area_light_data().");
 
 	Transform3D view_from_light = p_view_from_world * p_world_from_light;
 	Vector3 position = view_from_light.origin;
@@ -114,6 +122,57 @@ bool LightStorage::fill_light_data(RID p_light, const Transform3D &p_world_from_
 	return true;
 }
 
+bool LightStorage::fill_area_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, AreaLightData &r_data) const {
+	const Light *light = light_owner.get_or_null(p_light);
+	ERR_FAIL_NULL_V_MSG(light, false, "LightStorage::fill_area_light_data: invalid light RID.");
+	ERR_FAIL_COND_V_MSG(light->type != RS::LIGHT_AREA, false, "LightStorage::fill_area_light_data: the light is not an area light.");
+
+	Transform3D view_from_light = p_view_from_world * p_world_from_light;
+	const float a = light->area_size.x;
+	const float b = light->area_size.y;
+	// Half axes keep the node's scale out: the rectangle is area_size in metres, only the rotation of
+	// the transform orients it (as Godot ignores scale for light ranges).
+	Vector3 axis_x = view_from_light.basis.xform(Vector3(1, 0, 0)).normalized();
+	Vector3 axis_y = view_from_light.basis.xform(Vector3(0, 1, 0)).normalized();
+	Vector3 normal = view_from_light.basis.xform(Vector3(0, 0, -1)).normalized();
+	if (axis_x == Vector3() || axis_y == Vector3() || normal == Vector3()) {
+		axis_x = Vector3(1, 0, 0);
+		axis_y = Vector3(0, 1, 0);
+		normal = Vector3(0, 0, -1);
+	}
+	Vector3 hx = axis_x * (a * 0.5f);
+	Vector3 hy = axis_y * (b * 0.5f);
+	float range = std::fmax(light->param[RS::LIGHT_PARAM_RANGE], 1e-4f);
+
+	// Unit conversion (the contract): L_e = srgb_to_linear(colour) * energy * pi / A_n,
+	// A_n = a * b when normalised, else 1; a * b == 0 emits exactly nothing.
+	Color linear = light->color.srgb_to_linear();
+	float area = a * b;
+	float radiance = 0.0f;
+	if (area > 0.0f && std::isfinite(area)) {
+		float a_n = light->area_normalize_energy ? area : 1.0f;
+		radiance = light->param[RS::LIGHT_PARAM_ENERGY] * float(Math::PI) / a_n * (light->negative ? -1.0f : 1.0f);
+	}
+
+	r_data = AreaLightData();
+	Vector3 c = view_from_light.origin;
+	for (int i = 0; i < 3; i++) {
+		r_data.position[i] = c[i];
+		r_data.half_axis_x[i] = hx[i];
+		r_data.half_axis_y[i] = hy[i];
+		r_data.normal[i] = normal[i];
+	}
+	r_data.inv_radius = 1.0f / range;
+	r_data.attenuation = light->param[RS::LIGHT_PARAM_ATTENUATION];
+	r_data.specular_amount = light->param[RS::LIGHT_PARAM_SPECULAR];
+	r_data.shading_method = uint32_t(light->area_shading_method);
+	r_data.color[0] = linear.r * radiance;
+	r_data.color[1] = linear.g * radiance;
+	r_data.color[2] = linear.b * radiance;
+	r_data.cull_mask = light->cull_mask;
+	return true;
+}
+
 void LightStorage::update_light_buffers(const std::vector<RenderSceneData::LightInstance> &p_lights, const Transform3D &p_view_from_world, ClusterBuilderRD *p_cluster_builder) {
 	ERR_FAIL_COND_MSG(!is_gpu_initialized(), "LightStorage::update_light_buffers() called before initialize_gpu().");
 	RenderingDevice *rd = RenderingDevice::get_singleton();
@@ -125,13 +184,32 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 		float range;
 		float spot_angle;
 	};
+	struct SortedArea {
+		float distance_sq;
+		uint32_t index;
+		AreaLightData data;
+		float range;
+	};
 	std::vector<Sorted> omnis;
 	std::vector<Sorted> spots;
+	std::vector<SortedArea> areas;
 	for (uint32_t i = 0; i < p_lights.size(); i++) {
 		const RenderSceneData::LightInstance &li = p_lights[i];
 		const Light *light = light_owner.get_or_null(li.light);
 		ERR_CONTINUE_MSG(!light, "update_light_buffers: a visible light instance has an invalid light RID; skipped.");
 		if (light->type == RS::LIGHT_DIRECTIONAL) {
+			continue;
+		}
+		if (light->type == RS::LIGHT_AREA) {
+			SortedArea s;
+			if (!fill_area_light_data(li.light, li.transform, p_view_from_world, s.data)) {
+				continue;
+			}
+			Vector3 p(s.data.position[0], s.data.position[1], s.data.position[2]);
+			s.distance_sq = p.length_squared();
+			s.index = i;
+			s.range = std::fmax(light->param[RS::LIGHT_PARAM_RANGE], 1e-4f);
+			areas.push_back(s);
 			continue;
 		}
 		Sorted s;
@@ -150,6 +228,12 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	};
 	std::sort(omnis.begin(), omnis.end(), nearest_first);
 	std::sort(spots.begin(), spots.end(), nearest_first);
+	std::sort(areas.begin(), areas.end(), [](const SortedArea &a, const SortedArea &b) {
+		return a.distance_sq != b.distance_sq ? a.distance_sq < b.distance_sq : a.index < b.index;
+	});
+	if (areas.size() > max_lights) {
+		areas.resize(max_lights);
+	}
 	if (omnis.size() > max_lights) {
 		omnis.resize(max_lights);
 	}
@@ -173,8 +257,21 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 					Vector3(s.data.direction[0], s.data.direction[1], s.data.direction[2]), s.spot_angle);
 		}
 	}
+	area_data.clear();
+	for (const SortedArea &s : areas) {
+		area_data.push_back(s.data);
+		if (p_cluster_builder) {
+			const AreaLightData &d = s.data;
+			p_cluster_builder->add_area_light(Vector3(d.position[0], d.position[1], d.position[2]), Vector3(d.half_axis_x[0], d.half_axis_x[1], d.half_axis_x[2]),
+					Vector3(d.half_axis_y[0], d.half_axis_y[1], d.half_axis_y[2]), Vector3(d.normal[0], d.normal[1], d.normal[2]), s.range);
+		}
+	}
 	omni_light_count = uint32_t(omni_data.size());
 	spot_light_count = uint32_t(spot_data.size());
+	area_light_count = uint32_t(area_data.size());
+	if (area_light_count) {
+		rd->buffer_update(area_light_buffer, 0, area_light_count * sizeof(AreaLightData), area_data.data());
+	}
 	if (omni_light_count) {
 		rd->buffer_update(omni_light_buffer, 0, omni_light_count * sizeof(LightData), omni_data.data());
 	}
@@ -186,7 +283,7 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 /* RendererLightStorage */
 
 RID LightStorage::light_create(RS::LightType p_type) {
-	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)RS::LIGHT_SPOT + 1, RID(), "light_create: type is not a LightType value.");
+	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)RS::LIGHT_AREA + 1, RID(), "light_create: type is not a LightType value.");
 	Light light;
 	light.type = p_type;
 	for (int i = 0; i < RS::LIGHT_PARAM_MAX; i++) {
@@ -206,7 +303,7 @@ bool LightStorage::light_free(RID p_rid) {
 void LightStorage::light_set_param(RID p_light, RS::LightParam p_param, float p_value) {
 	GET_LIGHT_OR_FAIL(light);
 	ERR_FAIL_INDEX_MSG((int)p_param, (int)RS::LIGHT_PARAM_MAX, "light_set_param: parameter is not a LightParam value.");
-	if (!validate_param(p_param, p_value)) {
+	if (!validate_param(light->type, p_param, p_value)) {
 		return;
 	}
 	if (light->param[p_param] == p_value) {
@@ -327,6 +424,46 @@ void LightStorage::light_directional_set_sky_mode(RID p_light, RS::LightDirectio
 	light->directional_sky_mode = p_mode;
 }
 
+void LightStorage::light_area_set_size(RID p_light, const Vector2 &p_size) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_size: the light is not an area light.");
+	ERR_FAIL_COND_MSG(!std::isfinite(p_size.x) || !std::isfinite(p_size.y) || p_size.x < 0.0f || p_size.y < 0.0f,
+			vformat("light_area_set_size: area_size must be finite and >= 0, got (%g, %g); the old value is kept.", p_size.x, p_size.y));
+	if (light->area_size == p_size) {
+		return;
+	}
+	light->area_size = p_size;
+	light->version++; // Culling bounds change.
+}
+
+void LightStorage::light_area_set_normalize_energy(RID p_light, bool p_enable) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_normalize_energy: the light is not an area light.");
+	light->area_normalize_energy = p_enable;
+}
+
+void LightStorage::light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shading_method: the light is not an area light.");
+	ERR_FAIL_INDEX_MSG((int)p_method, (int)RS::LIGHT_AREA_SHADING_LTC + 1, "light_area_set_shading_method: method is not a LightAreaShadingMethod value.");
+	light->area_shading_method = p_method;
+}
+
+Vector2 LightStorage::light_area_get_size(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, Vector2());
+	return light->area_size;
+}
+
+bool LightStorage::light_area_get_normalize_energy(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, false);
+	return light->area_normalize_energy;
+}
+
+RS::LightAreaShadingMethod LightStorage::light_area_get_shading_method(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADING_LTC);
+	return light->area_shading_method;
+}
+
 RS::LightType LightStorage::light_get_type(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_DIRECTIONAL);
 	return light->type;
@@ -415,6 +552,13 @@ RS::LightDirectionalSkyMode LightStorage::light_directional_get_sky_mode(RID p_l
 
 AABB LightStorage::light_get_aabb(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, AABB());
+	if (light->type == RS::LIGHT_AREA) {
+		// Thesis Listing A.1: the box (a + 2r) x (b + 2r) x r in front of the rectangle (z from -r to 0).
+		float r = light->param[RS::LIGHT_PARAM_RANGE];
+		float hx = light->area_size.x * 0.5f + r;
+		float hy = light->area_size.y * 0.5f + r;
+		return AABB(Vector3(-hx, -hy, -r), Vector3(2.0f * hx, 2.0f * hy, r));
+	}
 	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE]);
 }
 

@@ -9,9 +9,14 @@
 /* place where light units are converted for the GPU (see LightData).    */
 /* It also feeds the cluster builder in the same loop, so cluster element */
 /* N of a type is always GPU light N of that type (keep it so).           */
+/*                                                                        */
+/* Area lights (thesis Listing A.2) get their own AreaLightData array and */
+/* buffer (binding 5 of the scene shader) and cluster element type        */
+/* ELEMENT_TYPE_AREA_LIGHT (an oriented box, thesis section 5.1.1).       */
 
 #pragma once
 
+#include "core/math/vector2.h"
 #include "core/templates/rid_owner.h"
 #include "servers/rendering/renderer_scene_render.h"
 #include "servers/rendering/storage/light_storage.h"
@@ -49,6 +54,23 @@ public:
 	static_assert(sizeof(LightData) == 64, "LightData must match shaders/light_data_inc.glsl (64 bytes).");
 	static_assert(sizeof(LightData) % 16 == 0, "LightData must stay a multiple of 16 bytes (std430 array stride).");
 
+	// One area light as the scene shader reads it (std430). Mirror of struct AreaLightData in
+	// shaders/light_data_inc.glsl: same names, same order, 80 bytes. Units: see the GLSL side.
+	struct AreaLightData {
+		float position[3]; // View space centre, metres.
+		float inv_radius; // 1 / area_range.
+		float half_axis_x[3]; // View space local +X * size.x / 2.
+		float attenuation; // Range window exponent (area_attenuation).
+		float half_axis_y[3]; // View space local +Y * size.y / 2.
+		float specular_amount; // LIGHT_PARAM_SPECULAR.
+		float normal[3]; // View space unit emission direction (local -Z).
+		uint32_t shading_method; // RS::LightAreaShadingMethod.
+		float color[3]; // L_e = srgb_to_linear(color) * energy * pi / A_n, negated for negative lights; 0 when size.x * size.y == 0.
+		uint32_t cull_mask; // light_cull_mask.
+	};
+	static_assert(sizeof(AreaLightData) == 80, "AreaLightData must match shaders/light_data_inc.glsl (80 bytes).");
+	static_assert(sizeof(AreaLightData) % 16 == 0, "AreaLightData must stay a multiple of 16 bytes (std430 array stride).");
+
 	// Lights per type uploaded per view (nearest to the camera first); a multiple of 32.
 	static constexpr uint32_t DEFAULT_MAX_LIGHTS = 512;
 
@@ -73,6 +95,9 @@ private:
 		RS::LightDirectionalShadowMode directional_shadow_mode = RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL;
 		bool directional_blend_splits = false;
 		RS::LightDirectionalSkyMode directional_sky_mode = RS::LIGHT_DIRECTIONAL_SKY_MODE_LIGHT_AND_SKY;
+		Vector2 area_size = Vector2(1, 1); // Metres, local X and Y.
+		bool area_normalize_energy = true;
+		RS::LightAreaShadingMethod area_shading_method = RS::LIGHT_AREA_SHADING_LTC;
 		uint64_t version = 0;
 	};
 
@@ -81,10 +106,13 @@ private:
 	uint32_t max_lights = DEFAULT_MAX_LIGHTS;
 	RID omni_light_buffer; // LightData[max_lights]
 	RID spot_light_buffer; // LightData[max_lights]
+	RID area_light_buffer; // AreaLightData[max_lights]
 	uint32_t omni_light_count = 0;
 	uint32_t spot_light_count = 0;
+	uint32_t area_light_count = 0;
 	std::vector<LightData> omni_data;
 	std::vector<LightData> spot_data;
+	std::vector<AreaLightData> area_data;
 
 	Light *_get_light(RID p_light, const char *p_caller) const;
 
@@ -97,22 +125,28 @@ public:
 	void finalize_gpu();
 	bool is_gpu_initialized() const { return omni_light_buffer.is_valid(); }
 
-	// Converts the visible omni/spot lights of one view into LightData (view space), sorts each type by
+	// Converts the visible omni/spot/area lights of one view into LightData / AreaLightData (view space), sorts each type by
 	// distance to the camera, keeps the nearest max_lights, uploads both arrays and adds every kept light
 	// to p_cluster_builder (may be null) in GPU index order. Records buffer updates: call outside lists.
 	void update_light_buffers(const std::vector<RenderSceneData::LightInstance> &p_lights, const Transform3D &p_view_from_world, ClusterBuilderRD *p_cluster_builder);
 
 	RID get_omni_light_buffer() const { return omni_light_buffer; }
 	RID get_spot_light_buffer() const { return spot_light_buffer; }
+	RID get_area_light_buffer() const { return area_light_buffer; }
 	uint32_t get_omni_light_count() const { return omni_light_count; }
 	uint32_t get_spot_light_count() const { return spot_light_count; }
+	uint32_t get_area_light_count() const { return area_light_count; }
 	uint32_t get_max_lights() const { return max_lights; }
 	// CPU copies of the last upload (tests).
 	const std::vector<LightData> &get_omni_light_data() const { return omni_data; }
 	const std::vector<LightData> &get_spot_light_data() const { return spot_data; }
+	const std::vector<AreaLightData> &get_area_light_data() const { return area_data; }
 
-	// Fills one LightData from a light record and its world transform (the unit conversion).
+	// Fills one LightData from an omni/spot light record and its world transform (the unit conversion).
 	bool fill_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, LightData &r_data) const;
+	// Fills one AreaLightData from an area light record and its world transform (the unit conversion:
+	// view-space centre, half axes and normal, inverse range, L_e per the area light contract).
+	bool fill_area_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, AreaLightData &r_data) const;
 
 	/* Public Methods: RendererLightStorage */
 
@@ -133,6 +167,9 @@ public:
 	void light_directional_set_shadow_mode(RID p_light, RS::LightDirectionalShadowMode p_mode) override;
 	void light_directional_set_blend_splits(RID p_light, bool p_enable) override;
 	void light_directional_set_sky_mode(RID p_light, RS::LightDirectionalSkyMode p_mode) override;
+	void light_area_set_size(RID p_light, const Vector2 &p_size) override;
+	void light_area_set_normalize_energy(RID p_light, bool p_enable) override;
+	void light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) override;
 
 	RS::LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, RS::LightParam p_param) const override;
@@ -151,6 +188,9 @@ public:
 	RS::LightDirectionalShadowMode light_directional_get_shadow_mode(RID p_light) const override;
 	bool light_directional_get_blend_splits(RID p_light) const override;
 	RS::LightDirectionalSkyMode light_directional_get_sky_mode(RID p_light) const override;
+	Vector2 light_area_get_size(RID p_light) const override;
+	bool light_area_get_normalize_energy(RID p_light) const override;
+	RS::LightAreaShadingMethod light_area_get_shading_method(RID p_light) const override;
 	AABB light_get_aabb(RID p_light) const override;
 	uint64_t light_get_version(RID p_light) const override;
 

@@ -1,0 +1,107 @@
+/**************************************************************************/
+/*  area_light.h                                                          */
+/**************************************************************************/
+/* godot-area: rectangular area lights in the CPU reference renderer:     */
+/* the light's world-space frame, its emitted radiance and range window   */
+/* exactly as the area-light contract defines them (the GPU shader must   */
+/* use the same units):                                                   */
+/*   L_e = srgb_to_linear(colour) * energy * pi / A_n, A_n = a * b when   */
+/*         normalize_energy, else 1; a * b == 0 emits exactly 0;          */
+/*   L_o(x) = W(d) * integral over the rectangle of f(l, v) L_e (n.l) dw, */
+/*         one-sided: only points strictly in front (local -Z) are lit;   */
+/*   W(d) = (max(1 - (d / r)^4, 0)^2)^attenuation, d = distance from x to */
+/*         the closest point of the rectangle, d >= r gives exactly 0.    */
+/* The integral itself (integrate_adaptive over the rectangle's [0,1]^2   */
+/* parameterisation, with shadow rays) is in reference_renderer.cpp.      */
+
+#pragma once
+
+#include "core/math/color.h"
+#include "core/math/math_funcs.h"
+#include "core/math/transform_3d.h"
+#include "core/math/vector2.h"
+#include "core/math/vector3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace ReferenceBRDF {
+
+// One area light in world space.
+struct AreaLightData {
+	Vector3 center; // World position of the rectangle's centre (the node origin).
+	Vector3 axis_x = Vector3(1, 0, 0); // Unit world direction of the light's local +X (extent size.x).
+	Vector3 axis_y = Vector3(0, 1, 0); // Unit world direction of the light's local +Y (extent size.y).
+	Vector3 emit_dir = Vector3(0, 0, -1); // Unit world direction of local -Z: the lit side.
+	float size_x = 0.0f; // Metres.
+	float size_y = 0.0f; // Metres.
+	Vector3 radiance; // L_e per channel (W / (m^2 sr) in engine units), negative for negative lights.
+	float range = 0.0f; // Metres from the closest point of the rectangle.
+	float attenuation = 1.0f; // Exponent of the range window (>= 0; 0 = no window).
+	float specular_amount = 1.0f; // "light_specular".
+	uint32_t cull_mask = 0xFFFFFFFF;
+
+	float get_area() const { return size_x * size_y; }
+};
+
+// L_e of the contract: srgb_to_linear(colour) * energy * pi / A_n (A_n = a * b when normalising, else
+// 1), negated for negative lights. Exactly zero when a * b == 0 (no division by zero, no NaN).
+inline Vector3 area_light_emitted_radiance(const Color &p_srgb_color, float p_energy, bool p_negative, const Vector2 &p_size, bool p_normalize_energy) {
+	const float area = p_size.x * p_size.y;
+	if (!(area > 0.0f)) {
+		return Vector3();
+	}
+	const Color linear = p_srgb_color.srgb_to_linear();
+	float scale = p_energy * float(Math::PI) * (p_negative ? -1.0f : 1.0f);
+	if (p_normalize_energy) {
+		scale /= area;
+	}
+	return Vector3(linear.r * scale, linear.g * scale, linear.b * scale);
+}
+
+// Fills the world frame from world_from_light. Scale is ignored (a light's scale does not change its
+// size, as for every Godot light): the axes are normalised columns of the basis.
+inline void area_light_set_frame(AreaLightData &r_light, const Transform3D &p_world_from_light) {
+	r_light.center = p_world_from_light.origin;
+	const Vector3 x = p_world_from_light.basis.get_column(0).normalized();
+	const Vector3 y = p_world_from_light.basis.get_column(1).normalized();
+	const Vector3 z = p_world_from_light.basis.get_column(2).normalized();
+	r_light.axis_x = x == Vector3() ? Vector3(1, 0, 0) : x;
+	r_light.axis_y = y == Vector3() ? Vector3(0, 1, 0) : y;
+	r_light.emit_dir = z == Vector3() ? Vector3(0, 0, -1) : -z;
+}
+
+// Signed distance of p in front of the light plane (> 0 on the lit side).
+inline float area_light_front_distance(const AreaLightData &p_light, const Vector3 &p_point) {
+	return (p_point - p_light.center).dot(p_light.emit_dir);
+}
+
+// Distance from p to the closest point of the rectangle (metres).
+inline float area_light_closest_distance(const AreaLightData &p_light, const Vector3 &p_point) {
+	const Vector3 rel = p_point - p_light.center;
+	const float u = rel.dot(p_light.axis_x);
+	const float v = rel.dot(p_light.axis_y);
+	const float w = rel.dot(p_light.emit_dir);
+	const float du = std::max(std::fabs(u) - 0.5f * p_light.size_x, 0.0f);
+	const float dv = std::max(std::fabs(v) - 0.5f * p_light.size_y, 0.0f);
+	return std::sqrt(du * du + dv * dv + w * w);
+}
+
+// Range window W(d) = (max(1 - (d / r)^4, 0)^2)^attenuation: exactly 0 for d >= r (and for r <= 0),
+// exactly 1 for attenuation 0 inside the range. Unitless, in [0, 1].
+inline float area_light_window(float p_distance, float p_range, float p_attenuation) {
+	if (!(p_range > 0.0f) || !(p_distance < p_range)) {
+		return 0.0f;
+	}
+	if (p_attenuation == 0.0f) {
+		return 1.0f;
+	}
+	float nd = p_distance / p_range;
+	nd *= nd;
+	nd *= nd; // (d / r)^4
+	const float window = std::max(1.0f - nd, 0.0f);
+	return std::pow(window * window, p_attenuation);
+}
+
+} // namespace ReferenceBRDF

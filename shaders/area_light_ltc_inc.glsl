@@ -1,0 +1,196 @@
+/**************************************************************************/
+/*  area_light_ltc_inc.glsl                                               */
+/**************************************************************************/
+/* Rectangular area lights shaded with linearly transformed cosines       */
+/* (Heitz, Dupuy, Hill and Neubelt 2016, "Real-Time Polygonal-Light       */
+/* Shading with Linearly Transformed Cosines"; thesis section 5.4).       */
+/*                                                                        */
+/* Reflected radiance of one light at a shading point (contract units):   */
+/*   L_o = L_e W(d) [ albedo * FF_cos(P) + spec * FF_cos(M^-1 P) * F ]    */
+/* P = the rectangle seen from the point in a frame with z = N,           */
+/* FF_cos(Q) = (1 / pi) integral over Q (clipped to z >= 0) of cos dl,    */
+/* i.e. the cosine form factor of the polygon (Lambert 1760: a sum of     */
+/* edge integrals), F = f0 fn + (f90 - f0) fg (thesis eq. 5.10).          */
+/*                                                                        */
+/* Diffuse: the EXACT Lambert integral (M = identity). Burley materials   */
+/* use the same Lambert integral (there is no closed form for Burley's    */
+/* view/light-dependent retro-reflection over a polygon; the difference   */
+/* is a few % at grazing angles and roughness 1, as Godot's own Burley vs */
+/* Lambert).                                                               */
+/*                                                                        */
+/* Horizon: the polygon is CLIPPED to the upper hemisphere z >= 0 of the  */
+/* cosine space (Sutherland-Hodgman against one plane: 4 -> at most 5     */
+/* vertices). Exact, unlike the sphere form-factor approximation of       */
+/* Heitz 2017.                                                            */
+/*                                                                        */
+/* Edge integral precision (thesis section 5.4.4): for unit vectors a, b  */
+/* the edge term is theta * normalize(a x b).z. Near-antipodal a, b make  */
+/* a x b tiny and its direction noisy; we split such edges (dot < -0.5,   */
+/* i.e. wider than 120 degrees) at the projected midpoint: the point of   */
+/* the 3D segment closest to the shading point, normalised, which lies on */
+/* the spherical edge between a and b (thesis fig. 5.20). The triangle   */
+/* (origin, m, v) has its right angle at m, so each half spans less than  */
+/* 90 degrees and is well conditioned. The angle itself is              */
+/* atan(|a x b|, a.b), accurate over the whole range (acos is not near   */
+/* +-1).                                                                  */
+/*                                                                        */
+/* Needs, declared before inclusion: light_data_inc.glsl (AreaLightData), */
+/* brdf_inc.glsl (M_PI), and the bindings ltc_lut_texture (texture2DArray */
+/* made by LTCLutRD) and ltc_lut_sampler (linear, clamp).                 */
+
+#ifndef AREA_LIGHT_LTC_INC_GLSL
+#define AREA_LIGHT_LTC_INC_GLSL
+
+// Cells per side of the LUT. Must match LTC_LUT_SIZE in servers/rendering/renderer_rd/ltc_lut_data.inc.
+#define LTC_LUT_SIZE 64.0
+
+// Edge integral of the clamped cosine (times 2 pi) over the great arc from unit vector a to unit
+// vector b: theta * (a x b).z / |a x b|. Returns 0 for a degenerate (zero-length) arc.
+float ltc_edge_integral_unit(vec3 a, vec3 b) {
+	vec3 c = cross(a, b);
+	float s = length(c);
+	if (s < 1e-12) {
+		return 0.0; // a == b (a zero-length edge); a == -b never reaches here (split below).
+	}
+	float theta = atan(s, dot(a, b));
+	return theta * c.z / s;
+}
+
+// Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit).
+float ltc_edge_integral(vec3 p_v1, vec3 p_v2) {
+	vec3 a = p_v1 / max(length(p_v1), 1e-30);
+	vec3 b = p_v2 / max(length(p_v2), 1e-30);
+	if (dot(a, b) > -0.5) {
+		return ltc_edge_integral_unit(a, b);
+	}
+	// Thesis section 5.4.4: split at the projected midpoint.
+	vec3 e = p_v2 - p_v1;
+	float t = clamp(-dot(p_v1, e) / max(dot(e, e), 1e-30), 0.0, 1.0);
+	vec3 m = p_v1 + e * t;
+	m = m / max(length(m), 1e-30);
+	return ltc_edge_integral_unit(a, m) + ltc_edge_integral_unit(m, b);
+}
+
+// Cosine form factor (1 / pi) integral of max(z, 0) over the spherical projection of the quad p_q
+// (a planar convex polygon not containing the origin), i.e. the integral of the normalised clamped
+// cosine distribution D_o = max(z, 0) / pi. In [0, 1]; independent of the winding.
+float ltc_polygon_form_factor(vec3 p_q[4]) {
+	// Sutherland-Hodgman clipping to z >= 0 (at most 5 vertices for a convex quad).
+	vec3 c[5];
+	int n = 0;
+	for (int i = 0; i < 4; i++) {
+		vec3 a = p_q[i];
+		vec3 b = p_q[(i + 1) & 3];
+		bool a_in = a.z > 0.0;
+		bool b_in = b.z > 0.0;
+		if (a_in && n < 5) {
+			c[n++] = a;
+		}
+		if (a_in != b_in && n < 5) {
+			vec3 p = mix(a, b, a.z / (a.z - b.z));
+			p.z = 0.0;
+			c[n++] = p;
+		}
+	}
+	if (n < 3) {
+		return 0.0;
+	}
+	float sum = 0.0;
+	for (int i = 0; i < n; i++) {
+		sum += ltc_edge_integral(c[i], c[(i + 1) % n]);
+	}
+	// Lambert: integral of cos over the polygon = 1/2 sum theta_i n.gamma_i; divided by pi.
+	return abs(sum) * (0.5 / M_PI);
+}
+
+// The contract's range window: d = distance from the shading point to the closest point of the
+// rectangle, W = ((max(1 - (d/r)^4, 0))^2)^attenuation, exactly 0 for d >= r, 1 for attenuation 0.
+float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
+	float ax2 = dot(p_light.half_axis_x, p_light.half_axis_x);
+	float ay2 = dot(p_light.half_axis_y, p_light.half_axis_y);
+	float u = ax2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_x) / ax2, -1.0, 1.0) : 0.0;
+	float v = ay2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_y) / ay2, -1.0, 1.0) : 0.0;
+	float d = length(p_to_vertex - p_light.half_axis_x * u - p_light.half_axis_y * v);
+	float nd = d * p_light.inv_radius;
+	if (nd >= 1.0) {
+		return 0.0;
+	}
+	nd *= nd;
+	nd *= nd;
+	float window = 1.0 - nd;
+	window *= window; // > 0 here, so pow() is defined; pow(x, 0) = 1.
+	return pow(window, p_light.attenuation);
+}
+
+// Adds one area light. Vectors in view space; N, V unit; p_vertex the shading point. r_diffuse
+// accumulates irradiance-weighted diffuse BRDF without albedo (as light_compute does), r_specular
+// reflected specular radiance.
+void light_process_area(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
+	vec3 to_vertex = p_vertex - p_light.position;
+	// One-sided: only the half-space in front of the emitting side is lit (exactly 0 behind).
+	if (dot(to_vertex, p_light.normal) <= 0.0) {
+		return;
+	}
+	// Zero size (colour 0, set by LightStorage) or black: exactly 0, no polygon maths on degenerate input.
+	if (p_light.color == vec3(0.0) || dot(p_light.half_axis_x, p_light.half_axis_x) == 0.0 || dot(p_light.half_axis_y, p_light.half_axis_y) == 0.0) {
+		return;
+	}
+	float window = area_light_range_window(p_light, to_vertex);
+	if (window <= 0.0) {
+		return;
+	}
+	vec3 radiance = p_light.color * window;
+
+	// Frame of the LUT fit (ltc_lut_data.inc): z = N, x = normalize(V - N NoV), y = z cross x.
+	float NoV = dot(N, V);
+	vec3 tx = V - N * NoV;
+	if (dot(tx, tx) < 1e-10) {
+		// V == N: the lobe is isotropic (b = d = 0, a = c), any tangent works.
+		tx = abs(N.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+		tx -= N * dot(N, tx);
+	}
+	vec3 T1 = normalize(tx);
+	vec3 T2 = cross(N, T1);
+	mat3 local_from_view = transpose(mat3(T1, T2, N));
+
+	vec3 base = p_light.position - p_vertex;
+	vec3 hx = p_light.half_axis_x;
+	vec3 hy = p_light.half_axis_y;
+	vec3 q[4];
+	q[0] = local_from_view * (base - hx - hy);
+	q[1] = local_from_view * (base + hx - hy);
+	q[2] = local_from_view * (base + hx + hy);
+	q[3] = local_from_view * (base - hx + hy);
+
+	// Diffuse: the exact Lambert integral, (1/pi) L_e integral cos = L_e FF (albedo applied later).
+	r_diffuse += radiance * ltc_polygon_form_factor(q);
+
+	if (p_specular_enabled) {
+		// LUT lookup, exact formula of the .inc header: u = (roughness, sqrt(1 - NoV)) mapped to texel centres.
+		vec2 uv = vec2(clamp(p_roughness, 0.0, 1.0), sqrt(1.0 - clamp(NoV, 0.0, 1.0)));
+		uv = uv * ((LTC_LUT_SIZE - 1.0) / LTC_LUT_SIZE) + 0.5 / LTC_LUT_SIZE;
+		vec4 t0 = textureLod(sampler2DArray(ltc_lut_texture, ltc_lut_sampler), vec3(uv, 0.0), 0.0); // a, b, c, d
+		vec4 t1 = textureLod(sampler2DArray(ltc_lut_texture, ltc_lut_sampler), vec3(uv, 1.0), 0.0); // e, fn, fg, 0
+		float a = t0.x;
+		float b = t0.y;
+		float c = t0.z;
+		float d = t0.w;
+		float e = t1.x;
+		// Thesis eqs. 5.7-5.8: M = [[a, 0, b], [0, c, 0], [d, 0, e]] (row-major), inverted at run time.
+		// We stay in the fitter's frame (above), so the Godot-frame conjugation of eq. 5.9 is not needed.
+		// a e - b d > 0 in every cell (ltc_lut_data.inc), so s is finite.
+		float s = 1.0 / (a * e - b * d);
+		// GLSL matrices are column-major: columns of M^-1.
+		mat3 m_inv = mat3(vec3(s * e, 0.0, -s * d), vec3(0.0, 1.0 / c, 0.0), vec3(-s * b, 0.0, s * a));
+		vec3 qs[4];
+		for (int i = 0; i < 4; i++) {
+			qs[i] = m_inv * q[i];
+		}
+		float spec = ltc_polygon_form_factor(qs);
+		// Thesis eq. 5.10.
+		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
+		r_specular += radiance * p_light.specular_amount * spec * F;
+	}
+}
+
+#endif // AREA_LIGHT_LTC_INC_GLSL

@@ -1,0 +1,332 @@
+/**************************************************************************/
+/*  test_reference_area_light.cpp                                         */
+/**************************************************************************/
+/* godot-area: area lights in the CPU reference renderer against closed   */
+/* forms: a Lambertian plane under a CORNER of a parallel rectangle light */
+/* (the configuration factor of a differential area to a parallel        */
+/* rectangle), the one-sided emission (exactly 0 behind the light), the   */
+/* range window W(d), zero-size lights (exactly 0, no NaN) and the energy */
+/* normalisation (far-field radiance independent of the size). Dummy      */
+/* storages + ReferenceRenderer; no GPU and no scene cull.                */
+
+#include "modules/reference/area_light.h"
+#include "modules/reference/reference_renderer.h"
+
+#include "core/math/math_funcs.h"
+#include "servers/rendering/dummy/storage/light_storage.h"
+#include "servers/rendering/dummy/storage/material_storage.h"
+#include "servers/rendering/dummy/storage/mesh_storage.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+namespace TestReferenceAreaLight {
+
+struct AreaFixture {
+	RendererDummy::LightStorage light_storage;
+	RendererDummy::MeshStorage mesh_storage;
+	RendererDummy::MaterialStorage material_storage;
+	ReferenceRenderer renderer{ &light_storage, &mesh_storage, &material_storage };
+	std::vector<RID> meshes, materials, lights, targets;
+	RenderSceneData scene;
+	const Color albedo_srgb = Color(0.8f, 0.8f, 0.8f, 1.0f);
+
+	// A 40 m Lambert ground plane (y = 0, normal +Y, no specular) seen from p_camera_height straight
+	// down, 60 degrees, p_size x p_size pixels, black background, no ambient light.
+	AreaFixture(float p_camera_height, int p_size) {
+		ReferenceRenderOptions options;
+		options.threads = 2;
+		options.target_relative_error = 0.001f;
+		options.max_samples = 16384;
+		renderer.set_options(options);
+
+		RS::SurfaceData ground;
+		const float h = 20.0f;
+		ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
+		ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
+		ground.indices = { 0, 1, 2, 0, 2, 3 }; // (c - a) x (b - a) = +Y: front faces up (clockwise rule).
+		RID mesh = mesh_storage.mesh_create();
+		mesh_storage.mesh_add_surface(mesh, ground);
+		meshes.push_back(mesh);
+		RS::MaterialParams params;
+		params.albedo = albedo_srgb;
+		params.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
+		params.specular_mode = RS::MATERIAL_SPECULAR_DISABLED;
+		params.roughness = 1.0f;
+		RID material = material_storage.material_create();
+		material_storage.material_set_params(material, params);
+		materials.push_back(material);
+
+		scene.cam_transform = Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0, p_camera_height, 0));
+		scene.z_near = 0.05f;
+		scene.z_far = 100.0f;
+		scene.fovy_degrees = 60.0f;
+		scene.cam_projection = Projection::create_perspective(60.0f, 1.0f, scene.z_near, scene.z_far);
+		scene.viewport_width = p_size;
+		scene.viewport_height = p_size;
+		scene.environment.has_environment = true;
+		scene.environment.background = RS::ENV_BG_COLOR;
+		scene.environment.bg_color = Color(0, 0, 0, 1);
+		scene.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
+		scene.environment.ambient_color = Color(0, 0, 0, 1);
+		scene.environment.ambient_energy = 0.0f;
+		RenderSceneData::GeometryInstance g;
+		g.mesh = mesh;
+		g.material_override = material;
+		scene.geometry.push_back(g);
+	}
+	~AreaFixture() {
+		for (RID r : targets) {
+			renderer.render_target_free(r);
+		}
+		for (RID r : meshes) {
+			mesh_storage.mesh_free(r);
+		}
+		for (RID r : materials) {
+			material_storage.material_free(r);
+		}
+		for (RID r : lights) {
+			light_storage.light_free(r);
+		}
+	}
+	// Adds a white area light (energy, size, range, attenuation, normalisation) at p_xform.
+	RID add_area(float p_energy, const Vector2 &p_size, float p_range, float p_attenuation, bool p_normalize, const Transform3D &p_xform) {
+		RID l = light_storage.light_create(RS::LIGHT_AREA);
+		light_storage.light_set_param(l, RS::LIGHT_PARAM_ENERGY, p_energy);
+		light_storage.light_set_param(l, RS::LIGHT_PARAM_RANGE, p_range);
+		light_storage.light_set_param(l, RS::LIGHT_PARAM_ATTENUATION, p_attenuation);
+		light_storage.light_area_set_size(l, p_size);
+		light_storage.light_area_set_normalize_energy(l, p_normalize);
+		lights.push_back(l);
+		RenderSceneData::LightInstance li;
+		li.light = l;
+		li.type = RS::LIGHT_AREA;
+		li.transform = p_xform;
+		scene.lights.push_back(li);
+		return l;
+	}
+	std::vector<float> render() {
+		RID rt = renderer.render_target_create(scene.viewport_width, scene.viewport_height);
+		targets.push_back(rt);
+		renderer.render_scene(scene, rt);
+		return renderer.render_target_get_data(rt);
+	}
+	// Linear albedo of the plane (what the renderer multiplies the diffuse sum by).
+	double albedo() const { return Color::srgb_to_linear_channel(albedo_srgb.r); }
+	// The ground point (y = 0) seen through the centre of pixel (p_x, p_y), top row first.
+	Vector3 ground_point(int p_x, int p_y) const {
+		const double t = std::tan(Math::deg_to_rad(double(scene.fovy_degrees)) * 0.5);
+		const double x_ndc = (p_x + 0.5) / scene.viewport_width * 2.0 - 1.0;
+		const double y_ndc = 1.0 - (p_y + 0.5) / scene.viewport_height * 2.0;
+		const Vector3 dir = scene.cam_transform.basis.xform(Vector3(float(x_ndc * t), float(y_ndc * t), -1.0f));
+		const Vector3 o = scene.cam_transform.origin;
+		return o + dir * (-o.y / dir.y);
+	}
+	static const float *pixel(const std::vector<float> &p_image, int p_width, int p_x, int p_y) {
+		return &p_image[(size_t(p_y) * p_width + p_x) * 4];
+	}
+};
+
+// A light facing straight down (local -Z = world -Y): local X = world +X, local Y = world -Z.
+static Basis facing_down() {
+	return Basis::from_columns(Vector3(1, 0, 0), Vector3(0, 0, -1), Vector3(0, 1, 0));
+}
+
+// Configuration factor from a differential area to a parallel rectangle a x b at height h whose
+// corner lies on the area's normal (Howell's catalogue, C-11), X = a / h, Y = b / h:
+//   F = 1/(2 pi) [X/sqrt(1+X^2) atan(Y/sqrt(1+X^2)) + Y/sqrt(1+Y^2) atan(X/sqrt(1+Y^2))].
+static double corner_configuration_factor(double p_a, double p_b, double p_h) {
+	const double X = p_a / p_h, Y = p_b / p_h;
+	const double sx = std::sqrt(1.0 + X * X), sy = std::sqrt(1.0 + Y * Y);
+	return (X / sx * std::atan(Y / sx) + Y / sy * std::atan(X / sy)) / (2.0 * Math::PI);
+}
+
+TEST_CASE("[Reference][AreaLight3D] a Lambert plane under a corner of a parallel rectangle matches the configuration factor within 0.5 %") {
+	AreaFixture f(6.0f, 16);
+	const double a = 2.0, b = 1.5, h = 1.0, energy = 2.0;
+	// Put one corner of the light straight above the ground point of pixel (11, 5).
+	const int px = 11, py = 5;
+	const Vector3 g = f.ground_point(px, py);
+	// Corner = centre - a/2 X - b/2 Y with X = +x, Y = -z: centre = g + (a/2, h, -b/2).
+	const Transform3D xform(facing_down(), g + Vector3(float(a / 2), float(h), float(-b / 2)));
+	// Attenuation 0 (W = 1) and a huge range: the purely physical integral. Not normalised: L_e = E * pi.
+	f.add_area(float(energy), Vector2(float(a), float(b)), 1000.0f, 0.0f, false, xform);
+	const std::vector<float> image = f.render();
+
+	// Lambert: L_o = albedo/pi * E_irr, E_irr = L_e * pi * F, L_e = colour(1) * energy * pi (/ A_n = 1), so
+	// L_o = albedo * energy * pi * F.
+	const double F = corner_configuration_factor(a, b, h);
+	const double expected = f.albedo() * energy * Math::PI * F;
+	const float *p = AreaFixture::pixel(image, 16, px, py);
+	CHECK(std::isfinite(p[0]));
+	CHECK_MESSAGE(p[0] == doctest::Approx(expected).epsilon(0.005), "got ", p[0], ", expected ", expected, " (F = ", F, ")");
+	CHECK(p[1] == doctest::Approx(p[0]));
+	CHECK(p[2] == doctest::Approx(p[0]));
+	CHECK(f.renderer.get_last_stats().area_light_samples > 0);
+
+	SUBCASE("the same seed renders the same image") {
+		const std::vector<float> again = f.render();
+		CHECK(again == image);
+	}
+}
+
+TEST_CASE("[Reference][AreaLight3D] nothing behind the light is lit (one-sided), and the range window applies") {
+	AreaFixture f(6.0f, 16);
+	// A 1 x 1 light standing on edge 1 m above the ground at x = 0, emitting along world +X:
+	// local -Z = +X, so local Z = -X; local X = +Z, local Y = +Y.
+	const Transform3D xform(Basis::from_columns(Vector3(0, 0, 1), Vector3(0, 1, 0), Vector3(-1, 0, 0)), Vector3(0, 1, 0));
+	RID light = f.add_area(5.0f, Vector2(1, 1), 1000.0f, 0.0f, true, xform);
+	const std::vector<float> image = f.render();
+	int behind = 0, lit = 0;
+	for (int y = 0; y < 16; y++) {
+		for (int x = 0; x < 16; x++) {
+			const Vector3 g = f.ground_point(x, y);
+			const float *p = AreaFixture::pixel(image, 16, x, y);
+			if (g.x < -0.05f) {
+				behind++;
+				CHECK_MESSAGE(p[0] == 0.0f, "pixel ", x, ",", y, " is behind the light and must be exactly 0, got ", p[0]);
+			} else if (g.x > 0.05f) {
+				lit += p[0] > 0.0f ? 1 : 0;
+			}
+		}
+	}
+	CHECK(behind > 20);
+	CHECK(lit > 20);
+
+	SUBCASE("W(d) = (1 - (d/r)^4)^2 with attenuation 1 scales the physical integral; d >= r is exactly 0") {
+		const float range = 3.0f;
+		f.light_storage.light_set_param(light, RS::LIGHT_PARAM_RANGE, range);
+		f.light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 1.0f);
+		const std::vector<float> windowed = f.render();
+		ReferenceBRDF::AreaLightData rect;
+		ReferenceBRDF::area_light_set_frame(rect, xform);
+		rect.size_x = rect.size_y = 1.0f;
+		int checked = 0, outside = 0;
+		for (int y = 0; y < 16; y++) {
+			for (int x = 0; x < 16; x++) {
+				const Vector3 g = f.ground_point(x, y);
+				if (g.x <= 0.05f) {
+					continue;
+				}
+				const double d = ReferenceBRDF::area_light_closest_distance(rect, g);
+				const float full = AreaFixture::pixel(image, 16, x, y)[0];
+				const float w = AreaFixture::pixel(windowed, 16, x, y)[0];
+				if (d >= range) {
+					outside++;
+					CHECK(w == 0.0f);
+					continue;
+				}
+				const double q = std::pow(d / range, 4.0);
+				// Same seed and the same samples: only the window differs.
+				CHECK(w == doctest::Approx(full * (1.0 - q) * (1.0 - q)).epsilon(1e-4));
+				checked++;
+			}
+		}
+		CHECK(checked > 10);
+		CHECK(outside > 10);
+	}
+}
+
+TEST_CASE("[Reference][AreaLight3D] with shadows on, each sample is shadow-tested") {
+	AreaFixture f(6.0f, 16);
+	// A 2 x 2 occluder at y = 0.5 facing down: primary rays from above hit its back face and are culled
+	// (cull_back), shadow rays see both faces.
+	RS::SurfaceData occluder;
+	occluder.vertices = { Vector3(-1, 0.5f, -1), Vector3(1, 0.5f, -1), Vector3(1, 0.5f, 1), Vector3(-1, 0.5f, 1) };
+	occluder.normals = { Vector3(0, -1, 0), Vector3(0, -1, 0), Vector3(0, -1, 0), Vector3(0, -1, 0) };
+	occluder.indices = { 0, 2, 1, 0, 3, 2 }; // (c - a) x (b - a) = -Y.
+	RID mesh = f.mesh_storage.mesh_create();
+	f.mesh_storage.mesh_add_surface(mesh, occluder);
+	f.meshes.push_back(mesh);
+	RenderSceneData::GeometryInstance g;
+	g.mesh = mesh;
+	g.material_override = f.materials[0];
+	f.scene.geometry.push_back(g);
+	f.add_area(5.0f, Vector2(0.5f, 0.5f), 100.0f, 0.0f, true, Transform3D(facing_down(), Vector3(0, 1, 0)));
+
+	const std::vector<float> open = f.render();
+	CHECK(f.renderer.get_last_stats().shadow_rays == 0);
+	ReferenceRenderOptions options = f.renderer.get_options();
+	options.shadows = true;
+	f.renderer.set_options(options);
+	const std::vector<float> shadowed = f.render();
+	CHECK(f.renderer.get_last_stats().shadow_rays > 0);
+
+	// Under the middle of the occluder every segment to the light crosses it: exactly 0.
+	CHECK(AreaFixture::pixel(open, 16, 8, 8)[0] > 0.0f);
+	CHECK(AreaFixture::pixel(shadowed, 16, 8, 8)[0] == 0.0f);
+	// Far outside the occluder's shadow nothing changes (same seed, same samples, all unoccluded).
+	CHECK(AreaFixture::pixel(shadowed, 16, 0, 0)[0] == AreaFixture::pixel(open, 16, 0, 0)[0]);
+	CHECK(AreaFixture::pixel(open, 16, 0, 0)[0] > 0.0f);
+	// A pixel near the shadow's edge is partly lit (a penumbra, not a hard step).
+	bool penumbra = false;
+	for (int x = 8; x < 16; x++) {
+		const float o = AreaFixture::pixel(open, 16, x, 8)[0];
+		const float s = AreaFixture::pixel(shadowed, 16, x, 8)[0];
+		penumbra |= s > 0.02f * o && s < 0.98f * o;
+	}
+	CHECK(penumbra);
+}
+
+TEST_CASE("[Reference][AreaLight3D] a zero-size light contributes exactly 0 and no NaN") {
+	AreaFixture f(6.0f, 8);
+	const Transform3D xform(facing_down(), Vector3(0, 1, 0));
+	SUBCASE("normalised, zero area") {
+		f.add_area(10.0f, Vector2(0, 0), 100.0f, 1.0f, true, xform);
+	}
+	SUBCASE("normalised, zero width") {
+		f.add_area(10.0f, Vector2(0, 2), 100.0f, 1.0f, true, xform);
+	}
+	SUBCASE("not normalised, zero height") {
+		f.add_area(10.0f, Vector2(2, 0), 100.0f, 0.0f, false, xform);
+	}
+	const std::vector<float> image = f.render();
+	for (size_t i = 0; i < image.size(); i += 4) {
+		CHECK(image[i] == 0.0f);
+		CHECK(image[i + 1] == 0.0f);
+		CHECK(image[i + 2] == 0.0f);
+	}
+	CHECK(f.renderer.get_last_stats().area_light_samples == 0);
+	// The helper agrees: no radiance, no division by zero.
+	const Vector3 le = ReferenceBRDF::area_light_emitted_radiance(Color(1, 1, 1), 10.0f, false, Vector2(0, 2), true);
+	CHECK(le == Vector3());
+}
+
+TEST_CASE("[Reference][AreaLight3D] normalize_energy: doubling the size at fixed energy keeps the far-field radiance") {
+	const double energy = 50.0, h = 10.0;
+	const int size = 8;
+	std::vector<float> images[2];
+	std::vector<Vector3> points;
+	double albedo = 0.0;
+	for (int i = 0; i < 2; i++) {
+		AreaFixture f(20.0f, size);
+		const float side = i == 0 ? 0.2f : 0.4f;
+		f.add_area(float(energy), Vector2(side, side), 1000.0f, 0.0f, true, Transform3D(facing_down(), Vector3(0, float(h), 0)));
+		images[i] = f.render();
+		if (i == 0) {
+			albedo = f.albedo();
+			for (int y = 0; y < size; y++) {
+				for (int x = 0; x < size; x++) {
+					points.push_back(f.ground_point(x, y));
+				}
+			}
+		}
+	}
+	for (int y = 0; y < size; y++) {
+		for (int x = 0; x < size; x++) {
+			const float small = AreaFixture::pixel(images[0], size, x, y)[0];
+			const float large = AreaFixture::pixel(images[1], size, x, y)[0];
+			REQUIRE(small > 0.0f);
+			CHECK(large == doctest::Approx(small).epsilon(0.01));
+			// Far field: like a point source of intensity energy * pi / pi per cos: a Lambert surface at
+			// lateral distance rho receives L_o = albedo * energy * cos_i cos_l / dist^2 = albedo * E h^2 / dist^4.
+			const Vector3 g = points[size_t(y) * size + x];
+			const double dist2 = h * h + double(g.x) * g.x + double(g.z) * g.z;
+			const double far_field = albedo * energy * h * h / (dist2 * dist2);
+			CHECK(small == doctest::Approx(far_field).epsilon(0.01));
+		}
+	}
+}
+
+} // namespace TestReferenceAreaLight
