@@ -2,7 +2,8 @@
 /*  main.cpp                                                              */
 /**************************************************************************/
 /* godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H]     */
-/*                   [--png P] [--half] [--exposure EV]                   */
+/*                   [--png P] [--half] [--exposure EV] [--gizmos]        */
+/*                   [--gizmos-selected] [--debug-area-clusters]          */
 /* godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F]      */
 /*                   [--width W] [--height H]                             */
 /* godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip] */
@@ -20,6 +21,7 @@
 #include "core/io/image.h"
 #include "core/io/tonemap.h"
 #include "drivers/png/png_writer.h"
+#include "editor/gizmo_overlay.h"
 #include "main/demo_scene.gen.h"
 #include "modules/gltf/register_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
@@ -113,6 +115,7 @@ void _print_usage() {
 	fprintf(stderr,
 			"usage:\n"
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
+			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
@@ -135,7 +138,7 @@ bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 	static const std::map<String, std::vector<String>> flag_options = {
 		{ "compare", { "--json", "--no-hdr-flip" } },
 		{ "reference", { "--progress" } },
-		{ "render", { "--half" } },
+		{ "render", { "--half", "--gizmos", "--gizmos-selected", "--debug-area-clusters" } },
 		{ "bench", {} },
 		{ "info", {} },
 	};
@@ -274,7 +277,17 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 			fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 			code = 2;
 		} else {
+			if (_has_flag(p_args, "--debug-area-clusters")) {
+				// Writes the per-pixel number of area lights in each pixel's cluster instead of shading.
+				RenderingServer::get_singleton()->viewport_set_debug_draw(tree.get_viewport_rid(), RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS);
+			}
 			Image image = tree.render();
+			if (!image.is_empty() && (_has_flag(p_args, "--gizmos") || _has_flag(p_args, "--gizmos-selected"))) {
+				// Editor gizmos (outlines, handles, icons) as an overlay; --gizmos-selected draws every light as selected.
+				if (GizmoOverlay::draw(image, tree, _has_flag(p_args, "--gizmos-selected")) < 0) {
+					fprintf(stderr, "godot-area %s: the gizmo overlay failed (see above)\n", cmd);
+				}
+			}
 			if (image.is_empty()) {
 				fprintf(stderr, "godot-area %s: the renderer returned no image\n", cmd);
 				code = 1;
