@@ -157,8 +157,26 @@ public:
 	// How an area light is shaded. Values equal AreaLight3D::AreaShadingMethod (saved in scene
 	// files as integers); new methods are appended, never inserted.
 	enum LightAreaShadingMethod {
-		LIGHT_AREA_SHADING_LTC, // Linearly transformed cosines (Heitz et al. 2016).
+		LIGHT_AREA_SHADING_LTC, // Linearly transformed cosines (Heitz et al. 2016), fitted LUT.
+		LIGHT_AREA_SHADING_LTC_POLYNOMIAL, // LTC with the matrix from a fitted polynomial instead of the LUT.
+		LIGHT_AREA_SHADING_MRP, // Most representative point (Drobot 2014; thesis section 5.3).
+		LIGHT_AREA_SHADING_STOCHASTIC, // Monte Carlo, area_stochastic_samples per light (thesis section 5.2).
+		LIGHT_AREA_SHADING_MAX, // Keep last: the number of methods (append new ones above).
 	};
+	// Bounds of light_area_set_stochastic_samples() (samples per strategy and shading point).
+	static constexpr int LIGHT_AREA_STOCHASTIC_SAMPLES_MIN = 1;
+	static constexpr int LIGHT_AREA_STOCHASTIC_SAMPLES_MAX = 256;
+	static constexpr int LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT = 8;
+	// How an area light's shadows are drawn (values equal AreaLight3D::AreaShadowMode; appended only).
+	enum LightAreaShadowMode {
+		LIGHT_AREA_SHADOW_FIXED, // area_shadow_grid^2 shadow maps over the light, averaged PCF (thesis 6.1).
+		LIGHT_AREA_SHADOW_PCSS_BASELINE, // One map from the light centre with PCSS (upstream Godot's approach).
+		LIGHT_AREA_SHADOW_MAX,
+	};
+	// Bounds of light_area_set_shadow_grid() (grid x grid sample maps).
+	static constexpr int LIGHT_AREA_SHADOW_GRID_MIN = 2;
+	static constexpr int LIGHT_AREA_SHADOW_GRID_MAX = 9;
+	static constexpr int LIGHT_AREA_SHADOW_GRID_DEFAULT = 3;
 
 	/* ENVIRONMENT API enums */
 
@@ -302,6 +320,13 @@ public:
 	virtual void light_area_set_normalize_energy(RID p_light, bool p_enable) = 0;
 	// Sets the shading method of an area light.
 	virtual void light_area_set_shading_method(RID p_light, LightAreaShadingMethod p_method) = 0;
+	// Sets the sample count of LIGHT_AREA_SHADING_STOCHASTIC (per strategy and shading point; 1..256,
+	// other values are rejected with an error).
+	virtual void light_area_set_stochastic_samples(RID p_light, int p_samples) = 0;
+	// Sets how an area light's shadows are drawn (when light_set_shadow is on).
+	virtual void light_area_set_shadow_mode(RID p_light, LightAreaShadowMode p_mode) = 0;
+	// Sets the sample grid of LIGHT_AREA_SHADOW_FIXED: p_grid x p_grid shadow maps (2..9; others rejected).
+	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
 	// Returns the light type (LIGHT_DIRECTIONAL for an invalid RID, with an error).
 	virtual LightType light_get_type(RID p_light) const = 0;
 	// Returns one scalar parameter (0 for an invalid RID or index).
@@ -315,6 +340,12 @@ public:
 	virtual bool light_area_get_normalize_energy(RID p_light) const = 0;
 	// Returns the shading method of an area light.
 	virtual LightAreaShadingMethod light_area_get_shading_method(RID p_light) const = 0;
+	// Returns the sample count of the stochastic method.
+	virtual int light_area_get_stochastic_samples(RID p_light) const = 0;
+	// Returns the shadow mode of an area light.
+	virtual LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
+	// Returns the shadow sample grid of an area light.
+	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
 
 	/* CAMERA API */
 

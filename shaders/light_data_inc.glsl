@@ -37,6 +37,9 @@ struct LightData { // Byte offsets (std430).
 
 // Must match RS::LightAreaShadingMethod (servers/rendering_server.h).
 #define AREA_SHADING_LTC 0u
+#define AREA_SHADING_LTC_POLYNOMIAL 1u
+#define AREA_SHADING_MRP 2u
+#define AREA_SHADING_STOCHASTIC 3u
 
 struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	vec3 position; // 0: view space centre of the rectangle, metres.
@@ -46,7 +49,7 @@ struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	vec3 half_axis_y; // 32: view space, local +Y scaled by area_size.y / 2 (metres).
 	float specular_amount; // 44: "light_specular" multiplier of the specular lobe.
 	vec3 normal; // 48: view space unit emission direction (the light's local -Z); only this side emits.
-	uint shading_method; // 60: AREA_SHADING_*.
+	uint shading_method; // 60: bits 0-7 AREA_SHADING_*, bits 8-23 stochastic samples (area_light_get_method()).
 	vec3 color; // 64: emitted radiance L_e = linear colour * energy * pi / A_n (A_n = a b when energy is normalised, else 1); 0 for a zero-size light.
 	uint cull_mask; // 76: "light_cull_mask" render layers.
 };

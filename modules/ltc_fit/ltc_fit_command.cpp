@@ -7,6 +7,7 @@
 
 #include "core/error/error_macros.h"
 #include "modules/ltc_fit/ltc_fitter.h"
+#include "modules/ltc_fit/ltc_polynomial.h"
 #include "modules/ltc_fit/ltc_table_io.h"
 
 #include <algorithm>
@@ -26,6 +27,52 @@ namespace {
 
 void _print_usage() {
 	fprintf(stderr, "Usage: godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N]\n");
+	fprintf(stderr, "       godot-area ltc-fit --polynomial [-o PATH] [--glsl PATH]\n");
+}
+
+// `ltc-fit --polynomial`: fits the degree-5 polynomials to the built-in LTC_LUT_ENGINE_GGX (thesis
+// section 5.4.3) and writes the C++ include (-o) and the GLSL include (--glsl).
+int _polynomial_command(const std::vector<String> &p_args, size_t p_first) {
+	String out_path;
+	String glsl_path;
+	String command = "godot-area ltc-fit --polynomial";
+	for (size_t i = p_first; i < p_args.size(); i++) {
+		const String &a = p_args[i];
+		if (a == "--polynomial") {
+			continue;
+		}
+		if (a != "-o" && a != "--glsl") {
+			ERR_PRINT(vformat("ltc-fit --polynomial: unknown or unsupported argument '%s' (only -o and --glsl).", a.c_str()));
+			_print_usage();
+			return 2;
+		}
+		if (i + 1 >= p_args.size() || p_args[i + 1].empty()) {
+			ERR_PRINT(vformat("ltc-fit --polynomial: %s needs a non-empty path.", a.c_str()));
+			return 2;
+		}
+		(a == "-o" ? out_path : glsl_path) = p_args[++i];
+		command += " " + a + " " + p_args[i];
+	}
+	if (out_path.empty()) {
+		out_path = String(GODOT_AREA_ROOT) + "/" + LTCPolynomial::DEFAULT_INC_PATH;
+	}
+	if (glsl_path.empty()) {
+		glsl_path = String(GODOT_AREA_ROOT) + "/" + LTCPolynomial::DEFAULT_GLSL_PATH;
+	}
+	LTCPolynomial::Fit fit;
+	if (!LTCPolynomial::fit_table(LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX), LTCTableIO::get_builtin_size(), fit)) {
+		ERR_PRINT("ltc-fit --polynomial: the fit failed.");
+		return 1;
+	}
+	for (int k = 0; k < LTCPolynomial::COMPONENTS; k++) {
+		printf("%-2s RMSE %.6f (%.6f up to theta_v 80 deg) max |error| %.6f at (ri %d, ti %d)\n", LTCPolynomial::COMPONENT_NAMES[k], fit.rmse[k], fit.rmse_80[k], fit.max_error[k],
+				fit.max_error_r[k], fit.max_error_t[k]);
+	}
+	if (!LTCPolynomial::save_text(out_path, LTCPolynomial::format_inc(fit, command)) || !LTCPolynomial::save_text(glsl_path, LTCPolynomial::format_glsl(fit, command))) {
+		return 1;
+	}
+	printf("Wrote %s and %s\n", out_path.c_str(), glsl_path.c_str());
+	return 0;
 }
 
 bool _parse_int(const String &p_text, int *r_value) {
@@ -154,6 +201,11 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 	size_t i = 0;
 	if (!p_args.empty() && p_args[0] == "ltc-fit") {
 		i = 1;
+	}
+	for (size_t j = i; j < p_args.size(); j++) {
+		if (p_args[j] == "--polynomial") {
+			return _polynomial_command(p_args, i);
+		}
 	}
 	String command = "godot-area ltc-fit";
 	for (; i < p_args.size(); i++) {

@@ -15,6 +15,13 @@
 /* t0..t1 (inclusive), starting each chain from the built-in table, and   */
 /* prints them with their difference to the built-in table; it writes a   */
 /* file only when -o is given explicitly.                                 */
+/*                                                                        */
+/*   godot-area ltc-fit --polynomial [-o PATH] [--glsl PATH]              */
+/*                                                                        */
+/* fits degree-5 polynomials to the built-in engine table (thesis 5.4.3,  */
+/* modules/ltc_fit/ltc_polynomial.h) and writes servers/rendering/        */
+/* renderer_rd/ltc_poly_data.inc (-o) and shaders/ltc_poly_coeffs_inc.glsl */
+/* (--glsl).                                                              */
 
 #pragma once
 

@@ -599,10 +599,36 @@ void AreaLight3D::set_area_normalize_energy(bool p_enable) {
 }
 
 void AreaLight3D::set_area_shading_method(AreaShadingMethod p_method) {
-	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method > AREA_SHADING_LTC, vformat("AreaLight3D \"%s\": area_shading_method must be 0 (LTC); got %d. The old value is kept.", get_name().c_str(), (int)p_method));
+	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method >= (int)RS::LIGHT_AREA_SHADING_MAX, vformat("AreaLight3D \"%s\": area_shading_method must be 0..%d (LTC, LTC Polynomial, MRP, Stochastic); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADING_MAX - 1, (int)p_method));
 	area_shading_method = p_method;
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_shading_method(get_light(), RS::LightAreaShadingMethod(p_method));
+	}
+}
+
+void AreaLight3D::set_area_stochastic_samples(int p_samples) {
+	ERR_FAIL_COND_MSG(p_samples < RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN || p_samples > RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MAX,
+			vformat("AreaLight3D \"%s\": area_stochastic_samples must be %d..%d; got %d. The old value is kept.", get_name().c_str(), RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MAX, p_samples));
+	area_stochastic_samples = p_samples;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_stochastic_samples(get_light(), area_stochastic_samples);
+	}
+}
+
+void AreaLight3D::set_area_shadow_mode(AreaShadowMode p_mode) {
+	ERR_FAIL_COND_MSG((int)p_mode < 0 || (int)p_mode >= (int)RS::LIGHT_AREA_SHADOW_MAX, vformat("AreaLight3D \"%s\": area_shadow_mode must be 0..%d (Fixed, PCSS Baseline); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADOW_MAX - 1, (int)p_mode));
+	area_shadow_mode = p_mode;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_shadow_mode(get_light(), RS::LightAreaShadowMode(p_mode));
+	}
+}
+
+void AreaLight3D::set_area_shadow_grid(int p_grid) {
+	ERR_FAIL_COND_MSG(p_grid < RS::LIGHT_AREA_SHADOW_GRID_MIN || p_grid > RS::LIGHT_AREA_SHADOW_GRID_MAX,
+			vformat("AreaLight3D \"%s\": area_shadow_grid must be %d..%d; got %d. The old value is kept.", get_name().c_str(), RS::LIGHT_AREA_SHADOW_GRID_MIN, RS::LIGHT_AREA_SHADOW_GRID_MAX, p_grid));
+	area_shadow_grid = p_grid;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_shadow_grid(get_light(), area_shadow_grid);
 	}
 }
 
@@ -620,16 +646,30 @@ void AreaLight3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("is_area_normalizing_energy"), &AreaLight3D::is_area_normalizing_energy);
 	ClassDB::bind_method(D_METHOD("set_area_shading_method", "method"), &AreaLight3D::set_area_shading_method);
 	ClassDB::bind_method(D_METHOD("get_area_shading_method"), &AreaLight3D::get_area_shading_method);
+	ClassDB::bind_method(D_METHOD("set_area_stochastic_samples", "samples"), &AreaLight3D::set_area_stochastic_samples);
+	ClassDB::bind_method(D_METHOD("get_area_stochastic_samples"), &AreaLight3D::get_area_stochastic_samples);
+	ClassDB::bind_method(D_METHOD("set_area_shadow_mode", "mode"), &AreaLight3D::set_area_shadow_mode);
+	ClassDB::bind_method(D_METHOD("get_area_shadow_mode"), &AreaLight3D::get_area_shadow_mode);
+	ClassDB::bind_method(D_METHOD("set_area_shadow_grid", "grid"), &AreaLight3D::set_area_shadow_grid);
+	ClassDB::bind_method(D_METHOD("get_area_shadow_grid"), &AreaLight3D::get_area_shadow_grid);
 
 	ADD_GROUP("Area", "area_");
 	ADD_PROPERTY(PropertyInfo(Variant::VECTOR2, "area_size", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,suffix:m"), "set_area_size", "get_area_size");
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_range", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,exp,suffix:m"), "set_param", "get_param", PARAM_RANGE);
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_attenuation", PROPERTY_HINT_RANGE, "0,10,0.001,or_greater"), "set_param", "get_param", PARAM_ATTENUATION);
 	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "area_normalize_energy"), "set_area_normalize_energy", "is_area_normalizing_energy");
-	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC"), "set_area_shading_method", "get_area_shading_method");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC,LTC Polynomial,MRP,Stochastic"), "set_area_shading_method", "get_area_shading_method");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_stochastic_samples", PROPERTY_HINT_RANGE, "1,256"), "set_area_stochastic_samples", "get_area_stochastic_samples");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_mode", PROPERTY_HINT_ENUM, "Fixed,PCSS Baseline"), "set_area_shadow_mode", "get_area_shadow_mode");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_grid", PROPERTY_HINT_RANGE, "2,9"), "set_area_shadow_grid", "get_area_shadow_grid");
 	ADD_GROUP("", "");
 
 	BIND_ENUM_CONSTANT(AREA_SHADING_LTC);
+	BIND_ENUM_CONSTANT(AREA_SHADING_LTC_POLYNOMIAL);
+	BIND_ENUM_CONSTANT(AREA_SHADING_MRP);
+	BIND_ENUM_CONSTANT(AREA_SHADING_STOCHASTIC);
+	BIND_ENUM_CONSTANT(AREA_SHADOW_FIXED);
+	BIND_ENUM_CONSTANT(AREA_SHADOW_PCSS_BASELINE);
 }
 
 AreaLight3D::AreaLight3D() :
@@ -638,4 +678,7 @@ AreaLight3D::AreaLight3D() :
 	set_area_size(Vector2(1, 1));
 	set_area_normalize_energy(true);
 	set_area_shading_method(AREA_SHADING_LTC);
+	set_area_stochastic_samples(RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT);
+	set_area_shadow_mode(AREA_SHADOW_FIXED);
+	set_area_shadow_grid(RS::LIGHT_AREA_SHADOW_GRID_DEFAULT);
 }

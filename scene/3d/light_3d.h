@@ -227,12 +227,23 @@ class AreaLight3D : public Light3D {
 public:
 	enum AreaShadingMethod {
 		AREA_SHADING_LTC = RS::LIGHT_AREA_SHADING_LTC,
+		AREA_SHADING_LTC_POLYNOMIAL = RS::LIGHT_AREA_SHADING_LTC_POLYNOMIAL,
+		AREA_SHADING_MRP = RS::LIGHT_AREA_SHADING_MRP,
+		AREA_SHADING_STOCHASTIC = RS::LIGHT_AREA_SHADING_STOCHASTIC,
+	};
+	// How shadows are drawn when shadow_enabled is on (values equal RS::LightAreaShadowMode).
+	enum AreaShadowMode {
+		AREA_SHADOW_FIXED = RS::LIGHT_AREA_SHADOW_FIXED,
+		AREA_SHADOW_PCSS_BASELINE = RS::LIGHT_AREA_SHADOW_PCSS_BASELINE,
 	};
 
 private:
 	Vector2 area_size = Vector2(1, 1);
 	bool area_normalize_energy = true;
 	AreaShadingMethod area_shading_method = AREA_SHADING_LTC;
+	int area_stochastic_samples = RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT;
+	AreaShadowMode area_shadow_mode = AREA_SHADOW_FIXED;
+	int area_shadow_grid = RS::LIGHT_AREA_SHADOW_GRID_DEFAULT;
 
 protected:
 	static void _bind_methods();
@@ -245,6 +256,14 @@ public:
 	bool is_area_normalizing_energy() const { return area_normalize_energy; }
 	void set_area_shading_method(AreaShadingMethod p_method);
 	AreaShadingMethod get_area_shading_method() const { return area_shading_method; }
+	// Samples per strategy and shading point of AREA_SHADING_STOCHASTIC (1..256, else rejected).
+	void set_area_stochastic_samples(int p_samples);
+	int get_area_stochastic_samples() const { return area_stochastic_samples; }
+	void set_area_shadow_mode(AreaShadowMode p_mode);
+	AreaShadowMode get_area_shadow_mode() const { return area_shadow_mode; }
+	// AREA_SHADOW_FIXED: area_shadow_grid x area_shadow_grid shadow maps over the light (2..9, else rejected).
+	void set_area_shadow_grid(int p_grid);
+	int get_area_shadow_grid() const { return area_shadow_grid; }
 
 	// Thesis Listing A.1: the rectangle grown by the range r sideways and in front:
 	// AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)) (z from -r to 0).
@@ -259,3 +278,4 @@ VARIANT_ENUM_CAST(DirectionalLight3D::ShadowMode);
 VARIANT_ENUM_CAST(DirectionalLight3D::SkyMode);
 VARIANT_ENUM_CAST(OmniLight3D::ShadowMode);
 VARIANT_ENUM_CAST(AreaLight3D::AreaShadingMethod);
+VARIANT_ENUM_CAST(AreaLight3D::AreaShadowMode);

@@ -211,6 +211,10 @@ void RenderingServerDefault::light_area_set_shading_method(RID p_light, LightAre
 	RSG::light_storage->light_area_set_shading_method(p_light, p_method);
 }
 
+void RenderingServerDefault::light_area_set_stochastic_samples(RID p_light, int p_samples) {
+	RSG::light_storage->light_area_set_stochastic_samples(p_light, p_samples);
+}
+
 RS::LightType RenderingServerDefault::light_get_type(RID p_light) const {
 	return RSG::light_storage->light_get_type(p_light);
 }
@@ -233,6 +237,10 @@ bool RenderingServerDefault::light_area_get_normalize_energy(RID p_light) const 
 
 RS::LightAreaShadingMethod RenderingServerDefault::light_area_get_shading_method(RID p_light) const {
 	return RSG::light_storage->light_area_get_shading_method(p_light);
+}
+
+int RenderingServerDefault::light_area_get_stochastic_samples(RID p_light) const {
+	return RSG::light_storage->light_area_get_stochastic_samples(p_light);
 }
 
 /* CAMERA API */
@@ -458,4 +466,22 @@ std::vector<std::pair<String, double>> RenderingServerDefault::get_frame_profile
 
 void RenderingServerDefault::set_debug_force_all_lights(bool p_enable) {
 	RSG::scene_render->set_debug_force_all_lights(p_enable);
+}
+
+/* Area light shadows */
+
+void RenderingServerDefault::light_area_set_shadow_mode(RID p_light, LightAreaShadowMode p_mode) {
+	RSG::light_storage->light_area_set_shadow_mode(p_light, p_mode);
+}
+
+void RenderingServerDefault::light_area_set_shadow_grid(RID p_light, int p_grid) {
+	RSG::light_storage->light_area_set_shadow_grid(p_light, p_grid);
+}
+
+RS::LightAreaShadowMode RenderingServerDefault::light_area_get_shadow_mode(RID p_light) const {
+	return RSG::light_storage->light_area_get_shadow_mode(p_light);
+}
+
+int RenderingServerDefault::light_area_get_shadow_grid(RID p_light) const {
+	return RSG::light_storage->light_area_get_shadow_grid(p_light);
 }

@@ -6,8 +6,9 @@
 /* RenderForwardClustered::SceneShaderVariant):                           */
 /*   0 "" : colour pass, writes linear HDR radiance to location 0;        */
 /*   1 MODE_DEPTH : depth pre-pass, no colour output;                     */
-/*   2 USE_AREA_LIGHTS : colour pass with area lights (LTC), used only    */
-/*     when the view has area lights.                                     */
+/*   2 USE_AREA_LIGHTS : colour pass with area lights, used only when the */
+/*     view has area lights; compiled per version with the AREA_METHOD_*  */
+/*     defines of the methods in use (area_light_inc.glsl dispatches).    */
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -65,7 +66,8 @@ void main() {
 #include "../brdf_inc.glsl"
 #include "../scene_forward_lights_inc.glsl"
 #ifdef USE_AREA_LIGHTS
-#include "../area_light_ltc_inc.glsl"
+#include "../area_light_inc.glsl"
+#include "../area_light_shadow_inc.glsl"
 #endif
 
 layout(location = 0) in vec3 vertex_interp;
@@ -160,7 +162,11 @@ void main() {
 			if ((area_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
 				continue;
 			}
-			light_process_area(area_lights.data[i], vertex, N, V, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+			vec3 area_diffuse = vec3(0.0), area_specular = vec3(0.0);
+			light_process_area_method(area_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, area_diffuse, area_specular);
+			float area_shadow = light_process_area_shadow(i, vertex, N); // Area soft shadows (area_light_shadow_inc.glsl).
+			diffuse_light += area_diffuse * area_shadow;
+			specular_light += area_specular * area_shadow;
 		}
 #endif
 	} else {
@@ -208,7 +214,11 @@ void main() {
 				if (i >= scene_data.area_light_count || (area_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
 					continue;
 				}
-				light_process_area(area_lights.data[i], vertex, N, V, roughness, f0, f90, specular_enabled, diffuse_light, specular_light);
+				vec3 area_diffuse = vec3(0.0), area_specular = vec3(0.0);
+				light_process_area_method(area_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, area_diffuse, area_specular);
+				float area_shadow = light_process_area_shadow(i, vertex, N); // Area soft shadows (area_light_shadow_inc.glsl).
+				diffuse_light += area_diffuse * area_shadow;
+				specular_light += area_specular * area_shadow;
 			}
 		}
 #endif

@@ -80,6 +80,11 @@ public:
 	virtual void light_area_set_normalize_energy(RID p_light, bool p_enable) = 0;
 	// Sets an area light's shading method.
 	virtual void light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) = 0;
+	// Sets an area light's stochastic sample count (RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN..MAX).
+	virtual void light_area_set_stochastic_samples(RID p_light, int p_samples) = 0;
+	// Area-light shadows: mode and FIXED sample grid (RS::LIGHT_AREA_SHADOW_GRID_MIN..MAX).
+	virtual void light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) = 0;
+	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
 
 	// Returns the type (LIGHT_DIRECTIONAL with an error for an invalid RID).
 	virtual RS::LightType light_get_type(RID p_light) const = 0;
@@ -121,6 +126,10 @@ public:
 	virtual bool light_area_get_normalize_energy(RID p_light) const = 0;
 	// Returns an area light's shading method.
 	virtual RS::LightAreaShadingMethod light_area_get_shading_method(RID p_light) const = 0;
+	// Returns an area light's stochastic sample count.
+	virtual int light_area_get_stochastic_samples(RID p_light) const = 0;
+	virtual RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
+	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
 	// Returns the local-space bound (see compute_light_aabb).
 	virtual AABB light_get_aabb(RID p_light) const = 0;
 	// Returns a counter bumped whenever culling or shadows are affected (cached shadows compare it).

@@ -179,8 +179,16 @@ void LightStorage::light_area_set_normalize_energy(RID p_light, bool p_enable) {
 void LightStorage::light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) {
 	GET_LIGHT_OR_FAIL(light);
 	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shading_method: the light is not an area light.");
-	ERR_FAIL_INDEX_MSG((int)p_method, (int)RS::LIGHT_AREA_SHADING_LTC + 1, "Area shading method is not a LightAreaShadingMethod value.");
+	ERR_FAIL_INDEX_MSG((int)p_method, (int)RS::LIGHT_AREA_SHADING_MAX, vformat("light_area_set_shading_method: %d is not a LightAreaShadingMethod value (0..%d).", (int)p_method, (int)RS::LIGHT_AREA_SHADING_MAX - 1));
 	light->area_shading_method = p_method;
+}
+
+void LightStorage::light_area_set_stochastic_samples(RID p_light, int p_samples) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_stochastic_samples: the light is not an area light.");
+	ERR_FAIL_COND_MSG(p_samples < RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN || p_samples > RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MAX,
+			vformat("light_area_set_stochastic_samples: %d samples is out of range (%d..%d).", p_samples, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MAX));
+	light->area_stochastic_samples = p_samples;
 }
 
 RS::LightType LightStorage::light_get_type(RID p_light) const {
@@ -284,6 +292,11 @@ RS::LightAreaShadingMethod LightStorage::light_area_get_shading_method(RID p_lig
 	return light->area_shading_method;
 }
 
+int LightStorage::light_area_get_stochastic_samples(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT);
+	return light->area_stochastic_samples;
+}
+
 AABB LightStorage::light_get_aabb(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, AABB());
 	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE], light->area_size);
@@ -292,4 +305,39 @@ AABB LightStorage::light_get_aabb(RID p_light) const {
 uint64_t LightStorage::light_get_version(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, 0);
 	return light->version;
+}
+
+/* Area light shadows */
+
+void LightStorage::light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shadow_mode: the light is not an area light.");
+	ERR_FAIL_INDEX_MSG((int)p_mode, (int)RS::LIGHT_AREA_SHADOW_MAX, vformat("light_area_set_shadow_mode: %d is not a LightAreaShadowMode value (0..%d).", (int)p_mode, (int)RS::LIGHT_AREA_SHADOW_MAX - 1));
+	if (light->area_shadow_mode == p_mode) {
+		return;
+	}
+	light->area_shadow_mode = p_mode;
+	light->version++; // Cached shadow maps change.
+}
+
+void LightStorage::light_area_set_shadow_grid(RID p_light, int p_grid) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shadow_grid: the light is not an area light.");
+	ERR_FAIL_COND_MSG(p_grid < RS::LIGHT_AREA_SHADOW_GRID_MIN || p_grid > RS::LIGHT_AREA_SHADOW_GRID_MAX,
+			vformat("light_area_set_shadow_grid: area_shadow_grid %d is out of range (%d..%d); the old value is kept.", p_grid, RS::LIGHT_AREA_SHADOW_GRID_MIN, RS::LIGHT_AREA_SHADOW_GRID_MAX));
+	if (light->area_shadow_grid == p_grid) {
+		return;
+	}
+	light->area_shadow_grid = p_grid;
+	light->version++;
+}
+
+RS::LightAreaShadowMode LightStorage::light_area_get_shadow_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADOW_FIXED);
+	return light->area_shadow_mode;
+}
+
+int LightStorage::light_area_get_shadow_grid(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADOW_GRID_DEFAULT);
+	return light->area_shadow_grid;
 }

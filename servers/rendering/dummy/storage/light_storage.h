@@ -33,6 +33,9 @@ class LightStorage : public RendererLightStorage {
 		Vector2 area_size = RendererLightStorage::get_default_area_size();
 		bool area_normalize_energy = true;
 		RS::LightAreaShadingMethod area_shading_method = RS::LIGHT_AREA_SHADING_LTC;
+		int area_stochastic_samples = RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT;
+		RS::LightAreaShadowMode area_shadow_mode = RS::LIGHT_AREA_SHADOW_FIXED;
+		int area_shadow_grid = RS::LIGHT_AREA_SHADOW_GRID_DEFAULT;
 		uint64_t version = 0;
 	};
 
@@ -59,6 +62,9 @@ public:
 	void light_area_set_size(RID p_light, const Vector2 &p_size) override;
 	void light_area_set_normalize_energy(RID p_light, bool p_enable) override;
 	void light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) override;
+	void light_area_set_stochastic_samples(RID p_light, int p_samples) override;
+	void light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) override;
+	void light_area_set_shadow_grid(RID p_light, int p_grid) override;
 
 	RS::LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, RS::LightParam p_param) const override;
@@ -80,6 +86,9 @@ public:
 	Vector2 light_area_get_size(RID p_light) const override;
 	bool light_area_get_normalize_energy(RID p_light) const override;
 	RS::LightAreaShadingMethod light_area_get_shading_method(RID p_light) const override;
+	int light_area_get_stochastic_samples(RID p_light) const override;
+	RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const override;
+	int light_area_get_shadow_grid(RID p_light) const override;
 	AABB light_get_aabb(RID p_light) const override;
 	uint64_t light_get_version(RID p_light) const override;
 };

@@ -60,7 +60,8 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 		return true;
 	}
 	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
-	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants), false,
+	const String general_defines = area_ltc_precision_fix ? "" : "#define AREA_LTC_NO_PRECISION_FIX\n";
+	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants, general_defines), false,
 			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
 	// The area-light variant is compiled on first use (render_scene), never for scenes without area lights.
 	for (int v = 0; v < SCENE_SHADER_COLOR_AREA; v++) {
@@ -75,6 +76,7 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	if (!material_storage->get_sampler().is_valid()) {
 		ERR_FAIL_COND_V_MSG(!material_storage->initialize_gpu(), false, "RenderForwardClustered: material storage GPU setup failed.");
 	}
+	ERR_FAIL_COND_V_MSG(!area_shadows.initialize(light_storage, mesh_storage, light_storage->get_max_lights()), false, "RenderForwardClustered: area shadows failed to initialize.");
 	scene_ubo = rd->uniform_buffer_create(sizeof(SceneDataUBO));
 	rd->set_resource_name(scene_ubo, "RenderForwardClustered scene data");
 	initialized = true;
@@ -101,9 +103,10 @@ void RenderForwardClustered::finalize() {
 	scene_set_color = RID();
 	scene_set_depth = RID();
 	scene_set_cluster_buffer = RID();
-	scene_set_color_area = RID();
-	scene_set_color_area_cluster_buffer = RID();
+	area_versions.clear(); // Their shaders are freed by scene_shader.clear(), their sets with scene_ubo.
+	compiled_area_method_mask = 0;
 	ltc_lut.finalize();
+	area_shadows.finalize();
 	cluster_builder.finalize();
 	scene_shader.clear();
 	initialized = false;
@@ -183,8 +186,48 @@ std::vector<float> RenderForwardClustered::render_target_get_data(RID p_render_t
 
 /* Pipelines and sets */
 
-RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format) {
-	uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_format) << 16);
+String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) {
+	static const char *names[RS::LIGHT_AREA_SHADING_MAX] = { "AREA_METHOD_LTC", "AREA_METHOD_LTC_POLYNOMIAL", "AREA_METHOD_MRP", "AREA_METHOD_STOCHASTIC" };
+	String defines;
+	for (int m = 0; m < RS::LIGHT_AREA_SHADING_MAX; m++) {
+		if ((p_area_methods >> m) & 1u) {
+			defines += String("#define ") + names[m] + "\n";
+		}
+	}
+	return defines;
+}
+
+bool RenderForwardClustered::is_scene_shader_variant_compiled(SceneShaderVariant p_variant) const {
+	if (p_variant == SCENE_SHADER_COLOR_AREA) {
+		return compiled_area_method_mask != 0;
+	}
+	return scene_shader.is_variant_created(p_variant);
+}
+
+int RenderForwardClustered::get_area_shader_version_count() const {
+	int count = 0;
+	for (const auto &kv : area_versions) {
+		count += kv.second.scene_set.is_valid() ? 1 : 0;
+	}
+	return count;
+}
+
+RID RenderForwardClustered::_get_area_shader(uint32_t p_area_methods) {
+	ERR_FAIL_COND_V_MSG(p_area_methods == 0 || p_area_methods >= (1u << RS::LIGHT_AREA_SHADING_MAX), RID(),
+			vformat("RenderForwardClustered: invalid area shading method mask 0x%x.", p_area_methods));
+	AreaVersion &av = area_versions[p_area_methods];
+	if (!av.version.is_valid()) {
+		av.version = scene_shader.version_create(get_area_method_defines(p_area_methods));
+	}
+	RID shader = scene_shader.version_get_shader(av.version, SCENE_SHADER_COLOR_AREA);
+	if (shader.is_valid()) {
+		compiled_area_method_mask |= p_area_methods;
+	}
+	return shader;
+}
+
+RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods) {
+	uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_format) << 16) | (uint64_t(p_area_methods) << 56);
 	auto it = pipelines.find(key);
 	if (it != pipelines.end()) {
 		return it->second;
@@ -206,25 +249,28 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
 	}
 	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(p_variant == SCENE_SHADER_DEPTH ? 0 : 1);
-	RID pipeline = rd->render_pipeline_create(scene_shader.version_get_shader(p_variant), p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
+	RID shader = p_variant == SCENE_SHADER_COLOR_AREA ? _get_area_shader(p_area_methods) : scene_shader.version_get_shader(p_variant);
+	ERR_FAIL_COND_V_MSG(!shader.is_valid(), RID(), "RenderForwardClustered: the scene shader for this pipeline failed to compile: " + scene_shader.get_last_error());
+	RID pipeline = rd->render_pipeline_create(shader, p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
 	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), RID(), "RenderForwardClustered: render pipeline creation failed.");
 	pipelines[key] = pipeline;
 	return pipeline;
 }
 
-bool RenderForwardClustered::_ensure_scene_sets(bool p_area) {
+bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	RID cluster_buffer = cluster_builder.get_cluster_buffer();
-	if (p_area) {
+	if (p_area_methods != 0) {
 		if (!ltc_lut.is_initialized()) {
 			ERR_FAIL_COND_V_MSG(!ltc_lut.initialize(), false, "RenderForwardClustered: the LTC lookup table could not be created.");
 		}
-		bool area_ok = scene_set_color_area.is_valid() && rd->uniform_set_is_valid(scene_set_color_area) && scene_set_color_area_cluster_buffer == cluster_buffer;
+		RID shader = _get_area_shader(p_area_methods);
+		AreaVersion &av = area_versions[p_area_methods];
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == area_shadows.get_atlas_texture();
 		if (!area_ok) {
-			if (scene_set_color_area.is_valid() && rd->uniform_set_is_valid(scene_set_color_area)) {
-				rd->free(scene_set_color_area);
+			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
+				rd->free(av.scene_set);
 			}
-			RID shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR_AREA);
 			ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "RenderForwardClustered: the area-light scene shader variant failed to compile: " + scene_shader.get_last_error());
 			std::vector<RD::Uniform> u;
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, scene_ubo));
@@ -235,10 +281,14 @@ bool RenderForwardClustered::_ensure_scene_sets(bool p_area) {
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, light_storage->get_area_light_buffer()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 6, ltc_lut.get_texture()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 7, ltc_lut.get_sampler()));
-			scene_set_color_area = rd->uniform_set_create(u, shader, 0);
-			scene_set_color_area_cluster_buffer = cluster_buffer;
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 12, area_shadows.get_data_buffer()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 13, area_shadows.get_atlas_texture()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 14, area_shadows.get_sampler()));
+			av.scene_set = rd->uniform_set_create(u, shader, 0);
+			av.scene_set_cluster_buffer = cluster_buffer;
+			av.scene_set_shadow_atlas = area_shadows.get_atlas_texture();
 		}
-		if (!scene_set_color_area.is_valid()) {
+		if (!av.scene_set.is_valid()) {
 			return false;
 		}
 	}
@@ -281,6 +331,8 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	cluster_builder.begin(clip_from_view, z_far);
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
+	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
+	area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world));
 
 	SceneDataUBO ubo;
 	memset(&ubo, 0, sizeof(ubo));
@@ -320,10 +372,12 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->buffer_update(scene_ubo, 0, sizeof(ubo), &ubo);
 
 	// Area-light variant only when this view has area lights (a scene without them pays nothing).
+	// The shader version holds the code of exactly the shading methods this view's area lights use.
 	const bool use_area = ubo.area_light_count > 0;
+	const uint32_t area_methods = use_area ? light_storage->get_area_shading_method_mask() : 0u;
 	const SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
-	ERR_FAIL_COND_MSG(!_ensure_scene_sets(use_area), "render_scene: scene uniform sets could not be created.");
-	RID color_set = use_area ? scene_set_color_area : scene_set_color;
+	ERR_FAIL_COND_MSG(!_ensure_scene_sets(area_methods), "render_scene: scene uniform sets could not be created.");
+	RID color_set = use_area ? area_versions[area_methods].scene_set : scene_set_color;
 
 	// Draw items (material sets are created/updated here, outside any list).
 	struct DrawItem {
@@ -372,6 +426,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	String prefix = vformat("fc%llu_", (unsigned long long)frame_counter++);
 	rd->capture_timestamp(prefix + "begin");
 
+	// 0. Area shadow maps (only the dirty ones; none in a static scene after the first frame).
+	area_shadows.render_shadows(p_data);
+
 	// 1. Depth pre-pass.
 	RD::FramebufferFormatID depth_format = rd->framebuffer_get_format(rt->fb_depth);
 	RD::DrawListID list = rd->draw_list_begin(rt->fb_depth, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f);
@@ -399,7 +456,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RD::FramebufferFormatID color_format = rd->framebuffer_get_format(rt->fb_color);
 	list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, { clear_color }, 1.0f);
 	for (const DrawItem &item : items) {
-		rd->draw_list_bind_render_pipeline(list, _get_pipeline(color_variant, item.cull, color_format));
+		rd->draw_list_bind_render_pipeline(list, _get_pipeline(color_variant, item.cull, color_format, area_methods));
 		rd->draw_list_bind_uniform_set(list, color_set, 0);
 		rd->draw_list_bind_uniform_set(list, item.material_set, 1);
 		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);

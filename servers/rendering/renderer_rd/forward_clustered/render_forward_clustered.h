@@ -15,9 +15,13 @@
 /* "cluster_build", "opaque" in milliseconds.                             */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
-/* (USE_AREA_LIGHTS, LTC shading) only when the view has area lights; it  */
-/* is compiled on first use, so scenes without area lights never compile */
-/* or run area-light code. The LTC LUT texture is uploaded on first use.  */
+/* (USE_AREA_LIGHTS) only when the view has area lights, from a ShaderRD  */
+/* version per combination of the shading methods the view's area lights */
+/* use (AREA_METHOD_LTC, _LTC_POLYNOMIAL, _MRP, _STOCHASTIC defines; the  */
+/* set comes from LightStorage::get_area_shading_method_mask() each      */
+/* frame). Each version is compiled on first use, so scenes without area */
+/* lights compile no area code and a method nobody uses is never         */
+/* compiled. The LTC LUT texture is uploaded on the first area frame.     */
 /*                                                                        */
 /* Debug view: RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS / _SPOT_LIGHTS */
 /* (and set_debug_cluster_element_type() for area lights until the RS     */
@@ -30,6 +34,7 @@
 #pragma once
 
 #include "core/templates/rid_owner.h"
+#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
@@ -125,24 +130,36 @@ private:
 	ShaderRD scene_shader;
 	ClusterBuilderRD cluster_builder;
 	LTCLutRD ltc_lut; // Uploaded on the first frame with area lights.
+	AreaShadowRendererRD area_shadows; // Area soft shadows: atlas, depth passes, bindings 12-14 of the area variant.
 	RID_Owner<RenderTarget> render_target_owner{ "RenderForwardClustered::RenderTarget" };
 
 	RID scene_ubo;
 	RID scene_set_color; // Set 0 of the colour variant (invalid after the cluster buffer changes).
 	RID scene_set_depth; // Set 0 of the depth variant.
 	RID scene_set_cluster_buffer; // Cluster buffer scene_set_color was made with.
-	RID scene_set_color_area; // Set 0 of the area-light colour variant.
-	RID scene_set_color_area_cluster_buffer;
-	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16.
+	// One scene shader version per set of area shading methods (key: bit m = RS::LightAreaShadingMethod m).
+	struct AreaVersion {
+		RID version; // ShaderRD version with the AREA_METHOD_* defines.
+		RID scene_set; // Set 0 of its SCENE_SHADER_COLOR_AREA variant.
+		RID scene_set_cluster_buffer; // Cluster buffer scene_set was made with.
+		RID scene_set_shadow_atlas; // Area shadow atlas texture scene_set was made with.
+	};
+	std::map<uint32_t, AreaVersion> area_versions;
+	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
+	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16 | area method mask << 56.
 
 	bool force_all_lights = false;
+	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
 	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
 	uint64_t frame_counter = 0;
 
-	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format);
-	bool _ensure_scene_sets(bool p_area);
+	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
+	// p_area_methods: 0 = no area lights, else the method mask of the view's area lights.
+	bool _ensure_scene_sets(uint32_t p_area_methods);
+	// The SCENE_SHADER_COLOR_AREA shader of the version for p_area_methods (created and compiled on first use).
+	RID _get_area_shader(uint32_t p_area_methods);
 	void _free_render_target(RenderTarget *p_rt);
 	void _read_profile(const String &p_prefix);
 
@@ -165,12 +182,28 @@ public:
 	std::vector<std::pair<String, double>> get_last_frame_profile() const override { return last_profile; }
 	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
 	bool is_debug_force_all_lights() const { return force_all_lights; }
+	// Test/debug: off compiles the scene shader with AREA_LTC_NO_PRECISION_FIX (Heitz's original acos
+	// edge integral without the thesis 5.4.4 split, area_light_ltc_inc.glsl). Call before initialize().
+	void set_area_ltc_precision_fix(bool p_enable) { area_ltc_precision_fix = p_enable; }
 	// Debug view: output the per-pixel cluster element count of p_type (a ClusterBuilderRD::ElementType)
 	// instead of shading; -1 turns it off. Overrides RenderSceneData::debug_draw.
 	void set_debug_cluster_element_type(int p_type) { debug_cluster_type = p_type; }
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }
-	bool is_scene_shader_variant_compiled(SceneShaderVariant p_variant) const { return scene_shader.is_variant_created(p_variant); }
+	// SCENE_SHADER_COLOR_AREA: true once any area-method version has compiled it.
+	bool is_scene_shader_variant_compiled(SceneShaderVariant p_variant) const;
+	// Bit m (RS::LightAreaShadingMethod m) is set when a compiled area shader version contains method m's code.
+	uint32_t get_compiled_area_method_mask() const { return compiled_area_method_mask; }
+	bool is_area_method_compiled(RS::LightAreaShadingMethod p_method) const { return (compiled_area_method_mask >> uint32_t(p_method)) & 1u; }
+	// Number of area shader versions (method combinations) compiled so far.
+	int get_area_shader_version_count() const;
+	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD.
+	static String get_area_method_defines(uint32_t p_area_methods);
+
+	// Area soft shadows (atlas, maps, per-frame draws; one atlas per renderer for now).
+	AreaShadowRendererRD &get_area_shadow_renderer() { return area_shadows; }
+	// Area shadow atlas size in pixels and tiles per side (RS area_shadow_atlas_set_size). False on bad values.
+	bool area_shadow_atlas_set_size(int p_size, int p_subdivision) { return p_size > 0 && p_subdivision > 0 && area_shadows.set_atlas_size(uint32_t(p_size), uint32_t(p_subdivision)); }
 
 	// The cluster builder of the last frame (tests read its buffer and counts).
 	ClusterBuilderRD *get_cluster_builder() { return &cluster_builder; }

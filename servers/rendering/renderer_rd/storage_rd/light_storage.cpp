@@ -165,7 +165,7 @@ bool LightStorage::fill_area_light_data(RID p_light, const Transform3D &p_world_
 	r_data.inv_radius = 1.0f / range;
 	r_data.attenuation = light->param[RS::LIGHT_PARAM_ATTENUATION];
 	r_data.specular_amount = light->param[RS::LIGHT_PARAM_SPECULAR];
-	r_data.shading_method = uint32_t(light->area_shading_method);
+	r_data.shading_method = pack_area_shading_method(light->area_shading_method, light->area_stochastic_samples);
 	r_data.color[0] = linear.r * radiance;
 	r_data.color[1] = linear.g * radiance;
 	r_data.color[2] = linear.b * radiance;
@@ -258,8 +258,12 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 		}
 	}
 	area_data.clear();
+	area_source_indices.clear();
+	area_shading_method_mask = 0;
 	for (const SortedArea &s : areas) {
 		area_data.push_back(s.data);
+		area_source_indices.push_back(s.index);
+		area_shading_method_mask |= 1u << (s.data.shading_method & AREA_METHOD_MASK);
 		if (p_cluster_builder) {
 			const AreaLightData &d = s.data;
 			p_cluster_builder->add_area_light(Vector3(d.position[0], d.position[1], d.position[2]), Vector3(d.half_axis_x[0], d.half_axis_x[1], d.half_axis_x[2]),
@@ -445,8 +449,16 @@ void LightStorage::light_area_set_normalize_energy(RID p_light, bool p_enable) {
 void LightStorage::light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) {
 	GET_LIGHT_OR_FAIL(light);
 	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shading_method: the light is not an area light.");
-	ERR_FAIL_INDEX_MSG((int)p_method, (int)RS::LIGHT_AREA_SHADING_LTC + 1, "light_area_set_shading_method: method is not a LightAreaShadingMethod value.");
+	ERR_FAIL_INDEX_MSG((int)p_method, (int)RS::LIGHT_AREA_SHADING_MAX, vformat("light_area_set_shading_method: %d is not a LightAreaShadingMethod value (0..%d).", (int)p_method, (int)RS::LIGHT_AREA_SHADING_MAX - 1));
 	light->area_shading_method = p_method;
+}
+
+void LightStorage::light_area_set_stochastic_samples(RID p_light, int p_samples) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_stochastic_samples: the light is not an area light.");
+	ERR_FAIL_COND_MSG(p_samples < RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN || p_samples > RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MAX,
+			vformat("light_area_set_stochastic_samples: %d samples is out of range (%d..%d).", p_samples, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MIN, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_MAX));
+	light->area_stochastic_samples = p_samples;
 }
 
 Vector2 LightStorage::light_area_get_size(RID p_light) const {
@@ -462,6 +474,11 @@ bool LightStorage::light_area_get_normalize_energy(RID p_light) const {
 RS::LightAreaShadingMethod LightStorage::light_area_get_shading_method(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADING_LTC);
 	return light->area_shading_method;
+}
+
+int LightStorage::light_area_get_stochastic_samples(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT);
+	return light->area_stochastic_samples;
 }
 
 RS::LightType LightStorage::light_get_type(RID p_light) const {
@@ -565,4 +582,39 @@ AABB LightStorage::light_get_aabb(RID p_light) const {
 uint64_t LightStorage::light_get_version(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, 0);
 	return light->version;
+}
+
+/* Area light shadows */
+
+void LightStorage::light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shadow_mode: the light is not an area light.");
+	ERR_FAIL_INDEX_MSG((int)p_mode, (int)RS::LIGHT_AREA_SHADOW_MAX, vformat("light_area_set_shadow_mode: %d is not a LightAreaShadowMode value (0..%d).", (int)p_mode, (int)RS::LIGHT_AREA_SHADOW_MAX - 1));
+	if (light->area_shadow_mode == p_mode) {
+		return;
+	}
+	light->area_shadow_mode = p_mode;
+	light->version++; // Cached shadow maps change.
+}
+
+void LightStorage::light_area_set_shadow_grid(RID p_light, int p_grid) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shadow_grid: the light is not an area light.");
+	ERR_FAIL_COND_MSG(p_grid < RS::LIGHT_AREA_SHADOW_GRID_MIN || p_grid > RS::LIGHT_AREA_SHADOW_GRID_MAX,
+			vformat("light_area_set_shadow_grid: area_shadow_grid %d is out of range (%d..%d); the old value is kept.", p_grid, RS::LIGHT_AREA_SHADOW_GRID_MIN, RS::LIGHT_AREA_SHADOW_GRID_MAX));
+	if (light->area_shadow_grid == p_grid) {
+		return;
+	}
+	light->area_shadow_grid = p_grid;
+	light->version++;
+}
+
+RS::LightAreaShadowMode LightStorage::light_area_get_shadow_mode(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADOW_FIXED);
+	return light->area_shadow_mode;
+}
+
+int LightStorage::light_area_get_shadow_grid(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADOW_GRID_DEFAULT);
+	return light->area_shadow_grid;
 }

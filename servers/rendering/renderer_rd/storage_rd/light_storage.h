@@ -64,12 +64,20 @@ public:
 		float half_axis_y[3]; // View space local +Y * size.y / 2.
 		float specular_amount; // LIGHT_PARAM_SPECULAR.
 		float normal[3]; // View space unit emission direction (local -Z).
-		uint32_t shading_method; // RS::LightAreaShadingMethod.
+		uint32_t shading_method; // Bits 0-7: RS::LightAreaShadingMethod; bits 8-23: stochastic samples (AREA_METHOD_SAMPLES_SHIFT).
 		float color[3]; // L_e = srgb_to_linear(color) * energy * pi / A_n, negated for negative lights; 0 when size.x * size.y == 0.
 		uint32_t cull_mask; // light_cull_mask.
 	};
 	static_assert(sizeof(AreaLightData) == 80, "AreaLightData must match shaders/light_data_inc.glsl (80 bytes).");
 	static_assert(sizeof(AreaLightData) % 16 == 0, "AreaLightData must stay a multiple of 16 bytes (std430 array stride).");
+
+	// AreaLightData::shading_method packs the method (low 8 bits) and the stochastic sample count, so the
+	// 80-byte layout stays as it is. Must match area_light_get_method()/_samples() in shaders/area_light_inc.glsl.
+	static constexpr uint32_t AREA_METHOD_MASK = 0xFFu;
+	static constexpr uint32_t AREA_METHOD_SAMPLES_SHIFT = 8;
+	static uint32_t pack_area_shading_method(RS::LightAreaShadingMethod p_method, int p_samples) {
+		return (uint32_t(p_method) & AREA_METHOD_MASK) | ((uint32_t(p_samples) & 0xFFFFu) << AREA_METHOD_SAMPLES_SHIFT);
+	}
 
 	// Lights per type uploaded per view (nearest to the camera first); a multiple of 32.
 	static constexpr uint32_t DEFAULT_MAX_LIGHTS = 512;
@@ -98,6 +106,9 @@ private:
 		Vector2 area_size = Vector2(1, 1); // Metres, local X and Y.
 		bool area_normalize_energy = true;
 		RS::LightAreaShadingMethod area_shading_method = RS::LIGHT_AREA_SHADING_LTC;
+		int area_stochastic_samples = RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT;
+		RS::LightAreaShadowMode area_shadow_mode = RS::LIGHT_AREA_SHADOW_FIXED;
+		int area_shadow_grid = RS::LIGHT_AREA_SHADOW_GRID_DEFAULT;
 		uint64_t version = 0;
 	};
 
@@ -110,9 +121,11 @@ private:
 	uint32_t omni_light_count = 0;
 	uint32_t spot_light_count = 0;
 	uint32_t area_light_count = 0;
+	uint32_t area_shading_method_mask = 0; // Bit m set: an uploaded area light uses RS::LightAreaShadingMethod m.
 	std::vector<LightData> omni_data;
 	std::vector<LightData> spot_data;
 	std::vector<AreaLightData> area_data;
+	std::vector<uint32_t> area_source_indices; // GPU area light i came from p_lights[area_source_indices[i]].
 
 	Light *_get_light(RID p_light, const char *p_caller) const;
 
@@ -136,11 +149,16 @@ public:
 	uint32_t get_omni_light_count() const { return omni_light_count; }
 	uint32_t get_spot_light_count() const { return spot_light_count; }
 	uint32_t get_area_light_count() const { return area_light_count; }
+	// Bit m is set when an area light of the last update_light_buffers() uses RS::LightAreaShadingMethod m
+	// (the renderer compiles only these methods). 0 without area lights.
+	uint32_t get_area_shading_method_mask() const { return area_shading_method_mask; }
 	uint32_t get_max_lights() const { return max_lights; }
 	// CPU copies of the last upload (tests).
 	const std::vector<LightData> &get_omni_light_data() const { return omni_data; }
 	const std::vector<LightData> &get_spot_light_data() const { return spot_data; }
 	const std::vector<AreaLightData> &get_area_light_data() const { return area_data; }
+	// For GPU area light i of the last update, its index in the p_lights given (area shadows use it).
+	const std::vector<uint32_t> &get_area_light_source_indices() const { return area_source_indices; }
 
 	// Fills one LightData from an omni/spot light record and its world transform (the unit conversion).
 	bool fill_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, LightData &r_data) const;
@@ -170,6 +188,9 @@ public:
 	void light_area_set_size(RID p_light, const Vector2 &p_size) override;
 	void light_area_set_normalize_energy(RID p_light, bool p_enable) override;
 	void light_area_set_shading_method(RID p_light, RS::LightAreaShadingMethod p_method) override;
+	void light_area_set_stochastic_samples(RID p_light, int p_samples) override;
+	void light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) override;
+	void light_area_set_shadow_grid(RID p_light, int p_grid) override;
 
 	RS::LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, RS::LightParam p_param) const override;
@@ -191,6 +212,9 @@ public:
 	Vector2 light_area_get_size(RID p_light) const override;
 	bool light_area_get_normalize_energy(RID p_light) const override;
 	RS::LightAreaShadingMethod light_area_get_shading_method(RID p_light) const override;
+	int light_area_get_stochastic_samples(RID p_light) const override;
+	RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const override;
+	int light_area_get_shadow_grid(RID p_light) const override;
 	AABB light_get_aabb(RID p_light) const override;
 	uint64_t light_get_version(RID p_light) const override;
 

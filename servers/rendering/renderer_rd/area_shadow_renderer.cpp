@@ -1,0 +1,298 @@
+/**************************************************************************/
+/*  area_shadow_renderer.cpp                                              */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+
+#include "core/error/error_macros.h"
+#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
+#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+
+#include <cmath>
+#include <cstring>
+
+// Near plane of the octant views (m); casters closer than this to a sample point are clipped.
+static constexpr float OCTANT_Z_NEAR = 0.002f;
+
+void AreaShadowRendererRD::get_octant_axes(uint32_t p_quadrant, Vector3 &r_right, Vector3 &r_up, Vector3 &r_forward) {
+	float sx = (p_quadrant & 1u) ? 1.0f : -1.0f;
+	float sy = (p_quadrant & 2u) ? 1.0f : -1.0f;
+	r_forward = Vector3(sx, sy, -1.0f) * 0.57735027f;
+	r_right = Vector3(sy, -sx, 0.0f) * 0.70710678f;
+	r_up = Vector3(sx, sy, 2.0f) * 0.40824829f;
+}
+
+uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid) {
+	uint32_t den = p_grid >= 2 ? p_grid - 1 : 2;
+	uint32_t un = uint32_t(std::lround(p_uv.x * den));
+	uint32_t vn = uint32_t(std::lround(p_uv.y * den));
+	return (p_tile & 0xFFFFu) | ((un & 0xFu) << 16) | ((vn & 0xFu) << 20) | ((den & 0xFFu) << 24);
+}
+
+bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, uint32_t p_max_lights) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "AreaShadowRendererRD::initialize() needs an initialized RenderingDevice.");
+	ERR_FAIL_COND_V_MSG(!p_light_storage || !p_mesh_storage, false, "AreaShadowRendererRD needs the light and mesh storages.");
+	if (initialized) {
+		return true;
+	}
+	light_storage = p_light_storage;
+	mesh_storage = p_mesh_storage;
+	max_lights = std::max(p_max_lights, 1u);
+	data_buffer = rd->storage_buffer_create(max_lights * sizeof(AreaShadowData));
+	rd->set_resource_name(data_buffer, "AreaShadowRendererRD shadow data");
+
+	RD::TextureFormat tf;
+	tf.format = ATLAS_FORMAT;
+	tf.width = 16;
+	tf.height = 16;
+	tf.usage_bits = RD::TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | RD::TEXTURE_USAGE_SAMPLING_BIT;
+	dummy_texture = rd->texture_create(tf);
+
+	RD::SamplerState ss; // Nearest, clamp: the shader uses texelFetch only.
+	sampler = rd->sampler_create(ss);
+	ERR_FAIL_COND_V_MSG(!data_buffer.is_valid() || !dummy_texture.is_valid() || !sampler.is_valid(), false, "AreaShadowRendererRD: GPU resources could not be created.");
+	ERR_FAIL_COND_V_MSG(!depth_shader.initialize("area_shadow_depth.glsl", { "" }), false, "AreaShadowRendererRD: cannot load shaders/area_shadow_depth.glsl.");
+	initialized = true;
+	return true;
+}
+
+void AreaShadowRendererRD::finalize() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd && rd->is_initialized()) {
+		if (pipeline.is_valid()) {
+			rd->free(pipeline);
+		}
+		if (atlas_texture.is_valid()) {
+			rd->free(atlas_texture); // Frees the framebuffer too.
+		}
+		if (dummy_texture.is_valid()) {
+			rd->free(dummy_texture);
+		}
+		if (sampler.is_valid()) {
+			rd->free(sampler);
+		}
+		if (data_buffer.is_valid()) {
+			rd->free(data_buffer);
+		}
+	}
+	pipeline = RID();
+	atlas_texture = RID();
+	atlas_framebuffer = RID();
+	dummy_texture = RID();
+	sampler = RID();
+	data_buffer = RID();
+	depth_shader.clear();
+	initialized = false;
+}
+
+bool AreaShadowRendererRD::set_atlas_size(uint32_t p_size, uint32_t p_subdivision) {
+	uint32_t old = atlas.get_size();
+	if (!atlas.configure(p_size, p_subdivision)) {
+		return false;
+	}
+	if (old != atlas.get_size() && atlas_texture.is_valid()) {
+		RenderingDevice::get_singleton()->free(atlas_texture);
+		atlas_texture = RID();
+		atlas_framebuffer = RID();
+	}
+	return true;
+}
+
+bool AreaShadowRendererRD::_ensure_atlas() {
+	if (atlas_texture.is_valid()) {
+		return true;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	RD::TextureFormat tf;
+	tf.format = ATLAS_FORMAT;
+	tf.width = atlas.get_size();
+	tf.height = atlas.get_size();
+	tf.usage_bits = RD::TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | RD::TEXTURE_USAGE_SAMPLING_BIT;
+	atlas_texture = rd->texture_create(tf);
+	ERR_FAIL_COND_V_MSG(!atlas_texture.is_valid(), false, vformat("Area shadow atlas: a %u x %u depth texture could not be created.", tf.width, tf.height));
+	rd->set_resource_name(atlas_texture, "Area shadow atlas");
+	atlas_framebuffer = rd->framebuffer_create({ atlas_texture });
+	RD::FramebufferFormatID format = rd->framebuffer_get_format(atlas_framebuffer);
+	if (!pipeline.is_valid() || pipeline_format != format) {
+		if (pipeline.is_valid()) {
+			rd->free(pipeline);
+		}
+		RD::PipelineRasterizationState raster;
+		raster.cull_mode = RD::POLYGON_CULL_DISABLED; // Both sides cast (single-sided planes too).
+		RD::PipelineDepthStencilState depth;
+		depth.enable_depth_test = true;
+		depth.enable_depth_write = true;
+		depth.depth_compare_operator = RD::COMPARE_OP_LESS;
+		RID shader = depth_shader.version_get_shader(0);
+		ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "Area shadow depth shader failed to compile: " + depth_shader.get_last_error());
+		pipeline = rd->render_pipeline_create(shader, format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, RD::PipelineColorBlendState::create_disabled(0));
+		pipeline_format = format;
+		ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), false, "Area shadow depth pipeline creation failed.");
+	}
+	return true;
+}
+
+static void _hash_bytes(uint64_t &r_hash, const void *p_data, size_t p_size) {
+	const uint8_t *b = static_cast<const uint8_t *>(p_data);
+	for (size_t i = 0; i < p_size; i++) {
+		r_hash ^= b[i];
+		r_hash *= 1099511628211ull; // FNV-1a.
+	}
+}
+
+static void _hash_transform(uint64_t &r_hash, const Transform3D &p_t) {
+	float f[16];
+	Projection::from_transform(p_t).to_floats(f);
+	_hash_bytes(r_hash, f, sizeof(f));
+}
+
+void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vector<uint32_t> &p_area_sources, const Transform3D &p_view_from_world, const Projection &p_clip_from_world) {
+	ERR_FAIL_COND_MSG(!initialized, "AreaShadowRendererRD::prepare: not initialized.");
+	uint32_t count = std::min(uint32_t(p_area_sources.size()), max_lights);
+	data.assign(count, AreaShadowData());
+	for (AreaShadowData &d : data) {
+		memset(&d, 0, sizeof(d));
+	}
+	frame_lights.clear();
+	std::vector<uint64_t> gpu_keys(count, 0);
+
+	atlas.begin_frame();
+	for (uint32_t i = 0; i < count; i++) {
+		ERR_CONTINUE(p_area_sources[i] >= p_data.lights.size());
+		const RenderSceneData::LightInstance &li = p_data.lights[p_area_sources[i]];
+		if (!light_storage->owns_light(li.light) || !light_storage->light_has_shadow(li.light)) {
+			continue;
+		}
+		Vector2 size = light_storage->light_area_get_size(li.light);
+		if (!(size.x * size.y > 0.0f)) {
+			continue; // A zero-size light emits nothing.
+		}
+		LightFrame lf;
+		lf.key = li.instance.is_valid() ? li.instance.get_id() : li.light.get_id();
+		lf.world_from_light = Transform3D(li.transform.basis.orthonormalized(), li.transform.origin);
+		lf.size = size;
+		lf.range = std::max(light_storage->light_get_param(li.light, RS::LIGHT_PARAM_RANGE), 1e-3f);
+		AABB box = lf.world_from_light.xform(light_storage->light_get_aabb(li.light));
+		uint64_t hash = 1469598103934665603ull;
+		_hash_transform(hash, lf.world_from_light);
+		uint64_t version = light_storage->light_get_version(li.light);
+		_hash_bytes(hash, &version, sizeof(version));
+		_hash_bytes(hash, &size, sizeof(size));
+		_hash_bytes(hash, &lf.range, sizeof(lf.range));
+		for (uint32_t g = 0; g < p_data.geometry.size(); g++) {
+			const RenderSceneData::GeometryInstance &gi = p_data.geometry[g];
+			if (!mesh_storage->owns_mesh(gi.mesh) || mesh_storage->mesh_get_surface_count(gi.mesh) == 0) {
+				continue;
+			}
+			bool unbounded = gi.aabb.size.x <= 0.0f && gi.aabb.size.y <= 0.0f && gi.aabb.size.z <= 0.0f;
+			if (!unbounded && !gi.aabb.intersects(box)) {
+				continue; // Godot's culling: only instances within the light's range box cast.
+			}
+			lf.casters.push_back(g);
+			uint64_t ids[2] = { gi.instance.get_id(), gi.mesh.get_id() };
+			_hash_bytes(hash, ids, sizeof(ids));
+			_hash_transform(hash, gi.transform);
+		}
+		RS::LightAreaShadowMode mode = light_storage->light_area_get_shadow_mode(li.light);
+		uint32_t grid = mode == RS::LIGHT_AREA_SHADOW_PCSS_BASELINE ? 1 : uint32_t(light_storage->light_area_get_shadow_grid(li.light));
+		_hash_bytes(hash, &grid, sizeof(grid));
+		float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
+		atlas.light_set(lf.key, grid, importance, hash);
+		gpu_keys[i] = lf.key;
+
+		AreaShadowData &d = data[i];
+		Projection::from_transform(lf.world_from_light.affine_inverse() * p_data.cam_transform).to_floats(d.light_from_view);
+		d.half_size[0] = size.x * 0.5f;
+		d.half_size[1] = size.y * 0.5f;
+		d.depth_scale = 1.0f / (lf.range + size.length());
+		d.bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BIAS);
+		d.normal_bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS);
+		d.pcf_radius = std::min(std::max(light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BLUR) * 2.0f, 0.0f), 8.0f);
+		d.mode = uint32_t(mode);
+		frame_lights[lf.key] = lf;
+	}
+	atlas.end_frame();
+	if (!frame_lights.empty()) {
+		_ensure_atlas();
+	}
+	for (uint32_t i = 0; i < count; i++) {
+		if (gpu_keys[i] == 0 || !atlas_texture.is_valid()) {
+			continue;
+		}
+		AreaShadowData &d = data[i];
+		uint32_t grid = atlas.light_get_grid(gpu_keys[i]);
+		d.atlas_subdivision = atlas.get_subdivision();
+		d.atlas_texel = 1.0f / float(atlas.get_size());
+		d.quadrant_size = atlas.get_tile_size() / 2;
+		d.tile_size = atlas.get_tile_size();
+		uint32_t n = 0;
+		for (const AreaShadowAtlas::Map &m : atlas.light_get_maps(gpu_keys[i])) {
+			if (m.valid && n < MAX_MAPS_GPU) {
+				d.maps[n++] = pack_map(m.tile, m.uv, grid);
+			}
+		}
+		d.map_count = n;
+	}
+	if (count > 0) {
+		RenderingDevice::get_singleton()->buffer_update(data_buffer, 0, count * sizeof(AreaShadowData), data.data());
+	}
+}
+
+void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
+	last_draw_count = 0;
+	const std::vector<AreaShadowAtlas::DrawRequest> &draws = atlas.get_draws();
+	if (draws.empty() || !atlas_texture.is_valid() || !pipeline.is_valid()) {
+		return;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	rd->capture_timestamp("area_shadows_begin"); // Benchmarks read these two (doc/shadows.md).
+	for (const AreaShadowAtlas::DrawRequest &req : draws) {
+		auto it = frame_lights.find(req.light);
+		ERR_CONTINUE(it == frame_lights.end());
+		const LightFrame &lf = it->second;
+		AreaShadowAtlas::TileRect r = AreaShadowAtlas::get_tile_rect(req.tile, atlas.get_size(), atlas.get_subdivision());
+		uint32_t q = r.size / 2;
+		Vector3 sample_world = lf.world_from_light.xform(Vector3((req.uv.x - 0.5f) * lf.size.x, (req.uv.y - 0.5f) * lf.size.y, 0.0f));
+		DepthPushConstant pc;
+		pc.params[0] = 1.0f / (lf.range + lf.size.length());
+		pc.params[1] = OCTANT_Z_NEAR;
+		pc.params[2] = (lf.range + lf.size.length()) * 2.0f;
+		pc.params[3] = 0.0f;
+		RD::DrawListID list = rd->draw_list_begin(atlas_framebuffer, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f, RD::Rect(int32_t(r.x), int32_t(r.y), r.size, r.size));
+		rd->draw_list_bind_render_pipeline(list, pipeline);
+		for (uint32_t quadrant = 0; quadrant < 4; quadrant++) {
+			rd->draw_list_set_viewport(list, RD::Rect(int32_t(r.x + (quadrant & 1u) * q), int32_t(r.y + (quadrant >> 1u) * q), q, q));
+			Vector3 right, up, forward;
+			get_octant_axes(quadrant, right, up, forward);
+			const Basis &lb = lf.world_from_light.basis;
+			Transform3D octant_from_world;
+			Vector3 rw = lb.xform(right), uw = lb.xform(up), fw = lb.xform(forward);
+			octant_from_world.basis = Basis(rw.x, rw.y, rw.z, uw.x, uw.y, uw.z, fw.x, fw.y, fw.z); // Rows.
+			octant_from_world.origin = -octant_from_world.basis.xform(sample_world);
+			for (uint32_t g : lf.casters) {
+				const RenderSceneData::GeometryInstance &gi = p_data.geometry[g];
+				Projection::from_transform(octant_from_world * gi.transform).to_floats(pc.octant_view_from_model);
+				int surfaces = mesh_storage->mesh_get_surface_count(gi.mesh);
+				for (int s = 0; s < surfaces; s++) {
+					const RendererRD::MeshStorage::SurfaceGPU *gpu = mesh_storage->mesh_surface_get_gpu(gi.mesh, s);
+					if (!gpu) {
+						continue;
+					}
+					rd->draw_list_bind_vertex_array(list, gpu->vertex_array);
+					rd->draw_list_set_push_constant(list, &pc, sizeof(pc));
+					if (gpu->index_array.is_valid()) {
+						rd->draw_list_bind_index_array(list, gpu->index_array);
+						rd->draw_list_draw(list, true);
+					} else {
+						rd->draw_list_draw(list, false);
+					}
+				}
+			}
+		}
+		rd->draw_list_end();
+		last_draw_count++;
+	}
+	rd->capture_timestamp("area_shadows_end");
+	total_draw_count += last_draw_count;
+}

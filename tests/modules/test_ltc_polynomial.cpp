@@ -1,0 +1,429 @@
+/**************************************************************************/
+/*  test_ltc_polynomial.cpp                                               */
+/**************************************************************************/
+/* godot-area: the degree-5 polynomial approximation of the LTC lookup    */
+/* table (thesis section 5.4.3, modules/ltc_fit/ltc_polynomial.*): the    */
+/* QR least-squares solver, the committed coefficients against a fresh    */
+/* fit of the committed table, the RMSE per component, the shader's float */
+/* evaluation, the generated GLSL include, the CLI's arguments, and on    */
+/* the GPU the specular of a glossy plane with the polynomials against    */
+/* the LUT (light_process_area_ltc, p_polynomial true / false, compute)  */
+/* and through Forward+ (LIGHT_AREA_SHADING_LTC_POLYNOMIAL vs _LTC).      */
+
+#include "modules/ltc_fit/ltc_fit_command.h"
+
+#include "core/error/error_macros.h"
+#include "modules/ltc_fit/ltc_fitter.h"
+#include "modules/ltc_fit/ltc_polynomial.h"
+#include "modules/ltc_fit/ltc_table_io.h"
+#include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
+#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
+#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
+#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "tests/servers/rd_test_fixture.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#ifndef GODOT_AREA_ROOT
+#define GODOT_AREA_ROOT "."
+#endif
+
+namespace TestLTCPolynomial {
+
+// Bounds of the GPU comparisons (max |poly - LUT| / peak LUT specular), a margin above the values
+// measured on lavapipe: 5.9 %, 2.1 %, 2.0 %, 5.6 % (compute, roughness 0.25 / 0.5 / 0.75 / 1) and
+// 5.4 %, 2.1 % (Forward+, roughness 0.25 / 0.5). The error is largest for glossy surfaces (the
+// polynomials' absolute error is large relative to a, c ~ alpha there) and at roughness 1 (edge of
+// the fitted domain).
+static const double MAX_REL_025 = 0.08;
+static const double MAX_REL_050 = 0.04;
+static const double MAX_REL_075 = 0.04;
+static const double MAX_REL_100 = 0.08;
+
+static String read_text(const String &p_path) {
+	std::ifstream f(p_path, std::ios::binary);
+	std::ostringstream s;
+	s << f.rdbuf();
+	return s.str();
+}
+
+TEST_CASE("[LTCPolynomial] QR least squares recovers an exact polynomial and the minimum-residual solution") {
+	// 200 points of a known degree-5 polynomial in the fit's domain: the solve must return its coefficients.
+	std::vector<double> truth(LTCPolynomial::TERMS);
+	for (int j = 0; j < LTCPolynomial::TERMS; j++) {
+		truth[j] = std::sin(1.7 * j + 0.3) * 10.0;
+	}
+	const int rows = 200;
+	std::vector<double> a((size_t)rows * LTCPolynomial::TERMS), b(rows);
+	for (int i = 0; i < rows; i++) {
+		const double x = 1.0 + (i % 20) / 19.0;
+		const double y = 1.0 + 1.57 * (i / 20) / 9.0;
+		LTCPolynomial::monomials(x, y, &a[(size_t)i * LTCPolynomial::TERMS]);
+		b[i] = LTCPolynomial::evaluate(truth.data(), x, y);
+	}
+	std::vector<double> x;
+	REQUIRE(LTCPolynomial::solve_least_squares(a, rows, LTCPolynomial::TERMS, b, x));
+	REQUIRE(x.size() == truth.size());
+	double worst = 0.0;
+	for (int j = 0; j < LTCPolynomial::TERMS; j++) {
+		worst = std::max(worst, std::fabs(x[j] - truth[j]));
+	}
+	INFO("max coefficient error ", worst);
+	CHECK(worst < 1e-5);
+
+	// Overdetermined line fit with noise: the normal equations A^T (A x - b) = 0 hold at the solution.
+	std::vector<double> a2 = { 1, 0, 1, 1, 1, 2, 1, 3 };
+	std::vector<double> b2 = { 1.0, 2.9, 5.2, 6.8 };
+	std::vector<double> x2;
+	REQUIRE(LTCPolynomial::solve_least_squares(a2, 4, 2, b2, x2));
+	for (int j = 0; j < 2; j++) {
+		double g = 0.0;
+		for (int i = 0; i < 4; i++) {
+			g += a2[i * 2 + j] * (a2[i * 2] * x2[0] + a2[i * 2 + 1] * x2[1] - b2[i]);
+		}
+		CHECK(std::fabs(g) < 1e-12);
+	}
+	CHECK(x2[1] == doctest::Approx(1.97).epsilon(1e-12)); // Slope of the least-squares line: Sxy / Sxx = 9.85 / 5.
+}
+
+TEST_CASE("[LTCPolynomial] the solver rejects bad sizes and rank-deficient matrices") {
+	std::vector<double> x = { 42.0 };
+	// Two identical columns.
+	std::vector<double> a = { 1, 1, 2, 2, 3, 3 };
+	std::vector<double> b = { 1, 2, 3 };
+	set_error_print_silenced(true);
+	CHECK_FALSE(LTCPolynomial::solve_least_squares(a, 3, 2, b, x));
+	CHECK_FALSE(LTCPolynomial::solve_least_squares(a, 2, 3, b, x)); // Fewer rows than columns.
+	CHECK_FALSE(LTCPolynomial::solve_least_squares(a, 3, 2, std::vector<double>{ 1, 2 }, x));
+	std::vector<double> zero_col = { 1, 0, 2, 0, 3, 0 };
+	CHECK_FALSE(LTCPolynomial::solve_least_squares(zero_col, 3, 2, b, x));
+	set_error_print_silenced(false);
+	CHECK(x.size() == 1); // Untouched on failure.
+	CHECK(x[0] == 42.0);
+}
+
+TEST_CASE("[LTCPolynomial] the committed coefficients are a fit of the committed LUT and meet the RMSE bounds") {
+	const float *table = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX);
+	const int size = LTCTableIO::get_builtin_size();
+	LTCPolynomial::Fit fit;
+	REQUIRE(LTCPolynomial::fit_table(table, size, fit));
+	const double *builtin = LTCPolynomial::get_builtin_coeffs();
+	double worst = 0.0;
+	for (int i = 0; i < LTCPolynomial::COMPONENTS * LTCPolynomial::TERMS; i++) {
+		worst = std::max(worst, std::fabs(fit.coeffs[i] - builtin[i]) / std::max(1.0, std::fabs(builtin[i])));
+	}
+	INFO("max relative coefficient difference to ltc_poly_data.inc: ", worst, " (regenerate with `godot-area ltc-fit --polynomial`)");
+	CHECK(worst < 1e-6);
+
+	LTCPolynomial::Fit committed;
+	LTCPolynomial::measure(table, size, std::vector<double>(builtin, builtin + LTCPolynomial::COMPONENTS * LTCPolynomial::TERMS), committed);
+	// Measured RMSE of the committed coefficients (also in the header of ltc_poly_data.inc). The thesis
+	// reports RMSE < 0.11 for every component at degree 5 and < 0.01 in its rendered tests. Over the
+	// whole table every component but fn stays below 0.01; fn (the directional albedo) falls steeply at
+	// grazing angles for glossy surfaces (max error 0.26 at roughness 2/63, theta_v = 90 deg), which a
+	// degree-5 polynomial cannot follow: its whole-table RMSE is 0.022, and below 0.01 only up to
+	// theta_v = 70 degrees. So: all components < 0.01 except fn < 0.025, and all < 0.01 up to 70 deg.
+	static const double RMSE_BOUND[LTCPolynomial::COMPONENTS] = { 0.01, 0.01, 0.01, 0.01, 0.01, 0.025, 0.01 };
+	LTCPolynomial::Fit committed_70;
+	LTCPolynomial::measure(table, size, std::vector<double>(builtin, builtin + LTCPolynomial::COMPONENTS * LTCPolynomial::TERMS), committed_70, 70.0 * LTCBRDF::BRDF_PI / 180.0);
+	for (int k = 0; k < LTCPolynomial::COMPONENTS; k++) {
+		MESSAGE(String(LTCPolynomial::COMPONENT_NAMES[k]), ": RMSE ", committed.rmse[k], " (", committed_70.rmse[k], " up to theta_v 70 deg), max |error| ", committed.max_error[k], " at (ri ",
+				committed.max_error_r[k], ", ti ", committed.max_error_t[k], ")");
+		CHECK(committed.rmse[k] < RMSE_BOUND[k]);
+		CHECK(committed_70.rmse[k] < 0.01);
+		CHECK(committed.rmse[k] == doctest::Approx(fit.rmse[k]).epsilon(1e-6));
+	}
+}
+
+TEST_CASE("[LTCPolynomial] float evaluation (the shader's arithmetic) stays close to the double polynomial") {
+	const double *builtin = LTCPolynomial::get_builtin_coeffs();
+	const int size = LTCTableIO::get_builtin_size();
+	double worst = 0.0;
+	for (int k = 0; k < LTCPolynomial::COMPONENTS; k++) {
+		float c[LTCPolynomial::TERMS];
+		for (int j = 0; j < LTCPolynomial::TERMS; j++) {
+			c[j] = (float)builtin[k * LTCPolynomial::TERMS + j];
+		}
+		for (int t = 0; t < size; t++) {
+			const double y = LTCPolynomial::get_y(LTCFitter::get_theta(size, t));
+			for (int r = 0; r < size; r++) {
+				const double x = LTCPolynomial::get_x((double)r / (size - 1));
+				const double d = LTCPolynomial::evaluate(builtin + k * LTCPolynomial::TERMS, x, y);
+				const float f = LTCPolynomial::evaluate_float(c, (float)x, (float)y);
+				worst = std::max(worst, std::fabs((double)f - d));
+			}
+		}
+	}
+	MESSAGE("max |float - double| over all cells and components: ", worst);
+	CHECK(worst < 1e-3);
+}
+
+TEST_CASE("[LTCPolynomial] the committed GLSL include holds the same coefficients as ltc_poly_data.inc") {
+	const String text = read_text(String(GODOT_AREA_ROOT) + "/" + LTCPolynomial::DEFAULT_GLSL_PATH);
+	REQUIRE_FALSE(text.empty());
+	CHECK(text.find("#define LTC_POLY_DEGREE 5") != String::npos);
+	CHECK(text.find("#define LTC_POLY_TERMS 21") != String::npos);
+	CHECK(text.find("godot-area ltc-fit --polynomial") != String::npos);
+	// The GLSL array is "float[](...)"; reuse the C++ parser on a rewritten copy.
+	String as_inc = text;
+	const size_t open = as_inc.find("float[](");
+	REQUIRE(open != String::npos);
+	as_inc.replace(open, 8, "{");
+	std::vector<double> glsl;
+	String error;
+	REQUIRE_MESSAGE(LTCPolynomial::parse_inc(as_inc, &glsl, &error), error);
+	const double *builtin = LTCPolynomial::get_builtin_coeffs();
+	int mismatches = 0;
+	for (int i = 0; i < LTCPolynomial::COMPONENTS * LTCPolynomial::TERMS; i++) {
+		mismatches += (float)glsl[i] == (float)builtin[i] ? 0 : 1;
+	}
+	CHECK(mismatches == 0);
+}
+
+TEST_CASE("[LTCPolynomial] ltc-fit --polynomial writes files that parse back to the committed fit, and rejects bad arguments") {
+	set_error_print_silenced(true);
+	CHECK(ltc_fit_command({ "--polynomial", "--size", "32" }) == 2);
+	CHECK(ltc_fit_command({ "--polynomial", "-o" }) == 2);
+	CHECK(ltc_fit_command({ "--polynomial", "--bogus" }) == 2);
+	set_error_print_silenced(false);
+	const String dir = "/tmp/godot_area_ltc_poly_test_" + itos((int64_t)getpid());
+	const String inc = dir + "_data.inc", glsl = dir + "_coeffs.glsl";
+	REQUIRE(ltc_fit_command({ "ltc-fit", "--polynomial", "-o", inc, "--glsl", glsl }) == 0);
+	std::vector<double> parsed;
+	String error;
+	REQUIRE_MESSAGE(LTCPolynomial::parse_inc(read_text(inc), &parsed, &error), error);
+	const double *builtin = LTCPolynomial::get_builtin_coeffs();
+	double worst = 0.0;
+	for (int i = 0; i < LTCPolynomial::COMPONENTS * LTCPolynomial::TERMS; i++) {
+		worst = std::max(worst, std::fabs(parsed[i] - builtin[i]) / std::max(1.0, std::fabs(builtin[i])));
+	}
+	CHECK(worst < 1e-6);
+	CHECK(read_text(glsl).find("const float LTC_POLY_COEFFS[7 * LTC_POLY_TERMS]") != String::npos);
+	std::remove(inc.c_str());
+	std::remove(glsl.c_str());
+	// Garbage is rejected by the parser.
+	std::vector<double> none;
+	CHECK_FALSE(LTCPolynomial::parse_inc("static const double LTC_POLY_COEFFS[7 * 21] = { 1.0, nope };", &none, &error));
+	CHECK_FALSE(LTCPolynomial::parse_inc("nothing here", &none, &error));
+}
+
+// Shades N x N points of the plane y = 0 (x, z in [-2, 2]) under a 1 x 0.5 m light at height 1 with
+// light_process_area_ltc from area_light_ltc_inc.glsl, both with the LUT and with the polynomials.
+static const char *PLANE_COMPUTE = R"(#[compute]
+#version 450
+#include "brdf_inc.glsl"
+#include "light_data_inc.glsl"
+layout(local_size_x = 64) in;
+layout(set = 0, binding = 0, std430) buffer Out { vec4 values[]; } out_buf;
+layout(set = 0, binding = 1) uniform texture2DArray ltc_lut_texture;
+layout(set = 0, binding = 2) uniform sampler ltc_lut_sampler;
+layout(push_constant, std430) uniform Params { float roughness; uint count; uint side; uint pad; } params;
+#include "area_light_ltc_inc.glsl"
+void main() {
+	uint i = gl_GlobalInvocationID.x;
+	if (i >= params.count) {
+		return;
+	}
+	vec2 uv = (vec2(i % params.side, i / params.side) + 0.5) / float(params.side);
+	vec3 p = vec3(uv.x * 4.0 - 2.0, 0.0, uv.y * 4.0 - 2.0);
+	AreaLightData l;
+	l.position = vec3(0.3, 1.0, -0.5);
+	l.inv_radius = 0.001;
+	l.half_axis_x = vec3(0.5, 0.0, 0.0);
+	l.attenuation = 0.0;
+	l.half_axis_y = vec3(0.0, 0.0, 0.25);
+	l.specular_amount = 1.0;
+	l.normal = vec3(0.0, -1.0, 0.0);
+	l.shading_method = 0u;
+	l.color = vec3(1.0);
+	l.cull_mask = 0xFFFFFFFFu;
+	vec3 camera = vec3(0.0, 1.5, 3.0);
+	vec3 V = normalize(camera - p);
+	vec3 N = vec3(0.0, 1.0, 0.0);
+	vec3 d_lut = vec3(0.0), s_lut = vec3(0.0), d_poly = vec3(0.0), s_poly = vec3(0.0);
+	light_process_area_ltc(l, p, N, V, params.roughness, vec3(1.0), 1.0, true, false, d_lut, s_lut);
+	light_process_area_ltc(l, p, N, V, params.roughness, vec3(1.0), 1.0, true, true, d_poly, s_poly);
+	out_buf.values[i] = vec4(s_lut.x, s_poly.x, d_lut.x, d_poly.x);
+}
+)";
+
+struct PlaneParams {
+	float roughness;
+	uint32_t count;
+	uint32_t side;
+	uint32_t pad;
+};
+
+TEST_CASE("[AreaLight3D][LTC] the polynomial LTC specular of a glossy plane stays close to the LUT's (GPU)") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		ShaderRD shader_rd;
+		REQUIRE(shader_rd.initialize_from_source(PLANE_COMPUTE, "ltc_poly_plane", { "#define AREA_METHOD_LTC\n#define AREA_METHOD_LTC_POLYNOMIAL\n" }));
+		RID shader = shader_rd.version_get_shader(0);
+		REQUIRE_MESSAGE(shader.is_valid(), shader_rd.get_last_error());
+		LTCLutRD lut;
+		REQUIRE(lut.initialize());
+		const uint32_t side = 64, count = side * side;
+		RID buffer = rd->storage_buffer_create(count * 16);
+		REQUIRE(buffer.is_valid());
+		RID set = rd->uniform_set_create({ RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, buffer), RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 1, lut.get_texture()),
+												 RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 2, lut.get_sampler()) },
+				shader, 0);
+		REQUIRE(set.is_valid());
+		RID pipeline = rd->compute_pipeline_create(shader);
+		REQUIRE(pipeline.is_valid());
+
+		// Per roughness: the max difference relative to the peak specular of the LUT image, and the
+		// relative RMS difference.
+		struct Case {
+			float roughness;
+			double max_rel_bound;
+		};
+		static const Case CASES[] = { { 0.25f, MAX_REL_025 }, { 0.5f, MAX_REL_050 }, { 0.75f, MAX_REL_075 }, { 1.0f, MAX_REL_100 } };
+		for (const Case &c : CASES) {
+			PlaneParams params = { c.roughness, count, side, 0 };
+			RD::ComputeListID list = rd->compute_list_begin();
+			rd->compute_list_bind_compute_pipeline(list, pipeline);
+			rd->compute_list_bind_uniform_set(list, set, 0);
+			rd->compute_list_set_push_constant(list, &params, sizeof(params));
+			rd->compute_list_dispatch_threads(list, count, 1, 1);
+			rd->compute_list_end();
+			rd->submit();
+			rd->sync();
+			std::vector<uint8_t> data = rd->buffer_get_data(buffer);
+			REQUIRE(data.size() == count * 16);
+			const float *v = reinterpret_cast<const float *>(data.data());
+			double peak = 0.0, max_diff = 0.0, sum2 = 0.0, sum2_ref = 0.0, diffuse_diff = 0.0;
+			int non_finite = 0;
+			for (uint32_t i = 0; i < count; i++) {
+				non_finite += std::isfinite(v[i * 4 + 1]) ? 0 : 1;
+				peak = std::max(peak, (double)v[i * 4]);
+				const double d = (double)v[i * 4 + 1] - (double)v[i * 4];
+				max_diff = std::max(max_diff, std::fabs(d));
+				sum2 += d * d;
+				sum2_ref += (double)v[i * 4] * v[i * 4];
+				diffuse_diff = std::max(diffuse_diff, std::fabs((double)v[i * 4 + 3] - (double)v[i * 4 + 2]));
+			}
+			REQUIRE(peak > 0.0);
+			const double max_rel = max_diff / peak;
+			MESSAGE("roughness ", c.roughness, ": peak LUT specular ", peak, ", max |poly - LUT| ", max_diff, " (", 100.0 * max_rel, " % of the peak), relative RMS difference ",
+					100.0 * std::sqrt(sum2 / sum2_ref), " %");
+			CHECK(non_finite == 0);
+			CHECK(diffuse_diff == 0.0); // The diffuse term does not use the LTC matrix.
+			CHECK(max_rel < c.max_rel_bound);
+		}
+		rd->free(pipeline);
+		rd->free(set);
+		rd->free(buffer);
+		lut.finalize();
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+// Forward+ image (red channel) of a metal plane (f0 = 1) under a 1 x 0.5 m light 1 m up, seen
+// obliquely, with the light's shading method p_method. Empty on failure.
+static std::vector<float> render_plane(RS::LightAreaShadingMethod p_method, float p_roughness, int p_size) {
+	RendererRD::LightStorage light_storage;
+	RendererRD::MeshStorage mesh_storage;
+	RendererRD::MaterialStorage material_storage;
+	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
+	std::vector<float> image;
+	if (material_storage.initialize_gpu() && light_storage.initialize_gpu(8) && renderer.initialize(8)) {
+		RS::SurfaceData ground;
+		const float h = 10.0f;
+		ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
+		ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
+		ground.indices = { 0, 1, 2, 0, 2, 3 };
+		RID mesh = mesh_storage.mesh_create();
+		mesh_storage.mesh_add_surface(mesh, ground);
+		RS::MaterialParams params;
+		params.metallic = 1.0f;
+		params.roughness = p_roughness;
+		params.cull_back = false;
+		RID material = material_storage.material_create();
+		material_storage.material_set_params(material, params);
+		RID light = light_storage.light_create(RS::LIGHT_AREA);
+		light_storage.light_area_set_size(light, Vector2(1.0f, 0.5f));
+		light_storage.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 1.0f);
+		light_storage.light_set_param(light, RS::LIGHT_PARAM_SPECULAR, 1.0f);
+		light_storage.light_set_param(light, RS::LIGHT_PARAM_RANGE, 100.0f);
+		light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+		light_storage.light_area_set_shading_method(light, p_method);
+
+		RenderSceneData d;
+		d.cam_transform = Transform3D(Basis::looking_at(Vector3(0, -1.5f, -3.0f).normalized(), Vector3(0, 1, 0)), Vector3(0, 1.5f, 3.0f));
+		d.z_near = 0.05f;
+		d.z_far = 50.0f;
+		d.fovy_degrees = 60.0f;
+		d.cam_projection = Projection::create_perspective(60.0f, 1.0f, d.z_near, d.z_far);
+		d.viewport_width = p_size;
+		d.viewport_height = p_size;
+		d.environment.has_environment = true;
+		d.environment.background = RS::ENV_BG_COLOR;
+		d.environment.bg_color = Color(0, 0, 0, 1);
+		d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
+		d.environment.ambient_energy = 0.0f;
+		RenderSceneData::GeometryInstance g;
+		g.mesh = mesh;
+		g.material_override = material;
+		d.geometry.push_back(g);
+		RenderSceneData::LightInstance li;
+		li.light = light;
+		li.type = RS::LIGHT_AREA;
+		li.transform = Transform3D(Basis::from_columns(Vector3(1, 0, 0), Vector3(0, 0, -1), Vector3(0, 1, 0)), Vector3(0.3f, 1.0f, -0.5f));
+		d.lights.push_back(li);
+		RID rt = renderer.render_target_create(p_size, p_size);
+		renderer.render_scene(d, rt);
+		image = renderer.render_target_get_data(rt);
+		renderer.render_target_free(rt);
+		mesh_storage.mesh_free(mesh);
+		material_storage.material_free(material);
+		light_storage.light_free(light);
+	}
+	renderer.finalize();
+	light_storage.finalize_gpu();
+	material_storage.finalize_gpu();
+	return image;
+}
+
+TEST_CASE("[AreaLight3D][LTC] Forward+ renders LIGHT_AREA_SHADING_LTC_POLYNOMIAL close to LIGHT_AREA_SHADING_LTC on a glossy plane") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	const int size = 48;
+	// Same bounds as the compute comparison above (max |poly - LUT| relative to the LUT image's peak).
+	struct Case {
+		float roughness;
+		double max_rel_bound;
+	};
+	static const Case CASES[] = { { 0.25f, MAX_REL_025 }, { 0.5f, MAX_REL_050 } };
+	for (const Case &c : CASES) {
+		const std::vector<float> lut = render_plane(RS::LIGHT_AREA_SHADING_LTC, c.roughness, size);
+		const std::vector<float> poly = render_plane(RS::LIGHT_AREA_SHADING_LTC_POLYNOMIAL, c.roughness, size);
+		REQUIRE(lut.size() == size_t(size * size * 4));
+		REQUIRE(poly.size() == lut.size());
+		double peak = 0.0, max_diff = 0.0;
+		int non_finite = 0;
+		for (size_t i = 0; i < lut.size(); i += 4) {
+			non_finite += std::isfinite(poly[i]) ? 0 : 1;
+			peak = std::max(peak, (double)lut[i]);
+			max_diff = std::max(max_diff, std::fabs((double)poly[i] - (double)lut[i]));
+		}
+		REQUIRE(peak > 0.0);
+		MESSAGE("roughness ", c.roughness, ": peak ", peak, ", max |poly - LUT| ", max_diff, " (", 100.0 * max_diff / peak, " % of the peak)");
+		CHECK(non_finite == 0);
+		CHECK(max_diff > 0.0); // The polynomial path really ran.
+		CHECK(max_diff / peak < c.max_rel_bound);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+} // namespace TestLTCPolynomial
