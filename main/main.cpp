@@ -5,6 +5,7 @@
 /*                   [--png P] [--half] [--exposure EV] [--gizmos]        */
 /*                   [--gizmos-selected] [--debug-area-clusters]          */
 /* godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F]      */
+/* godot-area bench --accuracy [--ci] [--csv F] [--methods 0,1,..] ...    */
 /*                   [--width W] [--height H]                             */
 /* godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip] */
 /*                   (B is the reference)                                 */
@@ -23,6 +24,7 @@
 #include "drivers/png/png_writer.h"
 #include "editor/gizmo_overlay.h"
 #include "main/demo_scene.gen.h"
+#include "modules/accuracy/accuracy_command.h"
 #include "modules/gltf/register_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/metrics/image_metrics.h"
@@ -117,10 +119,11 @@ void _print_usage() {
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
+			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
 			"                       [--seed S] [--png P] [--progress]\n"
-			"  godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N]\n"
+			"  godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--polynomial [--glsl PATH]]\n"
 			"  godot-area info\n"
 			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
 			"GODOT_AREA_VALIDATION=1 enables the validation layer.\n");
@@ -426,6 +429,13 @@ int Main::run(int p_argc, char **p_argv) {
 	if (p_argc >= 2 && String(p_argv[1]) == "ltc-fit") {
 		// The LTC LUT fitter has its own options (modules/ltc_fit/ltc_fit_command.h).
 		return ltc_fit_command(std::vector<String>(p_argv + 2, p_argv + p_argc));
+	}
+	if (p_argc >= 2 && String(p_argv[1]) == "bench") {
+		std::vector<String> rest(p_argv + 2, p_argv + p_argc);
+		if (std::find(rest.begin(), rest.end(), String("--accuracy")) != rest.end()) {
+			// The accuracy suite (modules/accuracy) makes its own servers, so it runs before Main::setup().
+			return accuracy_command(rest);
+		}
 	}
 	Args args;
 	String error;

@@ -1,0 +1,23 @@
+/**************************************************************************/
+/*  accuracy_command.h                                                    */
+/**************************************************************************/
+/* godot-area: `godot-area bench --accuracy`, the area-light accuracy     */
+/* suite on the command line (accuracy_suite.h):                          */
+/*                                                                        */
+/*   godot-area bench --accuracy [--ci] [--resolution N] [--csv F]        */
+/*                    [--thumbnails DIR] [--methods 0,1,..] [--filter S]  */
+/*                    [--progress]                                        */
+/*                                                                        */
+/* Defaults: the full suite at 96 x 96, method {LTC} (0). Prints the      */
+/* summary table (markdown) and the mean reference time per image.        */
+/* Must run before Main::setup() (the suite makes its own servers).       */
+
+#pragma once
+
+#include "core/string/ustring.h"
+
+#include <vector>
+
+// p_args: the arguments after "bench" ("--accuracy" itself is skipped).
+// Returns 0 on success, 1 on a failed run, 2 on bad arguments.
+int accuracy_command(const std::vector<String> &p_args);

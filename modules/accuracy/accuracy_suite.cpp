@@ -1,0 +1,346 @@
+/**************************************************************************/
+/*  accuracy_suite.cpp                                                    */
+/**************************************************************************/
+/* godot-area: the area-light accuracy suite runner (see the header).     */
+
+#include "modules/accuracy/accuracy_suite.h"
+
+#include "core/error/error_macros.h"
+#include "core/io/tonemap.h"
+#include "drivers/png/png_writer.h"
+#include "modules/accuracy/accuracy_scenes.h"
+#include "modules/metrics/heatmap.h"
+#include "modules/metrics/image_metrics.h"
+#include "modules/reference/renderer_compositor_reference.h"
+#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
+#include "servers/rendering/rendering_device.h"
+#include "servers/rendering/rendering_server_default.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+namespace {
+
+struct Thumb {
+	double flip = 0.0;
+	size_t scene = 0;
+	Image engine;
+	std::vector<float> flip_map;
+};
+
+// Renders one scene in the current server; returns the image (empty on failure).
+Image render_scene(RenderingServer *p_rs, const AccuracyScenes::Scene &p_scene, int p_resolution, int p_method, bool p_warm_up, double *r_wall_ms, double *r_gpu_ms, String *r_error) {
+	AccuracyScenes::Built built;
+	if (!AccuracyScenes::build(p_rs, p_scene, p_resolution, p_method, &built, r_error)) {
+		return Image();
+	}
+	if (p_warm_up) {
+		p_rs->draw(); // Compiles the pipelines of this method outside the timed frame.
+	}
+	auto begin = std::chrono::steady_clock::now();
+	p_rs->draw();
+	*r_wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+	double gpu = 0.0;
+	for (const auto &pass : p_rs->get_frame_profile()) {
+		gpu += pass.second;
+	}
+	*r_gpu_ms = gpu;
+	Image image = p_rs->viewport_get_texture_data(built.viewport);
+	AccuracyScenes::free_scene(p_rs, built);
+	if (image.get_width() != p_resolution || image.get_height() != p_resolution) {
+		*r_error = vformat("Scene %s: the renderer returned a %dx%d image, expected %dx%d.", p_scene.id.c_str(), image.get_width(), image.get_height(), p_resolution, p_resolution);
+		return Image();
+	}
+	return image;
+}
+
+String csv_field(const String &p_text) {
+	if (p_text.find_first_of(",\"\n") == String::npos) {
+		return p_text;
+	}
+	String out = "\"";
+	for (char c : p_text) {
+		out += c == '"' ? String("\"\"") : String(1, c);
+	}
+	return out + "\"";
+}
+
+} // namespace
+
+String AccuracySuite::method_name(int p_method) {
+	// RS::LightAreaShadingMethod values as numbers (this file compiles whichever methods exist yet);
+	// keep in step as values are appended.
+	switch (p_method) {
+		case 0:
+			return "LTC";
+		case 1:
+			return "LTC_POLYNOMIAL";
+		case 2:
+			return "MRP";
+		case 3:
+			return "STOCHASTIC";
+		default:
+			return "method_" + itos(p_method);
+	}
+}
+
+bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, String *r_error) {
+	String error;
+	auto fail = [&](const String &p_message) {
+		if (r_error) {
+			*r_error = p_message;
+		}
+		return false;
+	};
+	if (!r_rows) {
+		return fail("AccuracySuite::run needs an output vector.");
+	}
+	r_rows->clear();
+	if (p_options.resolution < 1 || p_options.resolution > 1024) {
+		return fail(vformat("The accuracy suite resolution must be in [1, 1024], got %d.", p_options.resolution));
+	}
+	if (RenderingServer::get_singleton()) {
+		return fail("AccuracySuite::run creates its own rendering servers; a RenderingServer already exists (call it before Main::setup()).");
+	}
+	std::vector<int> methods = p_options.methods.empty() ? std::vector<int>{ RS::LIGHT_AREA_SHADING_LTC } : p_options.methods;
+	std::vector<AccuracyScenes::Scene> all = p_options.ci_subset ? AccuracyScenes::ci_subset() : AccuracyScenes::full_suite();
+	std::vector<AccuracyScenes::Scene> scenes;
+	for (const AccuracyScenes::Scene &s : all) {
+		if (p_options.filter.empty() || s.id.find(p_options.filter) != String::npos) {
+			scenes.push_back(s);
+		}
+	}
+	if (scenes.empty()) {
+		return fail("No accuracy scene matches the filter '" + p_options.filter + "'.");
+	}
+	const int res = p_options.resolution;
+
+	// 1. The reference, once per scene (the method does not apply to it).
+	std::vector<Image> references(scenes.size());
+	std::vector<double> reference_ms(scenes.size()), reference_spp(scenes.size());
+	{
+		ReferenceRenderOptions options;
+		options.shadows = false;
+		options.seed = 0;
+		options.threads = p_options.reference_threads;
+		RendererCompositorReference *compositor = new RendererCompositorReference(options);
+		RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+		for (size_t i = 0; i < scenes.size(); i++) {
+			double wall = 0.0, gpu = 0.0;
+			references[i] = render_scene(rs, scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, false, &wall, &gpu, &error);
+			if (references[i].is_empty()) {
+				delete rs;
+				return fail("Reference: " + error);
+			}
+			const ReferenceRenderStats &stats = compositor->get_reference_renderer()->get_last_stats();
+			reference_ms[i] = stats.seconds * 1000.0;
+			reference_spp[i] = double(stats.area_light_samples) / (double(res) * res);
+			if (p_options.progress) {
+				printf("[reference %zu/%zu] %s: %.0f ms, %.0f samples/pixel\n", i + 1, scenes.size(), scenes[i].id.c_str(), reference_ms[i], reference_spp[i]);
+				fflush(stdout);
+			}
+		}
+		delete rs;
+	}
+
+	// 2. The engine, per method, compared at once; the worst scenes are kept for thumbnails.
+	RenderingDevice *owned_device = nullptr;
+	if (!RenderingDevice::get_singleton()) {
+		owned_device = new RenderingDevice;
+		if (!owned_device->initialize(&error)) {
+			delete owned_device;
+			return fail("No usable Vulkan device: " + error);
+		}
+	}
+	RendererCompositorRD *compositor = new RendererCompositorRD;
+	if (!compositor->initialize(64)) {
+		delete compositor;
+		delete owned_device;
+		return fail("The Forward+ renderer could not be initialized (see the errors above).");
+	}
+	RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+	bool ok = true;
+	std::map<int, std::vector<Thumb>> worst;
+	const int keep = std::max(0, p_options.thumbnails_per_method);
+	for (int method : methods) {
+		for (size_t i = 0; i < scenes.size() && ok; i++) {
+			double wall = 0.0, gpu = 0.0;
+			Image engine = render_scene(rs, scenes[i], res, method, i == 0, &wall, &gpu, &error);
+			if (engine.is_empty()) {
+				error = "Engine (" + method_name(method) + "): " + error;
+				ok = false;
+				break;
+			}
+			ImageMetrics::Result m;
+			if (!ImageMetrics::compare(engine, references[i], &m, &error)) {
+				error = "Scene " + scenes[i].id + ": " + error;
+				ok = false;
+				break;
+			}
+			const AccuracyScenes::Scene &s = scenes[i];
+			Row row;
+			row.scene_id = s.id;
+			row.receiver = AccuracyScenes::receiver_name(s.receiver);
+			row.roughness = s.roughness;
+			row.metallic = s.metallic;
+			row.light_width = s.light_size.x;
+			row.light_height = s.light_size.y;
+			row.placement = AccuracyScenes::placement_name(s.placement);
+			row.method = method;
+			row.method_name = method_name(method);
+			row.resolution = res;
+			row.rmse = m.rmse;
+			row.relative_mse = m.relative_mse;
+			row.mae = m.mae;
+			row.pearson = m.pearson;
+			row.ssim = m.ssim;
+			row.flip = m.flip;
+			row.hdr_flip = m.has_hdr_flip ? m.hdr_flip : 0.0;
+			row.engine_ms = wall;
+			row.engine_gpu_ms = gpu;
+			row.reference_ms = reference_ms[i];
+			row.reference_samples_per_pixel = reference_spp[i];
+			r_rows->push_back(row);
+			if (p_options.progress) {
+				printf("[%s %zu/%zu] %s: FLIP %.4f RMSE %.4f SSIM %.4f\n", row.method_name.c_str(), i + 1, scenes.size(), s.id.c_str(), m.flip, m.rmse, m.ssim);
+				fflush(stdout);
+			}
+			if (!p_options.thumbnails_dir.empty() && keep > 0) {
+				std::vector<Thumb> &list = worst[method];
+				if (int(list.size()) < keep || m.flip > list.back().flip) {
+					Thumb t;
+					t.flip = m.flip;
+					t.scene = i;
+					t.engine = engine;
+					t.flip_map = m.flip_map;
+					if (int(list.size()) >= keep) {
+						list.pop_back();
+					}
+					list.push_back(std::move(t));
+					std::sort(list.begin(), list.end(), [](const Thumb &a, const Thumb &b) { return a.flip > b.flip; });
+				}
+			}
+		}
+		if (!ok) {
+			break;
+		}
+	}
+	delete rs;
+	if (owned_device) {
+		owned_device->finalize();
+		delete owned_device;
+	}
+	if (!ok) {
+		return fail(error);
+	}
+
+	if (!p_options.thumbnails_dir.empty()) {
+		std::error_code ec;
+		std::filesystem::create_directories(p_options.thumbnails_dir, ec);
+		for (const auto &entry : worst) {
+			for (const Thumb &t : entry.second) {
+				String path = p_options.thumbnails_dir + "/" + method_name(entry.first) + "_" + scenes[t.scene].id + ".png";
+				if (!write_thumbnail(t.engine, references[t.scene], t.flip_map, path, &error)) {
+					return fail(error);
+				}
+			}
+		}
+	}
+	if (!p_options.csv_path.empty() && !write_csv(p_options.csv_path, *r_rows, &error)) {
+		return fail(error);
+	}
+	return true;
+}
+
+bool AccuracySuite::write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error) {
+	FILE *f = fopen(p_path.c_str(), "w");
+	if (!f) {
+		if (r_error) {
+			*r_error = "Cannot open '" + p_path + "' for writing the accuracy CSV.";
+		}
+		return false;
+	}
+	fprintf(f, "scene_id,receiver,roughness,metallic,light_width,light_height,placement,method,method_name,resolution,rmse,relative_mse,mae,pearson,ssim,flip,hdr_flip,engine_ms,engine_gpu_ms,reference_ms,reference_samples_per_pixel\n");
+	for (const Row &r : p_rows) {
+		fprintf(f, "%s,%s,%g,%g,%g,%g,%s,%d,%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.3f,%.3f,%.1f,%.1f\n", csv_field(r.scene_id).c_str(), csv_field(r.receiver).c_str(), r.roughness, r.metallic, r.light_width, r.light_height,
+				csv_field(r.placement).c_str(), r.method, csv_field(r.method_name).c_str(), r.resolution, r.rmse, r.relative_mse, r.mae, r.pearson, r.ssim, r.flip, r.hdr_flip, r.engine_ms, r.engine_gpu_ms,
+				r.reference_ms, r.reference_samples_per_pixel);
+	}
+	bool ok = fclose(f) == 0;
+	if (!ok && r_error) {
+		*r_error = "Writing the accuracy CSV '" + p_path + "' failed.";
+	}
+	return ok;
+}
+
+String AccuracySuite::summary_table(const std::vector<Row> &p_rows) {
+	struct Stats {
+		int count = 0;
+		double flip_sum = 0.0, flip_max = -1.0, rmse_sum = 0.0, rmse_max = 0.0, ssim_sum = 0.0, ssim_min = 2.0;
+		String worst;
+	};
+	// Methods in order of first appearance, roughness ascending.
+	std::vector<String> methods;
+	std::map<String, std::map<float, Stats>> table;
+	for (const Row &r : p_rows) {
+		if (std::find(methods.begin(), methods.end(), r.method_name) == methods.end()) {
+			methods.push_back(r.method_name);
+		}
+		Stats &s = table[r.method_name][r.roughness];
+		s.count++;
+		s.flip_sum += r.flip;
+		s.rmse_sum += r.rmse;
+		s.ssim_sum += r.ssim;
+		s.rmse_max = std::max(s.rmse_max, r.rmse);
+		s.ssim_min = std::min(s.ssim_min, r.ssim);
+		if (r.flip > s.flip_max) {
+			s.flip_max = r.flip;
+			s.worst = r.scene_id;
+		}
+	}
+	String out = "| method | roughness | scenes | FLIP mean | FLIP worst | RMSE mean | RMSE worst | SSIM mean | SSIM worst | worst scene (FLIP) |\n";
+	out += "|---|---|---|---|---|---|---|---|---|---|\n";
+	for (const String &m : methods) {
+		for (const auto &entry : table[m]) {
+			const Stats &s = entry.second;
+			out += vformat("| %s | %g | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %s |\n", m.c_str(), entry.first, s.count, s.flip_sum / s.count, s.flip_max, s.rmse_sum / s.count, s.rmse_max, s.ssim_sum / s.count, s.ssim_min, s.worst.c_str());
+		}
+	}
+	return out;
+}
+
+bool AccuracySuite::write_thumbnail(const Image &p_engine, const Image &p_reference, const std::vector<float> &p_flip_map, const String &p_path, String *r_error) {
+	const int w = p_engine.get_width(), h = p_engine.get_height();
+	if (w <= 0 || h <= 0 || p_reference.get_width() != w || p_reference.get_height() != h || p_flip_map.size() != size_t(w) * h) {
+		if (r_error) {
+			*r_error = "Thumbnail '" + p_path + "': the engine image, reference image and FLIP map must have the same non-zero size.";
+		}
+		return false;
+	}
+	const int scale = std::max(1, (96 + h - 1) / h);
+	const int gap = 2 * scale;
+	const int tw = 3 * w * scale + 2 * gap, th = h * scale;
+	std::vector<uint8_t> rgba(size_t(tw) * th * 4, 255);
+	auto put = [&](int p_x, int p_y, uint8_t p_r, uint8_t p_g, uint8_t p_b) {
+		uint8_t *p = &rgba[(size_t(p_y) * tw + p_x) * 4];
+		p[0] = p_r;
+		p[1] = p_g;
+		p[2] = p_b;
+		p[3] = 255;
+	};
+	for (int y = 0; y < th; y++) {
+		for (int x = 0; x < w * scale; x++) {
+			const int sx = x / scale, sy = y / scale;
+			Color e = p_engine.get_pixel(sx, sy), r = p_reference.get_pixel(sx, sy);
+			put(x, y, Tonemap::map_channel(e.r, 0.0f, Tonemap::MODE_LINEAR), Tonemap::map_channel(e.g, 0.0f, Tonemap::MODE_LINEAR), Tonemap::map_channel(e.b, 0.0f, Tonemap::MODE_LINEAR));
+			put(x + w * scale + gap, y, Tonemap::map_channel(r.r, 0.0f, Tonemap::MODE_LINEAR), Tonemap::map_channel(r.g, 0.0f, Tonemap::MODE_LINEAR), Tonemap::map_channel(r.b, 0.0f, Tonemap::MODE_LINEAR));
+			Color c = Heatmap::map(p_flip_map[size_t(sy) * w + sx]);
+			auto to8 = [](float p_v) { return uint8_t(std::min(255.0f, std::max(0.0f, p_v * 255.0f + 0.5f))); };
+			put(x + 2 * (w * scale + gap), y, to8(c.r), to8(c.g), to8(c.b));
+		}
+	}
+	return PNGWriter::save_rgba8(rgba, tw, th, p_path, r_error);
+}
