@@ -11,8 +11,9 @@
 /*         one-sided: only points strictly in front (local -Z) are lit;   */
 /*   W(d) = (max(1 - (d / r)^4, 0)^2)^attenuation, d = distance from x to */
 /*         the closest point of the rectangle, d >= r gives exactly 0.    */
-/* The integral itself (integrate_adaptive over the rectangle's [0,1]^2   */
-/* parameterisation, with shadow rays) is in reference_renderer.cpp.      */
+/* The integral itself (solid-angle and GGX samples combined by MIS,      */
+/* shadow rays by callback) is area_light_integrate() in                  */
+/* area_light_integrator.h.                                               */
 
 #pragma once
 

@@ -48,6 +48,10 @@ struct ReferenceRenderer::Frame {
 	std::atomic<int> rows_done{ 0 };
 	std::atomic<uint64_t> shadow_rays{ 0 };
 	std::atomic<uint64_t> area_samples{ 0 };
+	std::atomic<uint64_t> area_integrals{ 0 };
+	std::atomic<uint64_t> area_converged{ 0 };
+	std::vector<float> pixel_relative_error; // One per pixel, each written by one worker.
+	std::vector<uint32_t> pixel_area_samples;
 	std::mutex progress_mutex;
 	int progress_printed = -1;
 };
@@ -415,6 +419,8 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 	threads = std::max(1, std::min(threads, frame.height));
 	frame.thread_count = threads;
 	std::vector<float> pixels(size_t(frame.width) * frame.height * 4, 0.0f);
+	frame.pixel_relative_error.assign(size_t(frame.width) * frame.height, 0.0f);
+	frame.pixel_area_samples.assign(size_t(frame.width) * frame.height, 0u);
 	std::vector<std::thread> workers;
 	for (int t = 1; t < threads; t++) {
 		workers.emplace_back([&frame, &pixels, t]() { _render_rows(frame, t, pixels); });
@@ -437,14 +443,17 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 	last_stats.primary_rays = uint64_t(frame.width) * frame.height;
 	last_stats.shadow_rays = frame.shadow_rays.load();
 	last_stats.area_light_samples = frame.area_samples.load();
+	last_stats.area_light_integrals = frame.area_integrals.load();
+	last_stats.area_light_integrals_converged = frame.area_converged.load();
+	last_stats.pixel_relative_error.swap(frame.pixel_relative_error);
+	last_stats.pixel_area_samples.swap(frame.pixel_area_samples);
 	last_stats.triangles = triangles;
 	last_stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels) {
 	Frame &frame = const_cast<Frame &>(p_frame); // Only the atomics and the progress state change.
-	uint64_t shadow_rays = 0;
-	uint64_t area_samples = 0;
+	PixelCounters totals;
 	while (true) {
 		int y = frame.next_row.fetch_add(1);
 		if (y >= frame.height) {
@@ -453,7 +462,14 @@ void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::ve
 		for (int x = 0; x < frame.width; x++) {
 			uint64_t index = uint64_t(y) * frame.width + x;
 			ReferenceRNG rng = ReferenceRNG::for_pixel(frame.options.seed, index);
-			Color c = _shade_pixel(frame, x, y, rng, shadow_rays, area_samples);
+			PixelCounters counters;
+			Color c = _shade_pixel(frame, x, y, rng, counters);
+			totals.shadow_rays += counters.shadow_rays;
+			totals.area_samples += counters.area_samples;
+			totals.area_integrals += counters.area_integrals;
+			totals.area_converged += counters.area_converged;
+			frame.pixel_relative_error[index] = counters.max_relative_error;
+			frame.pixel_area_samples[index] = counters.pixel_samples;
 			float *p = &r_pixels[index * 4];
 			p[0] = c.r;
 			p[1] = c.g;
@@ -472,8 +488,10 @@ void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::ve
 			}
 		}
 	}
-	frame.shadow_rays.fetch_add(shadow_rays);
-	frame.area_samples.fetch_add(area_samples);
+	frame.shadow_rays.fetch_add(totals.shadow_rays);
+	frame.area_samples.fetch_add(totals.area_samples);
+	frame.area_integrals.fetch_add(totals.area_integrals);
+	frame.area_converged.fetch_add(totals.area_converged);
 }
 
 // True when a segment from p_origin along unit p_dir up to p_tfar hits any surface (both faces).
@@ -497,86 +515,32 @@ static bool _reference_occluded(RTCScene p_scene, const Vector3 &p_origin, const
 	return ray.tfar < 0.0f; // Embree sets tfar to -inf on a hit.
 }
 
-// Shading inputs of one surface point, shared by every sample of an area-light integral.
-struct ReferenceAreaShadingPoint {
-	Vector3 vertex; // World position.
-	Vector3 N; // Shading normal (unit).
-	Vector3 V; // Towards the eye (unit).
-	Vector3 ng; // Geometric normal (unit), for the shadow-ray offset.
-	float offset = 0.0f; // Shadow-ray origin offset (m).
-	uint32_t diffuse_mode = BRDF_DIFFUSE_BURLEY;
-	float roughness = 1.0f;
-	Vector3 f0;
-	float f90 = 1.0f;
-	bool specular_enabled = true;
-	Vector3 diffuse_weight; // albedo * (1 - metallic): what the diffuse sum is multiplied by.
-};
-
-// Outgoing radiance at p_point from one area light (added to r_radiance):
-//   W(d) * integral over the rectangle of f(l, v) L_e (n.l) dw,
-// with dw = cos(theta_light) dA / dist^2 and the rectangle parameterised by (u, v) in [0,1]^2 (so the
-// integrand carries the factor a * b). Adaptive stratified integration until the relative standard
-// error target or the sample cap; one shadow ray per sample when shadows are on. Points on or behind
-// the light plane, outside the range, or a zero-area light give exactly 0.
-static void _reference_shade_area_light(RTCScene p_scene, const ReferenceRenderOptions &p_options, const AreaLightData &p_light, const ReferenceAreaShadingPoint &p_point, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_samples, Vector3 &r_radiance) {
-	const float area = p_light.get_area();
-	if (!(area > 0.0f) || p_light.radiance == Vector3()) {
-		return;
-	}
-	if (!(area_light_front_distance(p_light, p_point.vertex) > 0.0f)) {
-		return; // One-sided: nothing on or behind the light plane is lit.
-	}
-	const float window = area_light_window(area_light_closest_distance(p_light, p_point.vertex), p_light.range, p_light.attenuation);
-	if (window <= 0.0f) {
-		return;
-	}
-	const bool shadows = p_options.shadows;
-	uint64_t shadow_rays = 0;
-	ReferenceIntegrand integrand = [&](double p_u, double p_v, double *r_value) {
-		r_value[0] = r_value[1] = r_value[2] = 0.0;
-		const Vector3 sample = p_light.center + p_light.axis_x * float((p_u - 0.5) * p_light.size_x) + p_light.axis_y * float((p_v - 0.5) * p_light.size_y);
-		const Vector3 to_light = sample - p_point.vertex;
-		const float dist2 = to_light.length_squared();
-		if (!(dist2 > 0.0f)) {
-			return;
-		}
-		const float dist = std::sqrt(dist2);
-		const Vector3 L = to_light / dist;
-		const float cos_light = -L.dot(p_light.emit_dir);
-		if (cos_light <= 0.0f || p_point.N.dot(L) <= 0.0f) {
-			return;
-		}
-		if (shadows) {
-			const Vector3 side = p_point.ng.dot(L) >= 0.0f ? p_point.ng : -p_point.ng;
-			const Vector3 origin = p_point.vertex + side * p_point.offset;
-			const Vector3 to_sample = sample - origin;
-			const float d = to_sample.length();
-			if (d > 2.0f * p_point.offset) {
-				shadow_rays++;
-				if (_reference_occluded(p_scene, origin, to_sample / d, d - p_point.offset)) {
-					return;
-				}
-			}
-		}
-		// Radiance arriving per unit (u, v): L_e * dw/(du dv) = L_e * cos_light * area / dist^2.
-		const Vector3 incoming = p_light.radiance * (cos_light * area / dist2);
-		Vector3 diffuse, specular;
-		light_compute(p_point.N, L, p_point.V, incoming, p_light.specular_amount, p_point.diffuse_mode, p_point.roughness, p_point.f0, p_point.f90, p_point.specular_enabled, diffuse, specular);
-		const Vector3 out = diffuse * p_point.diffuse_weight + specular;
-		r_value[0] = out.x;
-		r_value[1] = out.y;
-		r_value[2] = out.z;
-	};
+// Outgoing radiance at the shading point from one area light, added to r_radiance: the estimator of
+// area_light_integrator.h (options.area_sampling; MIS by default) with the adaptive stopping rule of
+// the options, and one shadow ray per sample (Embree) when shadows are on.
+static void _reference_shade_area_light(RTCScene p_scene, const ReferenceRenderOptions &p_options, const AreaLightData &p_light, const AreaLightShadingPoint &p_point, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_samples, uint64_t &r_integrals, uint64_t &r_converged, float &r_max_relative_error, Vector3 &r_radiance) {
 	AdaptiveIntegrationSettings settings;
 	settings.max_samples = std::max(p_options.max_samples, 1);
 	settings.target_relative_error = p_options.target_relative_error;
-	AdaptiveIntegrationResult result = integrate_adaptive(integrand, 3, settings, r_rng);
-	r_shadow_rays += shadow_rays;
-	r_samples += uint64_t(result.samples);
-	r_radiance += Vector3(float(result.value[0]), float(result.value[1]), float(result.value[2])) * window;
+	AreaLightOcclusionTest occluded;
+	if (p_options.shadows) {
+		occluded = [p_scene](const Vector3 &p_origin, const Vector3 &p_dir, float p_max_distance) {
+			return _reference_occluded(p_scene, p_origin, p_dir, p_max_distance);
+		};
+	}
+	const AreaLightIntegral integral = area_light_integrate(p_light, p_point, p_options.area_sampling, settings, r_rng, occluded);
+	if (!integral.evaluated) {
+		return;
+	}
+	r_shadow_rays += integral.shadow_rays;
+	r_samples += uint64_t(integral.samples);
+	r_integrals++;
+	r_converged += integral.converged ? 1 : 0;
+	r_max_relative_error = std::max(r_max_relative_error, float(integral.relative_error));
+	r_radiance += integral.radiance;
 }
 
-Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_area_samples) {
+Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters) {
 	// Pixel centre in Vulkan NDC (y down, top row first), unprojected at depth 0 (near) and 1 (far):
 	// the segment the rasteriser's depth range covers for this pixel.
 	float ndc_x = (float(p_x) + 0.5f) / float(p_frame.width) * 2.0f - 1.0f;
@@ -672,7 +636,7 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 	// over the rectangle (_reference_shade_area_light), whose result (diffuse already weighted by
 	// albedo * (1 - metallic), plus specular) is accumulated in area_light.
 	Vector3 area_light;
-	ReferenceAreaShadingPoint point;
+	AreaLightShadingPoint point;
 	point.vertex = vertex;
 	point.N = N;
 	point.V = V;
@@ -687,7 +651,9 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 	for (const Light &light : p_frame.lights) {
 		if (light.type == RS::LIGHT_AREA) {
 			if ((light.area.cull_mask & s.layer_mask) != 0) {
-				_reference_shade_area_light(p_frame.scene, p_frame.options, light.area, point, r_rng, r_shadow_rays, r_area_samples, area_light);
+				const uint64_t before = r_counters.area_samples;
+				_reference_shade_area_light(p_frame.scene, p_frame.options, light.area, point, r_rng, r_counters.shadow_rays, r_counters.area_samples, r_counters.area_integrals, r_counters.area_converged, r_counters.max_relative_error, area_light);
+				r_counters.pixel_samples += uint32_t(r_counters.area_samples - before);
 			}
 			continue;
 		}
@@ -723,7 +689,7 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 				RTCIntersectContext ctx;
 				rtcInitIntersectContext(&ctx);
 				rtcOccluded1(p_frame.scene, &ctx, &ray);
-				r_shadow_rays++;
+				r_counters.shadow_rays++;
 				if (ray.tfar < 0.0f) {
 					continue; // Occluded (Embree sets tfar to -inf).
 				}

@@ -16,6 +16,7 @@
 
 #include "core/templates/rid_owner.h"
 #include "modules/reference/area_light.h"
+#include "modules/reference/area_light_integrator.h"
 #include "modules/reference/forward_lights.h"
 #include "modules/reference/sampling.h"
 #include "servers/rendering/renderer_scene_render.h"
@@ -36,6 +37,9 @@ struct ReferenceRenderOptions {
 	int max_samples = 4096;
 	// Adaptive integrals stop when their relative standard error is below this (0.002 = 0.2 %).
 	float target_relative_error = 0.002f;
+	// How area lights are sampled (area_light_integrator.h). MIS (solid angle + GGX visible normals)
+	// is robust for glossy lobes under large lights; AREA is the first reference's uniform area sampling.
+	ReferenceBRDF::AreaLightSampling area_sampling = ReferenceBRDF::AREA_LIGHT_SAMPLING_MIS;
 	// Trace shadow rays (hard shadows for omni and spot lights, one ray per sample of an area light).
 	// Off: every light is unoccluded, as in the GPU renderer, which has no shadows yet.
 	bool shadows = false;
@@ -54,7 +58,13 @@ struct ReferenceRenderStats {
 	int threads = 0;
 	uint64_t primary_rays = 0;
 	uint64_t shadow_rays = 0;
-	uint64_t area_light_samples = 0; // Integrand evaluations of all area-light integrals.
+	uint64_t area_light_samples = 0; // Directions sampled by all area-light integrals (a MIS pair counts 2).
+	uint64_t area_light_integrals = 0; // Area-light integrals evaluated (pixel x light, zero ones excluded).
+	uint64_t area_light_integrals_converged = 0; // Those that met the error target before the cap.
+	// Per pixel (row-major, top row first): the largest relative standard error of the pixel's area-light
+	// integrals (0 without any), and the directions they sampled.
+	std::vector<float> pixel_relative_error;
+	std::vector<uint32_t> pixel_area_samples;
 	uint64_t triangles = 0;
 	double seconds = 0.0; // Wall time (reported, never asserted).
 };
@@ -143,8 +153,18 @@ private:
 	ShadingMaterial _resolve_material(RID p_material) const;
 	bool _build_surface(const RS::SurfaceData &p_data, const Transform3D &p_xform, Surface &r_surface) const;
 	bool _make_light(const RenderSceneData::LightInstance &p_instance, Light &r_light) const;
+	// Counters of one pixel's shading (summed per thread, then per frame).
+	struct PixelCounters {
+		uint64_t shadow_rays = 0;
+		uint64_t area_samples = 0;
+		uint64_t area_integrals = 0;
+		uint64_t area_converged = 0;
+		float max_relative_error = 0.0f; // This pixel only.
+		uint32_t pixel_samples = 0; // This pixel only.
+	};
+
 	static void _render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels);
-	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, uint64_t &r_area_samples);
+	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters);
 };
 
 // Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres

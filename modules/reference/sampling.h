@@ -9,6 +9,9 @@
 /* a vector-valued integral over [0,1]^2 with stratified (jittered)       */
 /* samples in rounds until the relative standard error of every channel   */
 /* is below a target (area lights use it; the self-tests check it).       */
+/* integrate_adaptive_points() does the same for integrands of several    */
+/* points of the unit square (one sample per strategy of multiple         */
+/* importance sampling), each stratified, the strata paired at random.    */
 
 #pragma once
 
@@ -75,6 +78,17 @@ struct AdaptiveIntegrationResult {
 // error is the spread of the per-round estimates (independent, identically distributed) over
 // sqrt(rounds), which is unbiased for stratified rounds where the per-sample variance is not.
 AdaptiveIntegrationResult integrate_adaptive(const ReferenceIntegrand &p_integrand, int p_channels, const AdaptiveIntegrationSettings &p_settings, ReferenceRNG &r_rng);
+
+// An integrand of several points of the unit square (e.g. one sample of each strategy of multiple
+// importance sampling): point k is (p_points[2k], p_points[2k + 1]). Writes p_channels values to
+// r_value. The integral is the mean over ([0,1]^2)^point_count.
+typedef std::function<void(const double *p_points, double *r_value)> ReferenceIntegrandPoints;
+
+// integrate_adaptive for a multi-point integrand (1..8 points): each round draws strata_per_axis^2
+// jittered samples of every point, the strata of points 1.. visited in a random order (a permutation
+// per point and round), so the points are independent while each is stratified on its own.
+// max_samples and AdaptiveIntegrationResult::samples count integrand evaluations.
+AdaptiveIntegrationResult integrate_adaptive_points(const ReferenceIntegrandPoints &p_integrand, int p_point_count, int p_channels, const AdaptiveIntegrationSettings &p_settings, ReferenceRNG &r_rng);
 
 // Plain estimate with exactly p_sample_count samples: independent uniform samples, or (p_stratified)
 // a jittered grid of floor(sqrt(N))^2 samples plus uniform ones for the rest. Returns the mean.

@@ -6,10 +6,14 @@
 /* (the configuration factor of a differential area to a parallel        */
 /* rectangle), the one-sided emission (exactly 0 behind the light), the   */
 /* range window W(d), zero-size lights (exactly 0, no NaN) and the energy */
-/* normalisation (far-field radiance independent of the size). Dummy      */
-/* storages + ReferenceRenderer; no GPU and no scene cull.                */
+/* normalisation (far-field radiance independent of the size); and the   */
+/* glossy case (roughness 0.05 metal under a large close light): MIS of   */
+/* solid-angle and GGX samples converges per pixel, agrees with a brute-  */
+/* force estimate, beats light-only sampling at equal cost, and is        */
+/* deterministic. Dummy storages + ReferenceRenderer; no GPU, no cull.    */
 
 #include "modules/reference/area_light.h"
+#include "modules/reference/area_light_integrator.h"
 #include "modules/reference/reference_renderer.h"
 
 #include "core/math/math_funcs.h"
@@ -327,6 +331,275 @@ TEST_CASE("[Reference][AreaLight3D] normalize_energy: doubling the size at fixed
 			CHECK(small == doctest::Approx(far_field).epsilon(0.01));
 		}
 	}
+}
+
+// The accuracy suite's hardest row (plane_r0.05_m1_4x4_close): a metal plane (roughness 0.05, sRGB
+// albedo (0.9, 0.75, 0.6)) under a 4 x 4 light 0.4 m above the origin, facing down, seen from
+// (0, 2.5, 3.2) towards (0, 0.2, 0) with 55 degrees; p_size x p_size pixels.
+struct GlossyFixture : AreaFixture {
+	Transform3D light_xform;
+	RID light;
+	const float energy = 2.0f;
+	const Vector2 light_size = Vector2(4, 4);
+
+	explicit GlossyFixture(int p_size) :
+			AreaFixture(6.0f, p_size) {
+		RS::MaterialParams params;
+		params.albedo = Color(0.9f, 0.75f, 0.6f, 1.0f);
+		params.metallic = 1.0f;
+		params.roughness = 0.05f;
+		params.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
+		material_storage.material_set_params(materials[0], params);
+		const Vector3 eye(0, 2.5f, 3.2f);
+		scene.cam_transform = Transform3D(Basis::looking_at(Vector3(0, 0.2f, 0) - eye, Vector3(0, 1, 0)), eye);
+		scene.fovy_degrees = 55.0f;
+		scene.cam_projection = Projection::create_perspective(55.0f, 1.0f, scene.z_near, scene.z_far);
+		light_xform = Transform3D(facing_down(), Vector3(0, 0.4f, 0));
+		light = add_area(energy, light_size, 1000.0f, 0.0f, true, light_xform);
+		ReferenceRenderOptions options = renderer.get_options();
+		options.target_relative_error = 0.002f; // The reference's defaults.
+		options.max_samples = 4096;
+		renderer.set_options(options);
+	}
+	// The light as the renderer sees it.
+	ReferenceBRDF::AreaLightData light_data() {
+		ReferenceBRDF::AreaLightData d;
+		ReferenceBRDF::area_light_set_frame(d, light_xform);
+		d.size_x = light_size.x;
+		d.size_y = light_size.y;
+		d.radiance = ReferenceBRDF::area_light_emitted_radiance(Color(1, 1, 1), energy, false, light_size, true);
+		d.range = 1000.0f;
+		d.attenuation = 0.0f;
+		d.specular_amount = light_storage.light_get_param(light, RS::LIGHT_PARAM_SPECULAR);
+		return d;
+	}
+	// The shading point of pixel (x, y) as the renderer sets it up (metal: no diffuse term).
+	ReferenceBRDF::AreaLightShadingPoint shading_point(int p_x, int p_y) const {
+		ReferenceBRDF::AreaLightShadingPoint p;
+		p.vertex = ground_point(p_x, p_y);
+		p.N = Vector3(0, 1, 0);
+		p.ng = p.N;
+		p.V = (scene.cam_transform.origin - p.vertex).normalized();
+		p.diffuse_mode = ReferenceBRDF::BRDF_DIFFUSE_LAMBERT;
+		p.roughness = 0.05f;
+		const Color albedo = Color(0.9f, 0.75f, 0.6f).srgb_to_linear();
+		p.f0 = Vector3(albedo.r, albedo.g, albedo.b);
+		p.f90 = ReferenceBRDF::brdf_specular_f90(p.f0, 1.0f);
+		p.specular_enabled = true;
+		p.diffuse_weight = Vector3();
+		return p;
+	}
+	// Brute force at pixel (x, y): 2^18 stratified samples of p_sampling (64 rounds of 64 x 64 strata),
+	// with its own random stream.
+	Vector3 brute_force(int p_x, int p_y, ReferenceBRDF::AreaLightSampling p_sampling, double *r_relative_error, int p_samples = 1 << 18) {
+		AdaptiveIntegrationSettings settings;
+		settings.strata_per_axis = 64;
+		settings.min_rounds = 8;
+		settings.max_samples = p_samples * 3; // Directions: up to three per MIS evaluation.
+		settings.target_relative_error = 0.0;
+		settings.absolute_error_floor = 0.0;
+		ReferenceRNG rng(12345, uint64_t(p_y) * 1000 + p_x);
+		const ReferenceBRDF::AreaLightIntegral r = ReferenceBRDF::area_light_integrate(light_data(), shading_point(p_x, p_y), p_sampling, settings, rng);
+		*r_relative_error = r.relative_error;
+		return r.radiance;
+	}
+};
+
+static const int GLOSSY_SIZE = 24;
+// Pixels of the glossy image checked against the brute force: inside the highlight, near its rim and
+// in the dark part of the plane.
+static const int GLOSSY_PIXELS[][2] = { { 12, 20 }, { 4, 22 }, { 20, 16 }, { 12, 12 }, { 2, 10 }, { 12, 6 } };
+
+TEST_CASE("[Reference][AreaLight3D] glossy metal under a large close light: MIS converges per pixel and matches a brute-force estimate within 1 %") {
+	GlossyFixture f(GLOSSY_SIZE);
+	const std::vector<float> image = f.render();
+	const ReferenceRenderStats &stats = f.renderer.get_last_stats();
+	REQUIRE(stats.pixel_relative_error.size() == size_t(GLOSSY_SIZE * GLOSSY_SIZE));
+	int below = 0, lit = 0;
+	float worst = 0.0f, brightest = 0.0f, worst_absolute = 0.0f;
+	for (int i = 0; i < GLOSSY_SIZE * GLOSSY_SIZE; i++) {
+		CHECK(std::isfinite(image[i * 4]));
+		brightest = std::max(brightest, image[i * 4]);
+	}
+	for (int i = 0; i < GLOSSY_SIZE * GLOSSY_SIZE; i++) {
+		lit += image[i * 4] > 0.0f ? 1 : 0;
+		below += stats.pixel_relative_error[i] <= 0.002f ? 1 : 0;
+		worst = std::max(worst, stats.pixel_relative_error[i]);
+		// The red channel carries the largest relative error of this albedo's three.
+		worst_absolute = std::max(worst_absolute, stats.pixel_relative_error[i] * image[i * 4]);
+	}
+	MESSAGE("pixels below the 0.2 % target: ", below, " of ", GLOSSY_SIZE * GLOSSY_SIZE, ", worst ", worst, ", worst standard error / brightest pixel ", worst_absolute / brightest, ", integrals converged ", stats.area_light_integrals_converged, " of ", stats.area_light_integrals, ", directions per pixel ", double(stats.area_light_samples) / (GLOSSY_SIZE * GLOSSY_SIZE));
+	CHECK(lit > GLOSSY_SIZE * GLOSSY_SIZE / 2);
+	// Nearly all pixels are certified to 0.2 %. The rest (measured: 33 of 576) stop at the cap: the rim
+	// of the highlight, where the narrow lobe is cut by the light's edge (a hit / miss boundary for the
+	// GGX samples), and the lobe's far tail beyond the edge (down to 1e-5 of the highlight); their
+	// standard error stays below 0.5 % of the brightest pixel (measured 0.33 %).
+	CHECK(below >= GLOSSY_SIZE * GLOSSY_SIZE * 92 / 100);
+	CHECK(worst_absolute <= 0.005f * brightest);
+	CHECK(stats.area_light_integrals_converged == uint64_t(below));
+
+	int cross_checked = 0;
+	for (const auto &px : GLOSSY_PIXELS) {
+		double brute_error = 0.0;
+		const Vector3 brute = f.brute_force(px[0], px[1], ReferenceBRDF::AREA_LIGHT_SAMPLING_MIS, &brute_error);
+		const float *p = AreaFixture::pixel(image, GLOSSY_SIZE, px[0], px[1]);
+		INFO("pixel ", px[0], ",", px[1], ": reference ", p[0], " ", p[1], " ", p[2], ", brute force ", brute.x, " ", brute.y, " ", brute.z, " (relative error ", brute_error, ")");
+		CHECK(brute_error < 0.001);
+		for (int c = 0; c < 3; c++) {
+			CHECK(std::fabs(double(p[c]) - double(brute[c])) <= 0.01 * std::fabs(double(brute[c])) + 1e-7);
+		}
+		// The brute force itself, against strategies that share nothing with MIS but their own sampler:
+		// GGX samples alone (good inside the highlight) and solid-angle samples alone (good in the tails),
+		// each where its own error estimate is small.
+		const ReferenceBRDF::AreaLightSampling single[2] = { ReferenceBRDF::AREA_LIGHT_SAMPLING_BRDF, ReferenceBRDF::AREA_LIGHT_SAMPLING_SOLID_ANGLE };
+		for (ReferenceBRDF::AreaLightSampling sampling : single) {
+			double error = 0.0;
+			const Vector3 other = f.brute_force(px[0], px[1], sampling, &error);
+			if (error < 0.001) {
+				cross_checked++;
+				INFO("strategy ", int(sampling), ": ", other.x, " (relative error ", error, ")");
+				CHECK(double(other.x) == doctest::Approx(double(brute.x)).epsilon(4.0 * (error + brute_error)));
+			}
+		}
+	}
+	CHECK(cross_checked >= 4);
+}
+
+TEST_CASE("[Reference][AreaLight3D] at equal cost, MIS has a lower error than light-only sampling on a glossy lobe") {
+	GlossyFixture f(GLOSSY_SIZE);
+	// At most 512 directions per pixel for every strategy (MIS: 170 light + 170 GGX + 170 lobe-window
+	// samples), no early stop.
+	ReferenceRenderOptions options = f.renderer.get_options();
+	options.target_relative_error = 0.0f;
+	options.max_samples = 512;
+	const ReferenceBRDF::AreaLightSampling strategies[3] = { ReferenceBRDF::AREA_LIGHT_SAMPLING_MIS, ReferenceBRDF::AREA_LIGHT_SAMPLING_SOLID_ANGLE, ReferenceBRDF::AREA_LIGHT_SAMPLING_AREA };
+	std::vector<float> images[3];
+	for (int s = 0; s < 3; s++) {
+		options.area_sampling = strategies[s];
+		f.renderer.set_options(options);
+		images[s] = f.render();
+		CHECK(f.renderer.get_last_stats().area_light_samples <= uint64_t(512) * f.renderer.get_last_stats().area_light_integrals);
+	}
+	// Relative RMS error over the lit glossy pixels of a 6 x 6 grid, against the brute force.
+	double sq[3] = {};
+	int count = 0;
+	for (int y = 2; y < GLOSSY_SIZE; y += 4) {
+		for (int x = 2; x < GLOSSY_SIZE; x += 4) {
+			double brute_error = 0.0;
+			const Vector3 brute = f.brute_force(x, y, ReferenceBRDF::AREA_LIGHT_SAMPLING_MIS, &brute_error, 1 << 16);
+			CHECK(brute_error < 0.002);
+			if (!(brute.x > 1e-3f)) {
+				continue;
+			}
+			count++;
+			for (int s = 0; s < 3; s++) {
+				const double e = (double(AreaFixture::pixel(images[s], GLOSSY_SIZE, x, y)[0]) - brute.x) / brute.x;
+				sq[s] += e * e;
+			}
+		}
+	}
+	REQUIRE(count >= 10);
+	const double mis = std::sqrt(sq[0] / count), solid = std::sqrt(sq[1] / count), area = std::sqrt(sq[2] / count);
+	MESSAGE("relative RMS error at 512 directions over ", count, " glossy pixels: MIS ", mis, ", solid angle ", solid, ", area ", area);
+	CHECK(mis < 0.5 * solid);
+	CHECK(mis < 0.5 * area);
+	CHECK(mis < 0.01);
+}
+
+TEST_CASE("[Reference][AreaLight3D] the MIS estimator is deterministic: the same image twice and for any thread count") {
+	GlossyFixture f(16);
+	ReferenceRenderOptions options = f.renderer.get_options();
+	options.max_samples = 1024;
+	options.threads = 1;
+	f.renderer.set_options(options);
+	const std::vector<float> first = f.render();
+	const std::vector<float> again = f.render();
+	options.threads = 3;
+	f.renderer.set_options(options);
+	const std::vector<float> threaded = f.render();
+	CHECK(first == again);
+	CHECK(first == threaded);
+	bool any = false;
+	for (size_t i = 0; i < first.size(); i += 4) {
+		any |= first[i] > 0.0f;
+	}
+	CHECK(any);
+	options.seed = 7;
+	f.renderer.set_options(options);
+	CHECK(f.render() != first); // Another seed: other samples.
+}
+
+TEST_CASE("[Reference][AreaLight3D] with shadows on, MIS shadow-tests light and GGX samples alike") {
+	GlossyFixture f(12);
+	// A 1 x 1 occluder at y = 0.2 facing down (invisible to the camera above: back-face culled).
+	RS::SurfaceData occluder;
+	occluder.vertices = { Vector3(-0.5f, 0.2f, -0.5f), Vector3(0.5f, 0.2f, -0.5f), Vector3(0.5f, 0.2f, 0.5f), Vector3(-0.5f, 0.2f, 0.5f) };
+	occluder.normals = { Vector3(0, -1, 0), Vector3(0, -1, 0), Vector3(0, -1, 0), Vector3(0, -1, 0) };
+	occluder.indices = { 0, 2, 1, 0, 3, 2 }; // (c - a) x (b - a) = -Y.
+	RID mesh = f.mesh_storage.mesh_create();
+	f.mesh_storage.mesh_add_surface(mesh, occluder);
+	f.meshes.push_back(mesh);
+	RenderSceneData::GeometryInstance g;
+	g.mesh = mesh;
+	g.material_override = f.materials[0];
+	f.scene.geometry.push_back(g);
+	// A fixed budget, so that both renders draw the same samples and only visibility differs.
+	ReferenceRenderOptions options = f.renderer.get_options();
+	options.target_relative_error = 0.0f;
+	options.max_samples = 384;
+	f.renderer.set_options(options);
+	const std::vector<float> open = f.render();
+	CHECK(f.renderer.get_last_stats().shadow_rays == 0);
+	options.shadows = true;
+	f.renderer.set_options(options);
+	const std::vector<float> shadowed = f.render();
+	const ReferenceRenderStats &stats = f.renderer.get_last_stats();
+	// Every evaluated direction that reaches the light is tested: more rays than light samples alone.
+	CHECK(stats.shadow_rays > stats.area_light_samples / 3);
+	int darker = 0;
+	for (size_t i = 0; i < open.size(); i += 4) {
+		CHECK(shadowed[i] <= open[i]); // Same samples, some of them blocked: never brighter.
+		darker += shadowed[i] < 0.5f * open[i] ? 1 : 0;
+	}
+	CHECK(darker > 3); // The occluder's reflection darkens the highlight.
+}
+
+TEST_CASE("[Reference][AreaLight3D] the spherical-rectangle sampler covers the rectangle's solid angle uniformly") {
+	// A 2 x 1 rectangle at z = -1.5, corner (-0.5, -0.25); the solid angle of the point at the origin by
+	// a fine midpoint rule of cos / r^2 over the area.
+	const Vector3 corner(-0.5f, -0.25f, -1.5f), ex(2, 0, 0), ey(0, 1, 0);
+	ReferenceBRDF::SphericalRectangleSampler sampler;
+	REQUIRE(sampler.setup(Vector3(), corner, ex, ey));
+	double omega = 0.0;
+	const int n = 1000;
+	for (int j = 0; j < n; j++) {
+		for (int i = 0; i < n; i++) {
+			const double x = -0.5 + 2.0 * (i + 0.5) / n, y = -0.25 + (j + 0.5) / n, z = 1.5;
+			const double r2 = x * x + y * y + z * z;
+			omega += z / (r2 * std::sqrt(r2)) * (2.0 / n) * (1.0 / n);
+		}
+	}
+	CHECK(sampler.get_solid_angle() == doctest::Approx(omega).epsilon(1e-5));
+	// Every sample lies on the rectangle, and the pdf is uniform in solid angle (1 / omega): then the
+	// mean of dA/dw = r^2 / cos over the samples estimates area / omega.
+	double mean = 0.0;
+	const int m = 64;
+	for (int j = 0; j < m; j++) {
+		for (int i = 0; i < m; i++) {
+			double q[3];
+			sampler.sample((i + 0.5) / m, (j + 0.5) / m, q);
+			CHECK(q[2] == doctest::Approx(-1.5));
+			CHECK(q[0] >= -0.5 - 1e-9);
+			CHECK(q[0] <= 1.5 + 1e-9);
+			CHECK(q[1] >= -0.25 - 1e-9);
+			CHECK(q[1] <= 0.75 + 1e-9);
+			const double r2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+			mean += (r2 * std::sqrt(r2) / 1.5) * sampler.get_solid_angle() / 2.0;
+		}
+	}
+	CHECK(mean / (m * m) == doctest::Approx(1.0).epsilon(1e-3));
+	// In the rectangle's plane the parameterisation degenerates: setup() refuses (area sampling instead).
+	CHECK_FALSE(sampler.setup(Vector3(0, 0, -1.5f), corner, ex, ey));
 }
 
 } // namespace TestReferenceAreaLight
