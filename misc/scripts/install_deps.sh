@@ -19,6 +19,8 @@ PACKAGES=(
 	doctest-dev
 	# Charts.
 	python3-matplotlib python3-numpy
+	# Python module godot_area (modules/python), built for and tested with /usr/bin/python3.
+	python3-dev python3-pybind11 pybind11-dev
 )
 
 missing=()

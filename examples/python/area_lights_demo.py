@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+# godot-area: builds a scene from nothing with the Python module `godot_area` (a floor, a box,
+# a sphere and two area lights), sweeps one area light across the scene over N frames, renders
+# the last frame and plots the per-pass GPU times of every frame with matplotlib.
+#
+#   scons -Q -j2                       # builds bin/python/godot_area*.so
+#   /usr/bin/python3 examples/python/area_lights_demo.py --frames 40 --png doc/results/python_demo_times.png
+#
+# Without PYTHONPATH the script looks for the module under bin/python*/ of this repository.
+import argparse
+import glob
+import os
+import sys
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+try:
+	import godot_area as ga
+except ImportError:
+	candidates = sorted(glob.glob(os.path.join(ROOT, "bin", "python*", "godot_area*.so")), key=os.path.getmtime, reverse=True)
+	if not candidates:
+		sys.exit("godot_area is not built: run scons (needs python3-pybind11, see misc/scripts/install_deps.sh)")
+	sys.path.insert(0, os.path.dirname(candidates[0]))
+	import godot_area as ga
+
+
+def look_at(eye, target, up=(0.0, 1.0, 0.0)):
+	"""A 3x4 Transform3D (basis rows, then origin) whose -Z axis points from eye to target."""
+	eye, target, up = (np.asarray(v, float) for v in (eye, target, up))
+	back = (eye - target) / np.linalg.norm(eye - target)
+	right = np.cross(up, back)
+	right /= np.linalg.norm(right)
+	basis = np.stack([right, np.cross(back, right), back], axis=1)
+	return np.hstack([basis, eye.reshape(3, 1)])
+
+
+def material(albedo, roughness):
+	m = ga.create("StandardMaterial3D")
+	m.albedo_color = albedo
+	m.roughness = roughness
+	return m
+
+
+def mesh_instance(parent, name, mesh_class, material_, position=(0.0, 0.0, 0.0), **mesh_properties):
+	node = parent.add_child(ga.create("MeshInstance3D"))
+	node.name = name
+	mesh = ga.create(mesh_class)
+	for key, value in mesh_properties.items():
+		mesh.set(key, value)
+	node.mesh = mesh
+	node.material_override = material_
+	node.position = position
+	return node
+
+
+def build_scene():
+	root = ga.create("Node3D")
+	root.name = "AreaLightsDemo"
+
+	env_node = root.add_child(ga.create("WorldEnvironment"))
+	environment = ga.create("Environment")
+	environment.background_mode = 1  # Custom colour.
+	environment.background_color = (0.02, 0.02, 0.03)
+	env_node.environment = environment
+
+	mesh_instance(root, "Floor", "PlaneMesh", material((0.6, 0.6, 0.62), 0.25), size=(10, 10))
+	mesh_instance(root, "Box", "BoxMesh", material((0.75, 0.35, 0.2), 0.6), (-0.8, 0.4, 0.0), size=(0.8, 0.8, 0.8))
+	mesh_instance(root, "Ball", "SphereMesh", material((0.85, 0.85, 0.8), 0.15), (0.9, 0.45, 0.3), radius=0.45, height=0.9)
+
+	camera = root.add_child(ga.create("Camera3D"))
+	camera.name = "Camera"
+	camera.transform = look_at((0.0, 2.6, 4.6), (0.0, 0.4, 0.0))
+	camera.fov = 55.0
+
+	panel = root.add_child(ga.create("AreaLight3D"))  # A ceiling panel, fixed.
+	panel.name = "Panel"
+	panel.transform = look_at((0.0, 2.8, 0.0), (0.0, 0.0, 0.0), up=(0.0, 0.0, -1.0))
+	panel.area_size = (2.0, 1.0)
+	panel.area_range = 8.0
+	panel.light_energy = 1.5
+
+	strip = root.add_child(ga.create("AreaLight3D"))  # A warm light strip that sweeps across.
+	strip.name = "Strip"
+	strip.area_size = (0.3, 1.2)
+	strip.area_range = 6.0
+	strip.light_color = (1.0, 0.7, 0.4)
+	strip.light_energy = 4.0
+	return root
+
+
+def sweep(strip, frame, frames):
+	"""Moves the strip on a half circle around the objects, always facing the centre."""
+	angle = np.pi * frame / max(frames - 1, 1)
+	eye = (2.5 * np.cos(angle), 1.2, 2.5 * np.sin(angle) - 0.5)
+	strip.transform = look_at(eye, (0.0, 0.4, 0.0))
+
+
+def preview(image, exposure=1.0):
+	"""Reinhard tone map and sRGB encoding of a linear HDR RGBA image, for the plot."""
+	rgb = np.clip(image[..., :3] * exposure, 0.0, None)
+	rgb = rgb / (1.0 + rgb)
+	return np.where(rgb <= 0.0031308, 12.92 * rgb, 1.055 * np.power(rgb, 1.0 / 2.4) - 0.055)
+
+
+def main():
+	parser = argparse.ArgumentParser(description=__doc__)
+	parser.add_argument("--frames", type=int, default=40)
+	parser.add_argument("--width", type=int, default=256)
+	parser.add_argument("--height", type=int, default=144)
+	parser.add_argument("--png", default=os.path.join(ROOT, "doc", "results", "python_demo_times.png"))
+	parser.add_argument("--exr", help="also write the last frame as an OpenEXR file")
+	parser.add_argument("--save-scene", help="also write the built scene as a .tscn file")
+	args = parser.parse_args()
+
+	import matplotlib
+
+	matplotlib.use("Agg")
+	import matplotlib.pyplot as plt
+
+	ga.init("rd")
+	scene = ga.get_tree().root.add_child(build_scene())
+	strip = scene.get_node("Strip")
+	if args.save_scene:
+		ga.save_scene(scene, args.save_scene)
+
+	start = time.time()
+	profiles = ga.run_frames(args.frames, lambda frame, tree: sweep(strip, frame, args.frames), args.width, args.height)
+	elapsed = time.time() - start
+	last = ga.render()  # One more frame (the strip stays at its last position), read back.
+	if args.exr:
+		ga.save_exr(last, args.exr)
+
+	passes = list(profiles[0].keys())
+	times = np.array([[p.get(name, 0.0) for name in passes] for p in profiles])
+	print("%d frames at %dx%d in %.2f s (wall, with the Python callback); GPU ms per pass (mean over frames):" % (args.frames, args.width, args.height, elapsed))
+	for i, name in enumerate(passes):
+		print("  %-18s %8.3f" % (name, times[:, i].mean()))
+	print("  %-18s %8.3f" % ("total", times.sum(axis=1).mean()))
+
+	fig, (ax_image, ax_times) = plt.subplots(1, 2, figsize=(11, 3.8), gridspec_kw={"width_ratios": [1, 1.3]})
+	ax_image.imshow(preview(last, exposure=2.0))
+	ax_image.set_title("last frame (%dx%d, two AreaLight3D)" % (args.width, args.height), fontsize=9)
+	ax_image.axis("off")
+	frames = np.arange(args.frames)
+	for i, name in enumerate(passes):
+		ax_times.plot(frames, times[:, i], label="%s (mean %.2f ms)" % (name, times[:, i].mean()), linewidth=1.4)
+	ax_times.plot(frames, times.sum(axis=1), "k--", linewidth=1.0, label="total (mean %.2f ms)" % times.sum(axis=1).mean())
+	ax_times.set_yscale("log")
+	ax_times.set_xlabel("frame (the strip light sweeps a half circle)")
+	ax_times.set_ylabel("GPU time per pass (ms, log scale)")
+	ax_times.set_title("per-pass GPU times from godot_area.run_frames() on %s" % (ga.device_name() or "?"), fontsize=9)
+	ax_times.legend(fontsize=7, loc="center right")
+	ax_times.grid(alpha=0.3)
+	fig.tight_layout()
+	os.makedirs(os.path.dirname(os.path.abspath(args.png)), exist_ok=True)
+	fig.savefig(args.png, dpi=90)
+	print("wrote %s" % args.png)
+	errors = ga.validation_error_count()
+	ga.shutdown()
+	return 1 if errors else 0
+
+
+if __name__ == "__main__":
+	sys.exit(main())

@@ -1,0 +1,85 @@
+/**************************************************************************/
+/*  godot_area_bindings.h                                                 */
+/**************************************************************************/
+/* godot-area: shared pieces of the pybind11 extension `godot_area`.      */
+/* Only the extension's sources (modules/python/godot_area_*.cpp, which  */
+/* SConstruct builds into bin/python[_VARIANT]) include it (pybind11).    */
+/*                                                                        */
+/* Every engine object reaches Python as one wrapper (EngineObject, or    */
+/* its subclass EngineNode for nodes); the same Object* always gives the  */
+/* same Python object. Properties go through ClassDB only.                */
+/* Ownership: RefCounted objects are held by a Ref; a Node is deleted     */
+/* when its last wrapper goes and it has neither a parent nor a tree      */
+/* (the Python side owns orphan nodes); other plain Objects made by       */
+/* create() are deleted with their wrapper.                               */
+
+#pragma once
+
+#include "core/error/error_macros.h"
+#include "core/object/object.h"
+#include "core/object/property_info.h"
+#include "core/object/ref_counted.h"
+#include "core/variant/variant.h"
+
+#include <pybind11/pybind11.h>
+
+#include <vector>
+
+namespace py = pybind11;
+
+class Node;
+
+namespace godot_area_py {
+
+class EngineObject {
+public:
+	Object *object = nullptr; // Null once the engine freed it.
+	Ref<RefCounted> ref;
+	bool owns_object = false;
+
+	// The live object, or a RuntimeError naming what happened.
+	Object *get_checked() const;
+	virtual ~EngineObject();
+};
+
+class EngineNode : public EngineObject {
+public:
+	Node *get_node_checked() const;
+};
+
+// The one Python wrapper of p_object (None for null). p_owns: a plain (non-node, non-refcounted)
+// Object whose wrapper should delete it.
+py::object wrap_object(Object *p_object, bool p_owns = false);
+// Marks the wrappers of p_node and its descendants as freed (call right before the engine deletes them).
+void invalidate_subtree(Node *p_node);
+// Engine shutdown: deletes orphan nodes still held by Python, drops every Ref and marks every
+// wrapper freed, so wrappers that outlive the engine are inert.
+void release_all_wrappers();
+
+// Collects the engine's errors (and warnings) while alive; printing is silenced meanwhile.
+class ErrorCapture {
+	ErrorHandlerList handler;
+
+public:
+	std::vector<String> errors;
+	std::vector<String> warnings;
+	String joined() const;
+	ErrorCapture();
+	~ErrorCapture();
+	ErrorCapture(const ErrorCapture &) = delete;
+	ErrorCapture &operator=(const ErrorCapture &) = delete;
+};
+
+// Variant <-> Python (godot_area_variant.cpp). Vector2/3 <-> tuples, Color <-> tuple of 3/4,
+// Transform3D <-> 3x4 nested lists (a 4x4 or numpy array is accepted), objects <-> wrappers.
+py::object variant_to_python(const Variant &p_value);
+// p_hint: the expected type (a property's), or NIL to guess from the Python value. Throws
+// py::type_error when the value has no Variant form.
+Variant python_to_variant(py::handle p_value, Variant::Type p_hint = Variant::NIL);
+String python_type_name(py::handle p_value);
+
+// Objects (godot_area_object.cpp).
+void bind_objects(py::module_ &p_module);
+py::dict property_info_to_dict(const PropertyInfo &p_info);
+
+} // namespace godot_area_py
