@@ -24,7 +24,10 @@
 #include "drivers/png/png_writer.h"
 #include "editor/gizmo_overlay.h"
 #include "main/demo_scene.gen.h"
+#include "core/config/project_settings.h"
 #include "modules/accuracy/accuracy_command.h"
+#include "modules/benchmark/methods_sweep_command.h"
+#include "modules/benchmark/shadows_sweep_command.h"
 #include "modules/gltf/register_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/metrics/image_metrics.h"
@@ -119,6 +122,7 @@ void _print_usage() {
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
+			"  godot-area bench --sweep methods|shadows [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
@@ -126,7 +130,8 @@ void _print_usage() {
 			"  godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--polynomial [--glsl PATH]]\n"
 			"  godot-area info\n"
 			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
-			"GODOT_AREA_VALIDATION=1 enables the validation layer.\n");
+			"GODOT_AREA_VALIDATION=1 enables the validation layer. --setting name=value overrides a project setting\n"
+			"(e.g. rendering/lights_and_shadows/area_light_error_budget=0.02).\n");
 }
 
 // Options that take a value, per command; anything else starting with "-" is an error.
@@ -426,6 +431,22 @@ int _command_compare(const Args &p_args) {
 } // namespace
 
 int Main::run(int p_argc, char **p_argv) {
+	// Project settings given as --setting name=value (anywhere on the line) apply to every command.
+	std::vector<char *> argv_rest;
+	for (int i = 0; i < p_argc; i++) {
+		if (String(p_argv[i]) == "--setting") {
+			String error;
+			if (i + 1 >= p_argc || !ProjectSettings::get_singleton()->parse_override(p_argv[i + 1], &error)) {
+				fprintf(stderr, "godot-area: --setting needs name=value with a registered setting: %s\n", error.c_str());
+				return 2;
+			}
+			i++;
+			continue;
+		}
+		argv_rest.push_back(p_argv[i]);
+	}
+	p_argc = int(argv_rest.size());
+	p_argv = argv_rest.data();
 	if (p_argc >= 2 && String(p_argv[1]) == "ltc-fit") {
 		// The LTC LUT fitter has its own options (modules/ltc_fit/ltc_fit_command.h).
 		return ltc_fit_command(std::vector<String>(p_argv + 2, p_argv + p_argc));
@@ -435,6 +456,26 @@ int Main::run(int p_argc, char **p_argv) {
 		if (std::find(rest.begin(), rest.end(), String("--accuracy")) != rest.end()) {
 			// The accuracy suite (modules/accuracy) makes its own servers, so it runs before Main::setup().
 			return accuracy_command(rest);
+		}
+		auto sweep = std::find(rest.begin(), rest.end(), String("--sweep"));
+		if (sweep != rest.end()) {
+			// bench --sweep methods|shadows: benchmark sweeps with their own servers (modules/benchmark).
+			String what = (sweep + 1) != rest.end() ? *(sweep + 1) : String();
+			std::vector<String> sweep_args;
+			for (auto it = rest.begin(); it != rest.end(); ++it) {
+				if (it == sweep || it == sweep + 1) {
+					continue;
+				}
+				sweep_args.push_back(*it);
+			}
+			if (what == "methods") {
+				return methods_sweep_command(sweep_args);
+			}
+			if (what == "shadows") {
+				return shadows_sweep_command(sweep_args);
+			}
+			fprintf(stderr, "godot-area bench: --sweep needs 'methods' or 'shadows', got '%s'\n", what.c_str());
+			return 2;
 		}
 	}
 	Args args;

@@ -161,6 +161,8 @@ public:
 		LIGHT_AREA_SHADING_LTC_POLYNOMIAL, // LTC with the matrix from a fitted polynomial instead of the LUT.
 		LIGHT_AREA_SHADING_MRP, // Most representative point (Drobot 2014; thesis section 5.3).
 		LIGHT_AREA_SHADING_STOCHASTIC, // Monte Carlo, area_stochastic_samples per light (thesis section 5.2).
+		LIGHT_AREA_SHADING_AUTO, // Per light per frame, the cheapest method whose predicted error fits the project's
+		// rendering/lights_and_shadows/area_light_error_budget (resolved on the CPU; the GPU never sees AUTO).
 		LIGHT_AREA_SHADING_MAX, // Keep last: the number of methods (append new ones above).
 	};
 	// Bounds of light_area_set_stochastic_samples() (samples per strategy and shading point).
@@ -171,6 +173,9 @@ public:
 	enum LightAreaShadowMode {
 		LIGHT_AREA_SHADOW_FIXED, // area_shadow_grid^2 shadow maps over the light, averaged PCF (thesis 6.1).
 		LIGHT_AREA_SHADOW_PCSS_BASELINE, // One map from the light centre with PCSS (upstream Godot's approach).
+		LIGHT_AREA_SHADOW_ADAPTIVE, // Quadtree of maps grown and pruned over frames by shadow reprojection (thesis 6.3;
+		// AreaShadowAdaptiveRD). Until its renderer wiring lands it draws the HEURISTIC grid.
+		LIGHT_AREA_SHADOW_HEURISTIC, // Grid from a CPU estimate of the on-screen penumbra (thesis 6.5).
 		LIGHT_AREA_SHADOW_MAX,
 	};
 	// Bounds of light_area_set_shadow_grid() (grid x grid sample maps).
@@ -417,6 +422,19 @@ public:
 	virtual void viewport_set_debug_draw(RID p_viewport, ViewportDebugDraw p_draw) = 0;
 	// Returns the last rendered image (float RGBA, linear HDR, top row first); empty if none.
 	virtual Image viewport_get_texture_data(RID p_viewport) const = 0;
+	// Area-light shadow atlas of the viewport (each viewport has its own, as Godot's shadow atlas):
+	// p_size x p_size pixels (a power of two, AREA_SHADOW_ATLAS_SIZE_MIN..MAX) split into p_subdivision x
+	// p_subdivision tiles (AREA_SHADOW_ATLAS_SUBDIVISION_MIN..MAX, tiles of at least 16 px), one shadow map
+	// per tile. p_size 0 restores the renderer's default (4096 px, 16 x 16). Bad values print an error
+	// naming the problem and keep the old ones. Changing the size redraws every map of the viewport.
+	virtual void area_shadow_atlas_set_size(RID p_viewport, int p_size, int p_subdivision) = 0;
+	// The viewport's atlas size and subdivision (0, 0 while it uses the renderer's default).
+	virtual int area_shadow_atlas_get_size(RID p_viewport) const = 0;
+	virtual int area_shadow_atlas_get_subdivision(RID p_viewport) const = 0;
+	static constexpr int AREA_SHADOW_ATLAS_SIZE_MIN = 256;
+	static constexpr int AREA_SHADOW_ATLAS_SIZE_MAX = 16384;
+	static constexpr int AREA_SHADOW_ATLAS_SUBDIVISION_MIN = 1;
+	static constexpr int AREA_SHADOW_ATLAS_SUBDIVISION_MAX = 64;
 
 	/* MISC */
 

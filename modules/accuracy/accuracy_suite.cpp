@@ -82,6 +82,8 @@ String AccuracySuite::method_name(int p_method) {
 			return "MRP";
 		case 3:
 			return "STOCHASTIC";
+		case 4:
+			return "AUTO";
 		default:
 			return "method_" + itos(p_method);
 	}

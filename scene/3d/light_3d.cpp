@@ -599,7 +599,7 @@ void AreaLight3D::set_area_normalize_energy(bool p_enable) {
 }
 
 void AreaLight3D::set_area_shading_method(AreaShadingMethod p_method) {
-	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method >= (int)RS::LIGHT_AREA_SHADING_MAX, vformat("AreaLight3D \"%s\": area_shading_method must be 0..%d (LTC, LTC Polynomial, MRP, Stochastic); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADING_MAX - 1, (int)p_method));
+	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method >= (int)RS::LIGHT_AREA_SHADING_MAX, vformat("AreaLight3D \"%s\": area_shading_method must be 0..%d (LTC, LTC Polynomial, MRP, Stochastic, Auto); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADING_MAX - 1, (int)p_method));
 	area_shading_method = p_method;
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_shading_method(get_light(), RS::LightAreaShadingMethod(p_method));
@@ -616,11 +616,12 @@ void AreaLight3D::set_area_stochastic_samples(int p_samples) {
 }
 
 void AreaLight3D::set_area_shadow_mode(AreaShadowMode p_mode) {
-	ERR_FAIL_COND_MSG((int)p_mode < 0 || (int)p_mode >= (int)RS::LIGHT_AREA_SHADOW_MAX, vformat("AreaLight3D \"%s\": area_shadow_mode must be 0..%d (Fixed, PCSS Baseline); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADOW_MAX - 1, (int)p_mode));
+	ERR_FAIL_COND_MSG((int)p_mode < 0 || (int)p_mode >= (int)RS::LIGHT_AREA_SHADOW_MAX, vformat("AreaLight3D \"%s\": area_shadow_mode must be 0..%d (Fixed, PCSS Baseline, Adaptive, Heuristic); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADOW_MAX - 1, (int)p_mode));
 	area_shadow_mode = p_mode;
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_shadow_mode(get_light(), RS::LightAreaShadowMode(p_mode));
 	}
+	notify_property_list_changed(); // area_shadow_grid shows or hides.
 }
 
 void AreaLight3D::set_area_shadow_grid(int p_grid) {
@@ -629,6 +630,19 @@ void AreaLight3D::set_area_shadow_grid(int p_grid) {
 	area_shadow_grid = p_grid;
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_shadow_grid(get_light(), area_shadow_grid);
+	}
+}
+
+void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
+	const String &n = p_property.name;
+	// Godot style: shadow settings are saved but not shown while shadows are off (Light3D hides shadow_*).
+	if (!has_shadow() && (n == "area_shadow_mode" || n == "area_shadow_grid")) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	// The PCSS baseline draws one map from the centre; ADAPTIVE and HEURISTIC choose their own samples
+	// (up to the project's rendering/lights_and_shadows/area_shadow_adaptive_max_depth): the grid does not apply.
+	if (area_shadow_mode != AREA_SHADOW_FIXED && n == "area_shadow_grid") {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
 }
 
@@ -658,9 +672,9 @@ void AreaLight3D::_bind_methods() {
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_range", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,exp,suffix:m"), "set_param", "get_param", PARAM_RANGE);
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_attenuation", PROPERTY_HINT_RANGE, "0,10,0.001,or_greater"), "set_param", "get_param", PARAM_ATTENUATION);
 	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "area_normalize_energy"), "set_area_normalize_energy", "is_area_normalizing_energy");
-	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC,LTC Polynomial,MRP,Stochastic"), "set_area_shading_method", "get_area_shading_method");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC,LTC Polynomial,MRP,Stochastic,Auto"), "set_area_shading_method", "get_area_shading_method");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_stochastic_samples", PROPERTY_HINT_RANGE, "1,256"), "set_area_stochastic_samples", "get_area_stochastic_samples");
-	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_mode", PROPERTY_HINT_ENUM, "Fixed,PCSS Baseline"), "set_area_shadow_mode", "get_area_shadow_mode");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_mode", PROPERTY_HINT_ENUM, "Fixed,PCSS Baseline,Adaptive,Heuristic"), "set_area_shadow_mode", "get_area_shadow_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_grid", PROPERTY_HINT_RANGE, "2,9"), "set_area_shadow_grid", "get_area_shadow_grid");
 	ADD_GROUP("", "");
 
@@ -668,8 +682,11 @@ void AreaLight3D::_bind_methods() {
 	BIND_ENUM_CONSTANT(AREA_SHADING_LTC_POLYNOMIAL);
 	BIND_ENUM_CONSTANT(AREA_SHADING_MRP);
 	BIND_ENUM_CONSTANT(AREA_SHADING_STOCHASTIC);
+	BIND_ENUM_CONSTANT(AREA_SHADING_AUTO);
 	BIND_ENUM_CONSTANT(AREA_SHADOW_FIXED);
 	BIND_ENUM_CONSTANT(AREA_SHADOW_PCSS_BASELINE);
+	BIND_ENUM_CONSTANT(AREA_SHADOW_ADAPTIVE);
+	BIND_ENUM_CONSTANT(AREA_SHADOW_HEURISTIC);
 }
 
 AreaLight3D::AreaLight3D() :

@@ -230,11 +230,14 @@ public:
 		AREA_SHADING_LTC_POLYNOMIAL = RS::LIGHT_AREA_SHADING_LTC_POLYNOMIAL,
 		AREA_SHADING_MRP = RS::LIGHT_AREA_SHADING_MRP,
 		AREA_SHADING_STOCHASTIC = RS::LIGHT_AREA_SHADING_STOCHASTIC,
+		AREA_SHADING_AUTO = RS::LIGHT_AREA_SHADING_AUTO,
 	};
 	// How shadows are drawn when shadow_enabled is on (values equal RS::LightAreaShadowMode).
 	enum AreaShadowMode {
 		AREA_SHADOW_FIXED = RS::LIGHT_AREA_SHADOW_FIXED,
 		AREA_SHADOW_PCSS_BASELINE = RS::LIGHT_AREA_SHADOW_PCSS_BASELINE,
+		AREA_SHADOW_ADAPTIVE = RS::LIGHT_AREA_SHADOW_ADAPTIVE,
+		AREA_SHADOW_HEURISTIC = RS::LIGHT_AREA_SHADOW_HEURISTIC,
 	};
 
 private:
@@ -247,6 +250,8 @@ private:
 
 protected:
 	static void _bind_methods();
+	// area_shadow_* hidden (still saved) while shadow_enabled is off; area_shadow_grid also in every mode but FIXED.
+	void _validate_property(PropertyInfo &p_property) const;
 
 public:
 	// Metres; both components finite and >= 0 (else rejected with a message, the old value kept).

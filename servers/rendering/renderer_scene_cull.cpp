@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 /* BOUNDS */
 
@@ -43,6 +45,17 @@ bool RendererSceneCull::is_cone_culled(const std::vector<Plane> &p_planes, const
 		}
 	}
 	return false;
+}
+
+bool RendererSceneCull::area_light_box_intersects(const Transform3D &p_world_from_light, const AABB &p_light_box, const AABB &p_aabb) {
+	if (!p_world_from_light.xform(p_light_box).intersects(p_aabb)) {
+		return false;
+	}
+	// Orthonormal basis: the inverse is the transpose (as Transform3D::xform_inv).
+	Transform3D light_from_world;
+	light_from_world.basis = p_world_from_light.basis.transposed();
+	light_from_world.origin = -light_from_world.basis.xform(p_world_from_light.origin);
+	return light_from_world.xform(p_aabb).intersects(p_light_box);
 }
 
 /* CAMERA */
@@ -399,15 +412,72 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 			last_stats.lights_visible++;
 		}
 	}
+	_fill_area_shadow_casters(*scenario, r_data);
 	return true;
 }
 
-void RendererSceneCull::render_camera(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RS::ViewportDebugDraw p_debug_draw, RID p_render_target) {
+void RendererSceneCull::_fill_area_shadow_casters(const Scenario &p_scenario, RenderSceneData &r_data) {
+	// Godot's _light_instance_update_shadow(): a light's casters are the instances in its range, whether
+	// the camera sees them or not (an occluder behind the camera still shadows the visible floor).
+	std::vector<std::pair<RID, AABB>> meshes; // Every visible mesh instance of the scenario, lazily.
+	std::map<uint64_t, uint32_t> index_of; // Instance id -> index in r_data.shadow_geometry.
+	std::set<uint64_t> on_screen; // Camera-visible instance ids (statistics).
+	bool gathered = false;
+	for (RenderSceneData::LightInstance &light : r_data.lights) {
+		if (light.type != RS::LIGHT_AREA || !RSG::light_storage->light_has_shadow(light.light)) {
+			continue;
+		}
+		if (!gathered) {
+			gathered = true;
+			for (const RenderSceneData::GeometryInstance &g : r_data.geometry) {
+				on_screen.insert(g.instance.get_id());
+			}
+			for (const RID &rid : p_scenario.instances) {
+				const Instance *instance = instance_owner.get_or_null(rid);
+				if (instance && instance->visible && instance->base_type == RS::INSTANCE_MESH && RSG::mesh_storage && RSG::mesh_storage->owns_mesh(instance->base)) {
+					meshes.push_back(std::make_pair(rid, _instance_get_world_aabb(*instance)));
+				}
+			}
+		}
+		light.shadow_casters_valid = true;
+		// Same frame as the renderer's shadow pass: orthonormalised light transform, light-space range box.
+		const Transform3D world_from_light(light.transform.basis.orthonormalized(), light.transform.origin);
+		const AABB box = RSG::light_storage->light_get_aabb(light.light);
+		const uint32_t caster_mask = RSG::light_storage->light_get_shadow_caster_mask(light.light);
+		for (const std::pair<RID, AABB> &m : meshes) {
+			const Instance *instance = instance_owner.get_or_null(m.first);
+			if ((instance->layer_mask & caster_mask) == 0 || !area_light_box_intersects(world_from_light, box, m.second)) {
+				continue;
+			}
+			auto it = index_of.find(m.first.get_id());
+			if (it == index_of.end()) {
+				RenderSceneData::GeometryInstance geometry;
+				geometry.instance = m.first;
+				geometry.mesh = instance->base;
+				geometry.material_override = (RSG::material_storage && RSG::material_storage->owns_material(instance->material_override)) ? instance->material_override : RID();
+				geometry.transform = instance->transform;
+				geometry.aabb = m.second;
+				geometry.layer_mask = instance->layer_mask;
+				it = index_of.emplace(m.first.get_id(), uint32_t(r_data.shadow_geometry.size())).first;
+				r_data.shadow_geometry.push_back(geometry);
+				last_stats.area_shadow_casters++;
+				if (!on_screen.count(m.first.get_id())) {
+					last_stats.area_shadow_casters_offscreen++;
+				}
+			}
+			light.shadow_casters.push_back(it->second);
+		}
+	}
+}
+
+void RendererSceneCull::render_camera(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RS::ViewportDebugDraw p_debug_draw, RID p_render_target, int p_area_shadow_atlas_size, int p_area_shadow_atlas_subdivision) {
 	ERR_FAIL_NULL_MSG(RSG::scene_render, "No scene renderer is set up.");
 	RenderSceneData data;
 	if (!build_render_scene_data(p_camera, p_scenario, p_width, p_height, p_default_clear_color, data)) {
 		return;
 	}
 	data.debug_draw = p_debug_draw;
+	data.area_shadow_atlas_size = uint32_t(std::max(p_area_shadow_atlas_size, 0));
+	data.area_shadow_atlas_subdivision = uint32_t(std::max(p_area_shadow_atlas_subdivision, 0));
 	RSG::scene_render->render_scene(data, p_render_target);
 }

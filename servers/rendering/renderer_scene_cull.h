@@ -9,7 +9,10 @@
 /* sphere; spot lights by the exact spherical-sector (cone) bound; area  */
 /* lights by the sphere of thesis eq. 5.1 around the rectangle's centre  */
 /* (radius = range + half the diagonal); directional lights are never    */
-/* culled.                                                               */
+/* culled. Each visible shadowed area light gets its shadow casters:     */
+/* every mesh instance (on screen or not) on its shadow_caster_mask      */
+/* whose bound meets its influence box (a + 2r) x (b + 2r) x r           */
+/* (RenderSceneData::shadow_geometry, LightInstance::shadow_casters).    */
 
 #pragma once
 
@@ -49,6 +52,8 @@ public:
 		int lights_visible = 0; // Omni, spot and area lights.
 		int lights_culled = 0;
 		int directional_lights = 0;
+		int area_shadow_casters = 0; // Distinct instances in RenderSceneData::shadow_geometry.
+		int area_shadow_casters_offscreen = 0; // Of those, outside the camera frustum.
 	};
 
 private:
@@ -59,6 +64,7 @@ private:
 
 	void _scenario_remove_instance(RID p_scenario, RID p_instance);
 	AABB _instance_get_world_aabb(const Instance &p_instance) const;
+	void _fill_area_shadow_casters(const Scenario &p_scenario, RenderSceneData &r_data);
 	void _resolve_environment(RID p_camera_env, RID p_scenario_env, const Color &p_default_clear, RenderSceneData::EnvironmentData &r_env) const;
 
 public:
@@ -67,6 +73,10 @@ public:
 	// Returns true when a spherical sector (cone of half-angle p_angle_degrees around unit p_axis,
 	// apex p_apex, capped at p_range) lies completely outside one of the planes.
 	static bool is_cone_culled(const std::vector<Plane> &p_planes, const Vector3 &p_apex, const Vector3 &p_axis, real_t p_range, real_t p_angle_degrees);
+	// Returns true when the world bound p_aabb meets an area light's influence box p_light_box (light space;
+	// p_world_from_light orthonormal): the world AABBs of both overlap and p_aabb's bound in light space
+	// overlaps p_light_box (both tests conservative, together tighter for rotated lights).
+	static bool area_light_box_intersects(const Transform3D &p_world_from_light, const AABB &p_light_box, const AABB &p_aabb);
 
 	/* CAMERA */
 	// Creates a camera with Camera3D defaults.
@@ -127,8 +137,9 @@ public:
 	// Culls p_scenario for p_camera at a p_width x p_height viewport and fills r_data.
 	// Returns false (with an error) for invalid RIDs or sizes.
 	bool build_render_scene_data(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RenderSceneData &r_data);
-	// Culls, then calls RSG::scene_render->render_scene() into p_render_target.
-	void render_camera(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RS::ViewportDebugDraw p_debug_draw, RID p_render_target);
+	// Culls, then calls RSG::scene_render->render_scene() into p_render_target. p_area_shadow_atlas_*: the
+	// viewport's area shadow atlas (0 = the renderer's default), passed on in RenderSceneData.
+	void render_camera(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RS::ViewportDebugDraw p_debug_draw, RID p_render_target, int p_area_shadow_atlas_size = 0, int p_area_shadow_atlas_subdivision = 0);
 	// Counters of the last cull (tests read them).
 	const CullStats &get_last_cull_stats() const { return last_stats; }
 };

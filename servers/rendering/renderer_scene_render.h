@@ -32,6 +32,12 @@ struct RenderSceneData {
 		RS::LightType type = RS::LIGHT_OMNI;
 		Transform3D transform; // world_from_light; the light shines along its local -Z.
 		AABB aabb; // World-space bound (empty for directional lights).
+		// Shadowed area lights: indices into RenderSceneData::shadow_geometry of the instances whose bound
+		// meets the light's influence box (a + 2r) x (b + 2r) x r, camera-visible or not
+		// (RendererSceneCull fills it). shadow_casters_valid false (hand-built scenes): the renderer
+		// falls back to the camera-visible geometry in the box.
+		std::vector<uint32_t> shadow_casters;
+		bool shadow_casters_valid = false;
 	};
 
 	// Background and ambient after resolving scenario/camera environments (camera wins).
@@ -59,6 +65,10 @@ struct RenderSceneData {
 	std::vector<GeometryInstance> geometry; // Visible geometry, scenario order.
 	std::vector<LightInstance> directional_lights; // All visible directional lights.
 	std::vector<LightInstance> lights; // Omni, spot and area lights that passed frustum culling.
+	std::vector<GeometryInstance> shadow_geometry; // Shadow casters of the area lights (LightInstance::shadow_casters).
+	// Area shadow atlas of this viewport (RS::area_shadow_atlas_set_size); 0 = the renderer's default.
+	uint32_t area_shadow_atlas_size = 0;
+	uint32_t area_shadow_atlas_subdivision = 0;
 	EnvironmentData environment;
 };
 

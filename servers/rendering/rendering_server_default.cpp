@@ -397,6 +397,36 @@ Image RenderingServerDefault::viewport_get_texture_data(RID p_viewport) const {
 	return image;
 }
 
+void RenderingServerDefault::area_shadow_atlas_set_size(RID p_viewport, int p_size, int p_subdivision) {
+	Viewport *viewport = viewport_owner.get_or_null(p_viewport);
+	ERR_FAIL_NULL_MSG(viewport, "area_shadow_atlas_set_size: invalid viewport RID.");
+	if (p_size == 0) {
+		viewport->area_shadow_atlas_size = 0; // Back to the renderer's default.
+		viewport->area_shadow_atlas_subdivision = 0;
+		return;
+	}
+	ERR_FAIL_COND_MSG(p_size < AREA_SHADOW_ATLAS_SIZE_MIN || p_size > AREA_SHADOW_ATLAS_SIZE_MAX || (p_size & (p_size - 1)) != 0,
+			vformat("area_shadow_atlas_set_size: the size must be a power of two from %d to %d (or 0 for the default); got %d. The old size is kept.", AREA_SHADOW_ATLAS_SIZE_MIN, AREA_SHADOW_ATLAS_SIZE_MAX, p_size));
+	ERR_FAIL_COND_MSG(p_subdivision < AREA_SHADOW_ATLAS_SUBDIVISION_MIN || p_subdivision > AREA_SHADOW_ATLAS_SUBDIVISION_MAX,
+			vformat("area_shadow_atlas_set_size: the subdivision (tiles per side) must be %d..%d; got %d. The old size is kept.", AREA_SHADOW_ATLAS_SUBDIVISION_MIN, AREA_SHADOW_ATLAS_SUBDIVISION_MAX, p_subdivision));
+	ERR_FAIL_COND_MSG(p_size / p_subdivision < 16,
+			vformat("area_shadow_atlas_set_size: %d px split into %d x %d tiles leaves %d px per tile; tiles need at least 16 px. The old size is kept.", p_size, p_subdivision, p_subdivision, p_size / p_subdivision));
+	viewport->area_shadow_atlas_size = p_size;
+	viewport->area_shadow_atlas_subdivision = p_subdivision;
+}
+
+int RenderingServerDefault::area_shadow_atlas_get_size(RID p_viewport) const {
+	const Viewport *viewport = viewport_owner.get_or_null(p_viewport);
+	ERR_FAIL_NULL_V_MSG(viewport, 0, "area_shadow_atlas_get_size: invalid viewport RID.");
+	return viewport->area_shadow_atlas_size;
+}
+
+int RenderingServerDefault::area_shadow_atlas_get_subdivision(RID p_viewport) const {
+	const Viewport *viewport = viewport_owner.get_or_null(p_viewport);
+	ERR_FAIL_NULL_V_MSG(viewport, 0, "area_shadow_atlas_get_subdivision: invalid viewport RID.");
+	return viewport->area_shadow_atlas_subdivision;
+}
+
 /* MISC */
 
 void RenderingServerDefault::set_default_clear_color(const Color &p_color) {
@@ -418,7 +448,7 @@ void RenderingServerDefault::draw() {
 		if (!scene_cull->is_camera(viewport->camera) || !scene_cull->is_scenario(viewport->scenario)) {
 			continue;
 		}
-		scene_cull->render_camera(viewport->camera, viewport->scenario, viewport->width, viewport->height, default_clear_color, viewport->debug_draw, viewport->render_target);
+		scene_cull->render_camera(viewport->camera, viewport->scenario, viewport->width, viewport->height, default_clear_color, viewport->debug_draw, viewport->render_target, viewport->area_shadow_atlas_size, viewport->area_shadow_atlas_subdivision);
 	}
 	compositor->end_frame();
 }

@@ -26,6 +26,8 @@ class RenderingServerDefault : public RenderingServer {
 		RID scenario;
 		RID render_target; // Created by viewport_set_size().
 		RS::ViewportDebugDraw debug_draw = RS::VIEWPORT_DEBUG_DRAW_DISABLED;
+		int area_shadow_atlas_size = 0; // 0: the renderer's default.
+		int area_shadow_atlas_subdivision = 0;
 	};
 
 	RendererCompositor *compositor = nullptr;
@@ -121,6 +123,9 @@ public:
 	void viewport_set_scenario(RID p_viewport, RID p_scenario) override;
 	void viewport_set_debug_draw(RID p_viewport, ViewportDebugDraw p_draw) override;
 	Image viewport_get_texture_data(RID p_viewport) const override;
+	void area_shadow_atlas_set_size(RID p_viewport, int p_size, int p_subdivision) override;
+	int area_shadow_atlas_get_size(RID p_viewport) const override;
+	int area_shadow_atlas_get_subdivision(RID p_viewport) const override;
 
 	void set_default_clear_color(const Color &p_color) override;
 	Color get_default_clear_color() const override;

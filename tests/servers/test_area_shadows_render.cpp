@@ -8,7 +8,8 @@
 /* error cancels) approaches the reference's as the sample maps grow      */
 /* (4 -> 9 -> 25 -> 81) and beats the one-map PCSS baseline from 25 maps; */
 /* an unoccluded plane renders as without shadows (no acne); a static     */
-/* scene redraws no map after the first frame.                            */
+/* scene redraws no map after the first frame. The sweep behind the doc   */
+/* tables is `bench --sweep shadows` (modules/benchmark/shadows_sweep.h). */
 
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 
@@ -353,75 +354,6 @@ area_shadow_grid = 9
 	delete root;
 }
 
-// GPU time of the last recorded area shadow pass (ms), from the "area_shadows_begin/_end" timestamps.
-static double last_shadow_pass_ms(RenderingDevice *p_rd) {
-	int64_t begin = -1, end = -1;
-	for (uint32_t i = 0; i < p_rd->get_captured_timestamps_count(); i++) {
-		if (p_rd->get_captured_timestamp_name(i) == "area_shadows_begin") {
-			begin = i;
-		} else if (p_rd->get_captured_timestamp_name(i) == "area_shadows_end") {
-			end = i;
-		}
-	}
-	if (begin < 0 || end < 0) {
-		return -1.0;
-	}
-	uint64_t t0 = p_rd->get_captured_timestamp_gpu_time(uint32_t(begin));
-	uint64_t t1 = p_rd->get_captured_timestamp_gpu_time(uint32_t(end));
-	return t1 >= t0 ? double(t1 - t0) / 1.0e6 : 0.0;
-}
-
-// Bench, not a test (doc/shadows.md tables): error vs number of maps for two atlas sizes, and shadow
-// pass time vs number of maps (the light moves every frame, so every map is redrawn).
-TEST_CASE("[AreaLight3D][Shadows][Benchmark] visibility error and shadow-pass time vs number of maps" * doctest::skip()) {
-	RenderingDevice *rd = rd_test_get_device();
-	REQUIRE(rd != nullptr);
-	std::vector<float> ref_open, ref_shadowed;
-	render_reference(true, ref_open, ref_shadowed);
-	const int atlas_sizes[2] = { 1008, 2016 };
-	const int grids[4] = { 2, 3, 5, 9 };
-	const float blurs[3] = { 0.0f, 1.0f, 2.0f };
-	for (float blur : blurs) {
-		for (int atlas : atlas_sizes) {
-			ShadowFixture f;
-			REQUIRE(f.init(true));
-			REQUIRE(f.renderer.area_shadow_atlas_set_size(atlas, 9));
-			f.light_storage.light_set_param(f.light, RS::LIGHT_PARAM_SHADOW_BLUR, blur);
-			std::vector<float> open = f.render();
-			f.light_storage.light_set_shadow(f.light, true);
-			String row = vformat("| %.0f | %d px (tile %d) |", blur, atlas, atlas / 9);
-			for (int g : grids) {
-				f.light_storage.light_area_set_shadow_grid(f.light, g);
-				std::vector<float> img = f.render();
-				row += vformat(" %.4f |", visibility_rmse(open, img, ref_open, ref_shadowed));
-			}
-			f.light_storage.light_area_set_shadow_mode(f.light, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
-			std::vector<float> img = f.render();
-			row += vformat(" %.4f |", visibility_rmse(open, img, ref_open, ref_shadowed));
-			printf("error %s\n", row.c_str());
-		}
-	}
-	for (int atlas : atlas_sizes) {
-		ShadowFixture f;
-		REQUIRE(f.init(true));
-		REQUIRE(f.renderer.area_shadow_atlas_set_size(atlas, 9));
-		f.light_storage.light_set_shadow(f.light, true);
-		String row = vformat("| %d px |", atlas);
-		for (int g : grids) {
-			f.light_storage.light_area_set_shadow_grid(f.light, g);
-			double total = 0.0;
-			const int frames = 6;
-			for (int frame = 0; frame < frames + 1; frame++) {
-				f.scene.lights[0].transform.origin.x = (frame % 2) ? 0.01f : 0.0f; // Dirty every frame.
-				f.render();
-				if (frame > 0) {
-					total += last_shadow_pass_ms(rd);
-				}
-			}
-			row += vformat(" %.2f |", total / frames);
-		}
-		printf("shadow pass ms %s\n", row.c_str());
-	}
-}
+// The error and timing sweep (doc/shadows.md) is `godot-area bench --sweep shadows` (modules/benchmark/shadows_sweep.h).
 
 } // namespace TestAreaShadowsRender

@@ -5,6 +5,7 @@
 #include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 
 #include "core/error/error_macros.h"
+#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 
@@ -60,11 +61,11 @@ bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage,
 void AreaShadowRendererRD::finalize() {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	if (rd && rd->is_initialized()) {
+		for (auto &e : atlases) {
+			_free_atlas_texture(e.second);
+		}
 		if (pipeline.is_valid()) {
 			rd->free(pipeline);
-		}
-		if (atlas_texture.is_valid()) {
-			rd->free(atlas_texture); // Frees the framebuffer too.
 		}
 		if (dummy_texture.is_valid()) {
 			rd->free(dummy_texture);
@@ -76,9 +77,9 @@ void AreaShadowRendererRD::finalize() {
 			rd->free(data_buffer);
 		}
 	}
+	atlases.clear();
+	current = nullptr;
 	pipeline = RID();
-	atlas_texture = RID();
-	atlas_framebuffer = RID();
 	dummy_texture = RID();
 	sampler = RID();
 	data_buffer = RID();
@@ -86,34 +87,82 @@ void AreaShadowRendererRD::finalize() {
 	initialized = false;
 }
 
+void AreaShadowRendererRD::_free_atlas_texture(AtlasInstance &p_atlas) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (p_atlas.texture.is_valid() && rd && rd->is_initialized()) {
+		rd->free(p_atlas.texture); // Frees the framebuffer too.
+	}
+	p_atlas.texture = RID();
+	p_atlas.framebuffer = RID();
+}
+
+AreaShadowRendererRD::AtlasInstance &AreaShadowRendererRD::_get_atlas_instance(uint64_t p_owner) {
+	auto it = atlases.find(p_owner);
+	if (it != atlases.end()) {
+		return it->second;
+	}
+	AtlasInstance &a = atlases[p_owner];
+	a.atlas.configure(default_size, default_subdivision);
+	return a;
+}
+
 bool AreaShadowRendererRD::set_atlas_size(uint32_t p_size, uint32_t p_subdivision) {
-	uint32_t old = atlas.get_size();
-	if (!atlas.configure(p_size, p_subdivision)) {
+	AreaShadowAtlas probe; // Validates (and prints the error) without touching any atlas.
+	if (!probe.configure(p_size, p_subdivision)) {
 		return false;
 	}
-	if (old != atlas.get_size() && atlas_texture.is_valid()) {
-		RenderingDevice::get_singleton()->free(atlas_texture);
-		atlas_texture = RID();
-		atlas_framebuffer = RID();
+	default_size = p_size;
+	default_subdivision = p_subdivision;
+	for (auto &e : atlases) {
+		AtlasInstance &a = e.second;
+		if (a.custom_size) {
+			continue;
+		}
+		uint32_t old = a.atlas.get_size();
+		a.atlas.configure(p_size, p_subdivision);
+		if (old != a.atlas.get_size()) {
+			_free_atlas_texture(a);
+		}
 	}
 	return true;
 }
 
-bool AreaShadowRendererRD::_ensure_atlas() {
-	if (atlas_texture.is_valid()) {
+AreaShadowAtlas &AreaShadowRendererRD::get_atlas() {
+	return current ? current->atlas : _get_atlas_instance(0).atlas;
+}
+
+const AreaShadowAtlas *AreaShadowRendererRD::get_owner_atlas(RID p_owner) const {
+	auto it = atlases.find(p_owner.get_id());
+	return it != atlases.end() ? &it->second.atlas : nullptr;
+}
+
+void AreaShadowRendererRD::release_owner(RID p_owner) {
+	auto it = atlases.find(p_owner.get_id());
+	if (it == atlases.end()) {
+		return;
+	}
+	if (current == &it->second) {
+		current = nullptr;
+	}
+	_free_atlas_texture(it->second);
+	atlases.erase(it);
+}
+
+bool AreaShadowRendererRD::_ensure_atlas(AtlasInstance &p_atlas) {
+	if (p_atlas.texture.is_valid()) {
 		return true;
 	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	RD::TextureFormat tf;
 	tf.format = ATLAS_FORMAT;
-	tf.width = atlas.get_size();
-	tf.height = atlas.get_size();
+	tf.width = p_atlas.atlas.get_size();
+	tf.height = p_atlas.atlas.get_size();
 	tf.usage_bits = RD::TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | RD::TEXTURE_USAGE_SAMPLING_BIT;
-	atlas_texture = rd->texture_create(tf);
-	ERR_FAIL_COND_V_MSG(!atlas_texture.is_valid(), false, vformat("Area shadow atlas: a %u x %u depth texture could not be created.", tf.width, tf.height));
-	rd->set_resource_name(atlas_texture, "Area shadow atlas");
-	atlas_framebuffer = rd->framebuffer_create({ atlas_texture });
-	RD::FramebufferFormatID format = rd->framebuffer_get_format(atlas_framebuffer);
+	p_atlas.texture = rd->texture_create(tf);
+	ERR_FAIL_COND_V_MSG(!p_atlas.texture.is_valid(), false, vformat("Area shadow atlas: a %u x %u depth texture could not be created.", tf.width, tf.height));
+	rd->set_resource_name(p_atlas.texture, "Area shadow atlas");
+	p_atlas.framebuffer = rd->framebuffer_create({ p_atlas.texture });
+	RD::FramebufferFormatID format = rd->framebuffer_get_format(p_atlas.framebuffer);
 	if (!pipeline.is_valid() || pipeline_format != format) {
 		if (pipeline.is_valid()) {
 			rd->free(pipeline);
@@ -147,8 +196,25 @@ static void _hash_transform(uint64_t &r_hash, const Transform3D &p_t) {
 	_hash_bytes(r_hash, f, sizeof(f));
 }
 
-void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vector<uint32_t> &p_area_sources, const Transform3D &p_view_from_world, const Projection &p_clip_from_world) {
+void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vector<uint32_t> &p_area_sources, const Transform3D &p_view_from_world, const Projection &p_clip_from_world, RID p_owner) {
 	ERR_FAIL_COND_MSG(!initialized, "AreaShadowRendererRD::prepare: not initialized.");
+	AtlasInstance &inst = _get_atlas_instance(p_owner.get_id());
+	current = &inst;
+	{
+		// Per-viewport size (RS::area_shadow_atlas_set_size, validated there) or the renderer default.
+		bool custom = p_data.area_shadow_atlas_size > 0 && p_data.area_shadow_atlas_subdivision > 0;
+		uint32_t want_size = custom ? p_data.area_shadow_atlas_size : default_size;
+		uint32_t want_sub = custom ? p_data.area_shadow_atlas_subdivision : default_subdivision;
+		if (want_size != inst.atlas.get_size() || want_sub != inst.atlas.get_subdivision()) {
+			uint32_t old = inst.atlas.get_size();
+			if (inst.atlas.configure(want_size, want_sub) && old != inst.atlas.get_size()) {
+				_free_atlas_texture(inst);
+			}
+		}
+		inst.custom_size = custom;
+	}
+	AreaShadowAtlas &atlas = inst.atlas;
+	std::map<uint64_t, LightFrame> &frame_lights = inst.frame_lights;
 	uint32_t count = std::min(uint32_t(p_area_sources.size()), max_lights);
 	data.assign(count, AreaShadowData());
 	for (AreaShadowData &d : data) {
@@ -180,22 +246,37 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		_hash_bytes(hash, &version, sizeof(version));
 		_hash_bytes(hash, &size, sizeof(size));
 		_hash_bytes(hash, &lf.range, sizeof(lf.range));
-		for (uint32_t g = 0; g < p_data.geometry.size(); g++) {
-			const RenderSceneData::GeometryInstance &gi = p_data.geometry[g];
-			if (!mesh_storage->owns_mesh(gi.mesh) || mesh_storage->mesh_get_surface_count(gi.mesh) == 0) {
+		// Casters: the scene cull's list for this light (every instance in its influence box, on screen or
+		// not); hand-built scenes without one use the visible geometry in the box.
+		std::vector<const RenderSceneData::GeometryInstance *> candidates;
+		if (li.shadow_casters_valid) {
+			for (uint32_t c : li.shadow_casters) {
+				ERR_CONTINUE(c >= p_data.shadow_geometry.size());
+				candidates.push_back(&p_data.shadow_geometry[c]);
+			}
+		} else {
+			for (const RenderSceneData::GeometryInstance &gi : p_data.geometry) {
+				bool unbounded = gi.aabb.size.x <= 0.0f && gi.aabb.size.y <= 0.0f && gi.aabb.size.z <= 0.0f;
+				if (unbounded || gi.aabb.intersects(box)) {
+					candidates.push_back(&gi); // Godot's culling: only instances within the light's range box cast.
+				}
+			}
+		}
+		for (const RenderSceneData::GeometryInstance *gi : candidates) {
+			if (!mesh_storage->owns_mesh(gi->mesh) || mesh_storage->mesh_get_surface_count(gi->mesh) == 0) {
 				continue;
 			}
-			bool unbounded = gi.aabb.size.x <= 0.0f && gi.aabb.size.y <= 0.0f && gi.aabb.size.z <= 0.0f;
-			if (!unbounded && !gi.aabb.intersects(box)) {
-				continue; // Godot's culling: only instances within the light's range box cast.
-			}
-			lf.casters.push_back(g);
-			uint64_t ids[2] = { gi.instance.get_id(), gi.mesh.get_id() };
+			lf.casters.push_back(gi);
+			uint64_t ids[2] = { gi->instance.get_id(), gi->mesh.get_id() };
 			_hash_bytes(hash, ids, sizeof(ids));
-			_hash_transform(hash, gi.transform);
+			_hash_transform(hash, gi->transform);
 		}
 		RS::LightAreaShadowMode mode = light_storage->light_area_get_shadow_mode(li.light);
 		uint32_t grid = mode == RS::LIGHT_AREA_SHADOW_PCSS_BASELINE ? 1 : uint32_t(light_storage->light_area_get_shadow_grid(li.light));
+		if (mode == RS::LIGHT_AREA_SHADOW_HEURISTIC || mode == RS::LIGHT_AREA_SHADOW_ADAPTIVE) {
+			// Thesis 6.5 estimate. ADAPTIVE uses it too until its reprojection loop (AreaShadowAdaptiveRD) is wired in.
+			grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data);
+		}
 		_hash_bytes(hash, &grid, sizeof(grid));
 		float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
 		atlas.light_set(lf.key, grid, importance, hash);
@@ -214,10 +295,10 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 	}
 	atlas.end_frame();
 	if (!frame_lights.empty()) {
-		_ensure_atlas();
+		_ensure_atlas(inst);
 	}
 	for (uint32_t i = 0; i < count; i++) {
-		if (gpu_keys[i] == 0 || !atlas_texture.is_valid()) {
+		if (gpu_keys[i] == 0 || !inst.texture.is_valid()) {
 			continue;
 		}
 		AreaShadowData &d = data[i];
@@ -240,13 +321,18 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 }
 
 void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
+	(void)p_data; // The casters were resolved by prepare() (pointers into p_data).
 	last_draw_count = 0;
-	const std::vector<AreaShadowAtlas::DrawRequest> &draws = atlas.get_draws();
-	if (draws.empty() || !atlas_texture.is_valid() || !pipeline.is_valid()) {
+	if (!current) {
 		return;
 	}
+	const AreaShadowAtlas &atlas = current->atlas;
+	const std::vector<AreaShadowAtlas::DrawRequest> &draws = atlas.get_draws();
+	if (draws.empty() || !current->texture.is_valid() || !pipeline.is_valid()) {
+		return;
+	}
+	const std::map<uint64_t, LightFrame> &frame_lights = current->frame_lights;
 	RenderingDevice *rd = RenderingDevice::get_singleton();
-	rd->capture_timestamp("area_shadows_begin"); // Benchmarks read these two (doc/shadows.md).
 	for (const AreaShadowAtlas::DrawRequest &req : draws) {
 		auto it = frame_lights.find(req.light);
 		ERR_CONTINUE(it == frame_lights.end());
@@ -259,7 +345,7 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 		pc.params[1] = OCTANT_Z_NEAR;
 		pc.params[2] = (lf.range + lf.size.length()) * 2.0f;
 		pc.params[3] = 0.0f;
-		RD::DrawListID list = rd->draw_list_begin(atlas_framebuffer, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f, RD::Rect(int32_t(r.x), int32_t(r.y), r.size, r.size));
+		RD::DrawListID list = rd->draw_list_begin(current->framebuffer, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f, RD::Rect(int32_t(r.x), int32_t(r.y), r.size, r.size));
 		rd->draw_list_bind_render_pipeline(list, pipeline);
 		for (uint32_t quadrant = 0; quadrant < 4; quadrant++) {
 			rd->draw_list_set_viewport(list, RD::Rect(int32_t(r.x + (quadrant & 1u) * q), int32_t(r.y + (quadrant >> 1u) * q), q, q));
@@ -270,8 +356,8 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 			Vector3 rw = lb.xform(right), uw = lb.xform(up), fw = lb.xform(forward);
 			octant_from_world.basis = Basis(rw.x, rw.y, rw.z, uw.x, uw.y, uw.z, fw.x, fw.y, fw.z); // Rows.
 			octant_from_world.origin = -octant_from_world.basis.xform(sample_world);
-			for (uint32_t g : lf.casters) {
-				const RenderSceneData::GeometryInstance &gi = p_data.geometry[g];
+			for (const RenderSceneData::GeometryInstance *caster : lf.casters) {
+				const RenderSceneData::GeometryInstance &gi = *caster;
 				Projection::from_transform(octant_from_world * gi.transform).to_floats(pc.octant_view_from_model);
 				int surfaces = mesh_storage->mesh_get_surface_count(gi.mesh);
 				for (int s = 0; s < surfaces; s++) {
@@ -293,6 +379,5 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 		rd->draw_list_end();
 		last_draw_count++;
 	}
-	rd->capture_timestamp("area_shadows_end");
 	total_draw_count += last_draw_count;
 }

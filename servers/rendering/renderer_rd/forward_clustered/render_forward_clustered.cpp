@@ -160,6 +160,7 @@ bool RenderForwardClustered::render_target_free(RID p_rid) {
 	}
 	_free_render_target(rt);
 	render_target_owner.free(p_rid);
+	area_shadows.release_owner(p_rid); // Its area shadow atlas (one per render target, i.e. viewport).
 	return true;
 }
 
@@ -330,9 +331,11 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	float z_far = p_data.z_far > 0.0f ? p_data.z_far : p_data.cam_projection.get_z_far();
 
 	cluster_builder.begin(clip_from_view, z_far);
+	// AUTO area lights pick their method from the receivers inside their influence box (AreaMethodSelector).
+	light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
 	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
-	area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world));
+	area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
 
 	SceneDataUBO ubo;
 	memset(&ubo, 0, sizeof(ubo));
@@ -428,6 +431,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	// 0. Area shadow maps (only the dirty ones; none in a static scene after the first frame).
 	area_shadows.render_shadows(p_data);
+	if (area_shadows.has_frame_shadows()) {
+		rd->capture_timestamp(prefix + "area_shadows"); // Profiled only in frames with shadowed area lights.
+	}
 
 	// 1. Depth pre-pass.
 	RD::FramebufferFormatID depth_format = rd->framebuffer_get_format(rt->fb_depth);
@@ -478,24 +484,29 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const char *names[4] = { "begin", "depth_prepass", "cluster_build", "opaque" };
-	int64_t found[4] = { -1, -1, -1, -1 };
+	const int pass_count = 5;
+	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "cluster_build", "opaque" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);
-		for (int n = 0; n < 4; n++) {
+		for (int n = 0; n < pass_count; n++) {
 			if (name == p_prefix + names[n]) {
 				found[n] = i;
 			}
 		}
 	}
-	for (int n = 1; n < 4; n++) {
-		if (found[n] < 0 || found[n - 1] < 0) {
-			continue; // Timestamps unsupported on this device.
+	int prev = found[0] >= 0 ? 0 : -1; // Each pass is timed from the previous captured timestamp.
+	for (int n = 1; n < pass_count; n++) {
+		if (found[n] < 0) {
+			continue; // Not recorded this frame (area_shadows) or timestamps unsupported on this device.
 		}
-		uint64_t t0 = rd->get_captured_timestamp_gpu_time(uint32_t(found[n - 1]));
-		uint64_t t1 = rd->get_captured_timestamp_gpu_time(uint32_t(found[n]));
-		double ms = t1 >= t0 ? double(t1 - t0) / 1.0e6 : 0.0;
-		last_profile.push_back(std::make_pair(String(names[n]), ms));
+		if (prev >= 0) {
+			uint64_t t0 = rd->get_captured_timestamp_gpu_time(uint32_t(found[prev]));
+			uint64_t t1 = rd->get_captured_timestamp_gpu_time(uint32_t(found[n]));
+			double ms = t1 >= t0 ? double(t1 - t0) / 1.0e6 : 0.0;
+			last_profile.push_back(std::make_pair(String(names[n]), ms));
+		}
+		prev = n;
 	}
 }

@@ -11,7 +11,9 @@
 /*      against the pre-pass, no depth write) into an RGBA16F HDR target  */
 /*      cleared to the background colour * energy (linear).              */
 /* then waits for the GPU and keeps the pass timestamps (capture_         */
-/* timestamp) for get_last_frame_profile(): "depth_prepass",              */
+/* timestamp) for get_last_frame_profile(): "area_shadows" (the area     */
+/* shadow map passes; only in frames with shadowed area lights, ~0 when   */
+/* no map is redrawn), "depth_prepass",                                   */
 /* "cluster_build", "opaque" in milliseconds.                             */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
@@ -202,7 +204,8 @@ public:
 
 	// Area soft shadows (atlas, maps, per-frame draws; one atlas per renderer for now).
 	AreaShadowRendererRD &get_area_shadow_renderer() { return area_shadows; }
-	// Area shadow atlas size in pixels and tiles per side (RS area_shadow_atlas_set_size). False on bad values.
+	// Default area shadow atlas size in pixels and tiles per side, for render targets whose viewport sets none
+	// (RS::area_shadow_atlas_set_size sets it per viewport through RenderSceneData). False on bad values.
 	bool area_shadow_atlas_set_size(int p_size, int p_subdivision) { return p_size > 0 && p_subdivision > 0 && area_shadows.set_atlas_size(uint32_t(p_size), uint32_t(p_subdivision)); }
 
 	// The cluster builder of the last frame (tests read its buffer and counts).

@@ -118,6 +118,8 @@ AreaShadowAtlas::TileRect AreaShadowAtlas::get_tile_rect(uint32_t p_tile, uint32
 
 void AreaShadowAtlas::_reset_tiles() {
 	free_tiles.clear();
+	external_tiles.clear();
+	configuration++;
 	for (uint32_t t = 0; t < subdivision * subdivision; t++) {
 		free_tiles.insert(t);
 	}
@@ -139,6 +141,22 @@ bool AreaShadowAtlas::configure(uint32_t p_size, uint32_t p_subdivision) {
 	_reset_tiles();
 	exhaustion_warned = false;
 	return true;
+}
+
+bool AreaShadowAtlas::tile_acquire(uint32_t &r_tile) {
+	if (free_tiles.empty()) {
+		return false;
+	}
+	r_tile = *free_tiles.begin();
+	free_tiles.erase(free_tiles.begin());
+	external_tiles.insert(r_tile);
+	return true;
+}
+
+void AreaShadowAtlas::tile_release(uint32_t p_tile) {
+	if (external_tiles.erase(p_tile) != 0) {
+		free_tiles.insert(p_tile);
+	}
 }
 
 /* Per light */
@@ -285,7 +303,7 @@ void AreaShadowAtlas::end_frame() {
 }
 
 void AreaShadowAtlas::_share_tiles(const std::vector<uint64_t> &p_visible) {
-	const uint32_t total = get_tile_count();
+	const uint32_t total = get_tile_count() - std::min(get_tile_count(), uint32_t(external_tiles.size())); // Single tiles (ADAPTIVE) are taken.
 	struct Plan {
 		LightState *s = nullptr;
 		std::vector<uint32_t> allowed;

@@ -86,6 +86,8 @@ private:
 	float hysteresis = 0.5f; // Keep the current share while it is within [target / (1 + h), target * (1 + h)].
 
 	std::set<uint32_t> free_tiles;
+	std::set<uint32_t> external_tiles; // Handed out one by one (ADAPTIVE quadtrees), outside the sharing.
+	uint64_t configuration = 1; // Bumped whenever every tile is taken back (configure()).
 	std::map<uint64_t, LightState> lights;
 	std::vector<DrawRequest> draws;
 	uint64_t frame = 0;
@@ -134,6 +136,14 @@ public:
 	uint32_t get_tile_count() const { return subdivision * subdivision; }
 	uint32_t get_tile_size() const { return size / subdivision; }
 	uint32_t get_free_tile_count() const { return uint32_t(free_tiles.size()); }
+
+	// Single tiles for ADAPTIVE lights (AreaShadowQuadtree points, via AreaShadowAdaptiveRD::AtlasTiles); the
+	// fair sharing of the grid lights counts them as taken. configure() takes them back too: holders must
+	// drop theirs when get_configuration() changes (tile_release ignores tiles it did not hand out).
+	bool tile_acquire(uint32_t &r_tile);
+	void tile_release(uint32_t p_tile);
+	uint32_t get_external_tile_count() const { return uint32_t(external_tiles.size()); }
+	uint64_t get_configuration() const { return configuration; }
 
 	void set_max_draws_per_frame(uint32_t p_max) { max_draws_per_frame = p_max; }
 	void set_max_evictions_per_frame(uint32_t p_max) { max_evictions_per_frame = p_max; }

@@ -6,6 +6,7 @@
 
 #include "core/error/error_macros.h"
 #include "core/math/math_funcs.h"
+#include "servers/rendering/renderer_rd/area_method_selector.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/rendering_device.h"
 
@@ -193,6 +194,11 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	std::vector<Sorted> omnis;
 	std::vector<Sorted> spots;
 	std::vector<SortedArea> areas;
+	// AUTO area lights are resolved here, per light and frame (the GPU only sees concrete methods).
+	const Vector3 camera_position = p_view_from_world.affine_inverse().origin;
+	float auto_budget = -1.0f;
+	float auto_default_roughness = 0.5f;
+	std::vector<AreaAutoChoice> auto_choices(p_lights.size());
 	for (uint32_t i = 0; i < p_lights.size(); i++) {
 		const RenderSceneData::LightInstance &li = p_lights[i];
 		const Light *light = light_owner.get_or_null(li.light);
@@ -204,6 +210,22 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 			SortedArea s;
 			if (!fill_area_light_data(li.light, li.transform, p_view_from_world, s.data)) {
 				continue;
+			}
+			AreaAutoChoice &choice = auto_choices[i];
+			choice.requested = light->area_shading_method;
+			choice.method = light->area_shading_method;
+			if (light->area_shading_method == RS::LIGHT_AREA_SHADING_AUTO) {
+				if (auto_budget < 0.0f) {
+					auto_budget = AreaMethodSelector::get_error_budget();
+					auto_default_roughness = AreaMethodSelector::get_default_roughness();
+				}
+				AreaMethodSelector::Estimate est = AreaMethodSelector::estimate(li.transform, light->area_size, li.aabb, camera_position, auto_geometry,
+						auto_mesh_storage, auto_material_storage, auto_default_roughness);
+				choice.method = AreaMethodSelector::choose(est.size_over_distance, est.roughness, auto_budget, light->area_stochastic_samples);
+				choice.size_over_distance = est.size_over_distance;
+				choice.roughness = est.roughness;
+				choice.predicted_error = AreaMethodSelector::predict_error(choice.method, est.size_over_distance, est.roughness, light->area_stochastic_samples);
+				s.data.shading_method = pack_area_shading_method(choice.method, light->area_stochastic_samples);
 			}
 			Vector3 p(s.data.position[0], s.data.position[1], s.data.position[2]);
 			s.distance_sq = p.length_squared();
@@ -259,10 +281,15 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	}
 	area_data.clear();
 	area_source_indices.clear();
+	area_auto_choices.clear();
 	area_shading_method_mask = 0;
+	auto_geometry = nullptr; // Consumed: valid for this update only.
+	auto_mesh_storage = nullptr;
+	auto_material_storage = nullptr;
 	for (const SortedArea &s : areas) {
 		area_data.push_back(s.data);
 		area_source_indices.push_back(s.index);
+		area_auto_choices.push_back(auto_choices[s.index]);
 		area_shading_method_mask |= 1u << (s.data.shading_method & AREA_METHOD_MASK);
 		if (p_cluster_builder) {
 			const AreaLightData &d = s.data;
@@ -282,6 +309,12 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	if (spot_light_count) {
 		rd->buffer_update(spot_light_buffer, 0, spot_light_count * sizeof(LightData), spot_data.data());
 	}
+}
+
+void LightStorage::set_area_auto_receivers(const std::vector<RenderSceneData::GeometryInstance> *p_geometry, const RendererMeshStorage *p_mesh_storage, const RendererMaterialStorage *p_material_storage) {
+	auto_geometry = p_geometry;
+	auto_mesh_storage = p_mesh_storage;
+	auto_material_storage = p_material_storage;
 }
 
 /* RendererLightStorage */

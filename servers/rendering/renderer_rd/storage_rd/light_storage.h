@@ -24,6 +24,8 @@
 #include <vector>
 
 class ClusterBuilderRD;
+class RendererMeshStorage;
+class RendererMaterialStorage;
 
 namespace RendererRD {
 
@@ -126,6 +128,10 @@ private:
 	std::vector<LightData> spot_data;
 	std::vector<AreaLightData> area_data;
 	std::vector<uint32_t> area_source_indices; // GPU area light i came from p_lights[area_source_indices[i]].
+	// AUTO shading (AreaMethodSelector): receivers of the next update_light_buffers() only (then cleared).
+	const std::vector<RenderSceneData::GeometryInstance> *auto_geometry = nullptr;
+	const RendererMeshStorage *auto_mesh_storage = nullptr;
+	const RendererMaterialStorage *auto_material_storage = nullptr;
 
 	Light *_get_light(RID p_light, const char *p_caller) const;
 
@@ -159,6 +165,21 @@ public:
 	const std::vector<AreaLightData> &get_area_light_data() const { return area_data; }
 	// For GPU area light i of the last update, its index in the p_lights given (area shadows use it).
 	const std::vector<uint32_t> &get_area_light_source_indices() const { return area_source_indices; }
+
+	// AUTO area shading (servers/rendering/renderer_rd/area_method_selector.h). The renderer gives the
+	// visible geometry of the view before update_light_buffers(), which uses it (receiver distance and
+	// dominant roughness per AUTO light) and then forgets it; without it AUTO falls back to the camera
+	// distance and the default-roughness setting. Pointers must stay valid until that call.
+	void set_area_auto_receivers(const std::vector<RenderSceneData::GeometryInstance> *p_geometry, const RendererMeshStorage *p_mesh_storage, const RendererMaterialStorage *p_material_storage);
+	struct AreaAutoChoice {
+		RS::LightAreaShadingMethod requested = RS::LIGHT_AREA_SHADING_LTC; // The light's setting (may be AUTO).
+		RS::LightAreaShadingMethod method = RS::LIGHT_AREA_SHADING_LTC; // Uploaded (never AUTO).
+		float size_over_distance = 0.0f; // AUTO only.
+		float roughness = 0.0f; // AUTO only.
+		float predicted_error = 0.0f; // AUTO only: mean LDR-FLIP predicted for `method`.
+	};
+	// Per GPU area light of the last update (same order as get_area_light_data()).
+	const std::vector<AreaAutoChoice> &get_area_auto_choices() const { return area_auto_choices; }
 
 	// Fills one LightData from an omni/spot light record and its world transform (the unit conversion).
 	bool fill_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, LightData &r_data) const;
@@ -220,6 +241,9 @@ public:
 
 	LightStorage() {}
 	~LightStorage();
+
+private:
+	std::vector<AreaAutoChoice> area_auto_choices; // See get_area_auto_choices().
 };
 
 } // namespace RendererRD

@@ -1,0 +1,448 @@
+/**************************************************************************/
+/*  methods_sweep.cpp                                                     */
+/**************************************************************************/
+/* godot-area: the shading-method sweep (see methods_sweep.h).            */
+
+#include "modules/benchmark/methods_sweep.h"
+
+#include "core/error/error_macros.h"
+#include "modules/accuracy/accuracy_scenes.h"
+#include "modules/accuracy/accuracy_suite.h"
+#include "modules/metrics/image_metrics.h"
+#include "modules/reference/renderer_compositor_reference.h"
+#include "scene/resources/primitive_meshes.h"
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
+#include "servers/rendering/rendering_device.h"
+#include "servers/rendering/rendering_server_default.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace {
+
+double median(std::vector<double> p_values) {
+	if (p_values.empty()) {
+		return 0.0;
+	}
+	std::sort(p_values.begin(), p_values.end());
+	const size_t n = p_values.size();
+	return (n % 2) ? p_values[n / 2] : 0.5 * (p_values[n / 2 - 1] + p_values[n / 2]);
+}
+
+// The timing scene: a 24 x 24 m rough dielectric floor, N lights on a grid 1.5 m above it
+// (k x k, k = ceil(sqrt(N)), spread over 16 x 16 m), each 1 x 0.5 m (area) with range 4 m, facing down.
+struct TimingScene {
+	RID mesh, material, environment, scenario, camera, viewport, mesh_instance;
+	std::vector<RID> lights, light_instances;
+
+	bool build(RenderingServer *p_rs, const MethodsSweep::Config &p_config, int p_lights, int p_width, int p_height) {
+		RS::SurfaceData surface;
+		PlaneMesh::create_plane_arrays(surface, Vector2(24, 24), 0, 0, Vector3(), PlaneMesh::FACE_Y);
+		mesh = p_rs->mesh_create();
+		p_rs->mesh_add_surface(mesh, surface);
+		RS::MaterialParams mp;
+		mp.albedo = Color(0.8f, 0.8f, 0.8f, 1.0f);
+		mp.roughness = 0.4f;
+		mp.metallic = 0.0f;
+		mp.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
+		material = p_rs->material_create();
+		p_rs->material_set_params(material, mp);
+		p_rs->mesh_surface_set_material(mesh, 0, material);
+
+		environment = p_rs->environment_create();
+		p_rs->environment_set_background(environment, RS::ENV_BG_COLOR);
+		p_rs->environment_set_bg_color(environment, Color(0, 0, 0, 1));
+		p_rs->environment_set_ambient_light(environment, Color(0, 0, 0, 1), RS::ENV_AMBIENT_SOURCE_DISABLED, 0.0f);
+		scenario = p_rs->scenario_create();
+		p_rs->scenario_set_environment(scenario, environment);
+		mesh_instance = p_rs->instance_create();
+		p_rs->instance_set_base(mesh_instance, mesh);
+		p_rs->instance_set_scenario(mesh_instance, scenario);
+
+		const int k = int(std::ceil(std::sqrt(double(p_lights))));
+		const Basis down = Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f);
+		for (int i = 0; i < p_lights; i++) {
+			RID l;
+			if (p_config.kind == MethodsSweep::KIND_AREA) {
+				l = p_rs->area_light_create();
+				p_rs->light_area_set_size(l, Vector2(1.0f, 0.5f));
+				p_rs->light_area_set_shading_method(l, RS::LightAreaShadingMethod(p_config.method));
+				p_rs->light_area_set_stochastic_samples(l, p_config.samples);
+				if (int(p_rs->light_area_get_shading_method(l)) != p_config.method) {
+					p_rs->free(l);
+					return false;
+				}
+			} else if (p_config.kind == MethodsSweep::KIND_SPOT) {
+				l = p_rs->spot_light_create();
+				p_rs->light_set_param(l, RS::LIGHT_PARAM_SPOT_ANGLE, 60.0f);
+			} else {
+				l = p_rs->omni_light_create();
+			}
+			p_rs->light_set_param(l, RS::LIGHT_PARAM_ENERGY, 4.0f / float(p_lights));
+			p_rs->light_set_param(l, RS::LIGHT_PARAM_RANGE, 4.0f);
+			lights.push_back(l);
+			RID inst = p_rs->instance_create();
+			p_rs->instance_set_base(inst, l);
+			p_rs->instance_set_scenario(inst, scenario);
+			const float step = k > 1 ? 16.0f / float(k - 1) : 0.0f;
+			const Vector3 pos = k > 1 ? Vector3(-8.0f + step * float(i % k), 1.5f, -8.0f + step * float(i / k)) : Vector3(0, 1.5f, 0);
+			p_rs->instance_set_transform(inst, Transform3D(down, pos));
+			light_instances.push_back(inst);
+		}
+		camera = p_rs->camera_create();
+		p_rs->camera_set_perspective(camera, 60.0f, 0.05f, 100.0f);
+		const Vector3 eye(0, 9, 11);
+		p_rs->camera_set_transform(camera, Transform3D(Basis::looking_at(Vector3(0, 0, 0) - eye), eye));
+		viewport = p_rs->viewport_create();
+		p_rs->viewport_set_size(viewport, p_width, p_height);
+		p_rs->viewport_attach_camera(viewport, camera);
+		p_rs->viewport_set_scenario(viewport, scenario);
+		return true;
+	}
+
+	void free(RenderingServer *p_rs) {
+		for (RID r : { viewport, camera }) {
+			if (r.is_valid()) {
+				p_rs->free(r);
+			}
+		}
+		for (RID r : light_instances) {
+			p_rs->free(r);
+		}
+		if (mesh_instance.is_valid()) {
+			p_rs->free(mesh_instance);
+		}
+		for (RID r : { scenario, environment }) {
+			if (r.is_valid()) {
+				p_rs->free(r);
+			}
+		}
+		for (RID r : lights) {
+			p_rs->free(r);
+		}
+		for (RID r : { material, mesh }) {
+			if (r.is_valid()) {
+				p_rs->free(r);
+			}
+		}
+	}
+};
+
+std::vector<AccuracyScenes::Scene> failure_scenes() {
+	typedef AccuracyScenes S;
+	return {
+		S::make_scene(S::RECEIVER_PLANE, 0.25f, 0.0f, Vector2(1, 1), S::PLACEMENT_GRAZING),
+		S::make_scene(S::RECEIVER_PLANE, 0.25f, 0.0f, Vector2(4, 4), S::PLACEMENT_HORIZON),
+		S::make_scene(S::RECEIVER_PLANE, 0.05f, 1.0f, Vector2(1, 1), S::PLACEMENT_FACING),
+		S::make_scene(S::RECEIVER_PLANE, 0.5f, 1.0f, Vector2(4, 4), S::PLACEMENT_CLOSE),
+		S::make_scene(S::RECEIVER_PLANE, 0.25f, 1.0f, Vector2(2, 0.5f), S::PLACEMENT_FACING),
+	};
+}
+
+Image render_accuracy_scene(RenderingServer *p_rs, const AccuracyScenes::Scene &p_scene, int p_res, int p_method, int p_samples, String *r_error) {
+	AccuracyScenes::Built built;
+	if (!AccuracyScenes::build(p_rs, p_scene, p_res, p_method, &built, r_error)) {
+		return Image();
+	}
+	p_rs->light_area_set_stochastic_samples(built.light, p_samples);
+	p_rs->draw();
+	Image image = p_rs->viewport_get_texture_data(built.viewport);
+	AccuracyScenes::free_scene(p_rs, built);
+	return image;
+}
+
+bool wanted(const MethodsSweep::Options &p_options, const MethodsSweep::Config &p_config) {
+	return p_options.only_configs.empty() || std::find(p_options.only_configs.begin(), p_options.only_configs.end(), p_config.name) != p_options.only_configs.end();
+}
+
+} // namespace
+
+std::vector<MethodsSweep::Config> MethodsSweep::default_configs() {
+	std::vector<Config> c;
+	c.push_back({ "LTC", KIND_AREA, int(RS::LIGHT_AREA_SHADING_LTC), 1 });
+	c.push_back({ "LTC_POLYNOMIAL", KIND_AREA, int(RS::LIGHT_AREA_SHADING_LTC_POLYNOMIAL), 1 });
+	c.push_back({ "MRP", KIND_AREA, int(RS::LIGHT_AREA_SHADING_MRP), 1 });
+	for (int n : { 1, 4, 16 }) {
+		c.push_back({ "MC" + itos(n), KIND_AREA, int(RS::LIGHT_AREA_SHADING_STOCHASTIC), n });
+	}
+	c.push_back({ "SPOT", KIND_SPOT, -1, 1 });
+	c.push_back({ "OMNI", KIND_OMNI, -1, 1 });
+	return c;
+}
+
+std::vector<String> MethodsSweep::failure_scene_ids() {
+	std::vector<String> ids;
+	for (const AccuracyScenes::Scene &s : failure_scenes()) {
+		ids.push_back(s.id);
+	}
+	return ids;
+}
+
+bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, String *r_error) {
+	auto fail = [&](const String &p_message) {
+		if (r_error) {
+			*r_error = p_message;
+		}
+		return false;
+	};
+	if (!r_rows) {
+		return fail("MethodsSweep::run needs an output vector.");
+	}
+	r_rows->clear();
+	if (RenderingServer::get_singleton()) {
+		return fail("MethodsSweep::run creates its own rendering servers; a RenderingServer already exists.");
+	}
+	if (p_options.width < 1 || p_options.height < 1 || p_options.width > 4096 || p_options.height > 4096) {
+		return fail(vformat("Sweep resolution must be within 1..4096, got %dx%d.", p_options.width, p_options.height));
+	}
+	if (p_options.frames < 1 || p_options.warmup_frames < 0) {
+		return fail("Sweep needs frames >= 1 and warmup_frames >= 0.");
+	}
+	for (int n : p_options.light_counts) {
+		if (n < 1 || n > 512) {
+			return fail(vformat("Light counts must be in 1..512, got %d.", n));
+		}
+	}
+	const std::vector<Config> configs = default_configs();
+	String error;
+
+	// Error part, reference first (its own server), then the engine.
+	std::vector<AccuracyScenes::Scene> scenes;
+	std::vector<Image> references;
+	const int res = p_options.error_resolution;
+	if (p_options.errors) {
+		scenes = AccuracyScenes::ci_subset();
+		for (const AccuracyScenes::Scene &f : failure_scenes()) {
+			bool have = false;
+			for (const AccuracyScenes::Scene &s : scenes) {
+				have = have || s.id == f.id;
+			}
+			if (!have) {
+				scenes.push_back(f);
+			}
+		}
+		ReferenceRenderOptions options;
+		options.shadows = false;
+		options.seed = 0;
+		RendererCompositorReference *compositor = new RendererCompositorReference(options);
+		RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+		for (size_t i = 0; i < scenes.size(); i++) {
+			Image img = render_accuracy_scene(rs, scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, 1, &error);
+			if (img.is_empty()) {
+				delete rs;
+				return fail("Reference: " + error);
+			}
+			references.push_back(img);
+			if (p_options.progress) {
+				printf("[reference %zu/%zu] %s\n", i + 1, scenes.size(), scenes[i].id.c_str());
+				fflush(stdout);
+			}
+		}
+		delete rs;
+	}
+
+	RenderingDevice *owned_device = nullptr;
+	if (!RenderingDevice::get_singleton()) {
+		owned_device = new RenderingDevice;
+		if (!owned_device->initialize(&error)) {
+			delete owned_device;
+			return fail("No usable Vulkan device: " + error);
+		}
+	}
+	int max_lights = 64;
+	for (int n : p_options.light_counts) {
+		max_lights = std::max(max_lights, n);
+	}
+	RendererCompositorRD *compositor = new RendererCompositorRD;
+	if (!compositor->initialize(max_lights)) {
+		delete compositor;
+		if (owned_device) {
+			owned_device->finalize();
+			delete owned_device;
+		}
+		return fail("The Forward+ renderer could not be initialized (see the errors above).");
+	}
+	RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+	bool ok = true;
+	const std::vector<String> failure_ids = failure_scene_ids();
+	if (!p_options.maps_dir.empty()) {
+		std::error_code ec;
+		std::filesystem::create_directories(p_options.maps_dir, ec);
+	}
+
+	// Timing: light count outer, configuration inner, so slow drift of a shared machine spreads
+	// over all configurations alike (ratios are taken at equal light counts).
+	std::vector<String> capped;
+	for (int n : p_options.timing ? p_options.light_counts : std::vector<int>()) {
+		for (const Config &config : configs) {
+			if (!ok || !wanted(p_options, config) || std::find(capped.begin(), capped.end(), config.name) != capped.end()) {
+				continue;
+			}
+			TimingScene scene;
+			if (!scene.build(rs, config, n, p_options.width, p_options.height)) {
+				scene.free(rs);
+				error = "Could not build the timing scene for " + config.name + ".";
+				ok = false;
+				break;
+			}
+			std::vector<double> opaque, total, wall;
+			for (int f = 0; f < p_options.warmup_frames + p_options.frames; f++) {
+				auto begin = std::chrono::steady_clock::now();
+				rs->draw();
+				const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+				if (f < p_options.warmup_frames) {
+					continue;
+				}
+				double sum = 0.0, op = 0.0;
+				for (const auto &pass : rs->get_frame_profile()) {
+					sum += pass.second;
+					if (pass.first == "opaque") {
+						op = pass.second;
+					}
+				}
+				opaque.push_back(op);
+				total.push_back(sum);
+				wall.push_back(ms);
+			}
+			scene.free(rs);
+			Row row;
+			row.section = "timing";
+			row.config = config.name;
+			row.method = config.method;
+			row.samples = config.samples;
+			row.lights = n;
+			row.width = p_options.width;
+			row.height = p_options.height;
+			row.gpu_ms_opaque = median(opaque);
+			row.gpu_ms_total = median(total);
+			row.wall_ms = median(wall);
+			r_rows->push_back(row);
+			if (p_options.progress) {
+				printf("[timing %s] %d lights: opaque %.3f ms, GPU %.3f ms, wall %.1f ms\n", config.name.c_str(), n, row.gpu_ms_opaque, row.gpu_ms_total, row.wall_ms);
+				fflush(stdout);
+			}
+			if (p_options.frame_cap_ms > 0.0 && row.wall_ms > p_options.frame_cap_ms) {
+				capped.push_back(config.name);
+				if (p_options.progress) {
+					printf("[timing %s] %.0f ms per frame is over the %.0f ms cap: larger light counts skipped\n", config.name.c_str(), row.wall_ms, p_options.frame_cap_ms);
+				}
+			}
+		}
+	}
+	for (const Config &config : configs) {
+		if (!ok || !wanted(p_options, config)) {
+			continue;
+		}
+		if (!ok || !p_options.errors || config.kind != KIND_AREA) {
+			continue;
+		}
+		for (size_t i = 0; i < scenes.size(); i++) {
+			Image engine = render_accuracy_scene(rs, scenes[i], res, config.method, config.samples, &error);
+			ImageMetrics::Result m;
+			if (engine.is_empty() || !ImageMetrics::compare(engine, references[i], &m, &error)) {
+				error = config.name + " on " + scenes[i].id + ": " + error;
+				ok = false;
+				break;
+			}
+			Row row;
+			row.section = "error";
+			row.config = config.name;
+			row.method = config.method;
+			row.samples = config.samples;
+			row.lights = 1;
+			row.width = res;
+			row.height = res;
+			row.scene = scenes[i].id;
+			row.flip = m.flip;
+			row.rmse = m.rmse;
+			row.ssim = m.ssim;
+			row.hdr_flip = m.has_hdr_flip ? m.hdr_flip : 0.0;
+			r_rows->push_back(row);
+			if (p_options.progress) {
+				printf("[error %s] %s: FLIP %.4f\n", config.name.c_str(), scenes[i].id.c_str(), m.flip);
+				fflush(stdout);
+			}
+			if (!p_options.maps_dir.empty() && std::find(failure_ids.begin(), failure_ids.end(), scenes[i].id) != failure_ids.end()) {
+				const String path = p_options.maps_dir + "/" + config.name + "_" + scenes[i].id + ".png";
+				if (!AccuracySuite::write_thumbnail(engine, references[i], m.flip_map, path, &error)) {
+					ok = false;
+					break;
+				}
+			}
+		}
+	}
+	delete rs;
+	if (owned_device) {
+		owned_device->finalize();
+		delete owned_device;
+	}
+	if (!ok) {
+		return fail(error);
+	}
+	if (!p_options.csv_path.empty() && !write_csv(p_options.csv_path, *r_rows, &error)) {
+		return fail(error);
+	}
+	return true;
+}
+
+bool MethodsSweep::write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error) {
+	FILE *f = fopen(p_path.c_str(), "w");
+	if (!f) {
+		if (r_error) {
+			*r_error = "Cannot write the sweep CSV '" + p_path + "'.";
+		}
+		return false;
+	}
+	fprintf(f, "section,config,method,samples,lights,width,height,gpu_ms_opaque,gpu_ms_total,wall_ms,scene,flip,rmse,ssim,hdr_flip\n");
+	for (const Row &r : p_rows) {
+		fprintf(f, "%s,%s,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%s,%.6g,%.6g,%.6g,%.6g\n", r.section.c_str(), r.config.c_str(), r.method, r.samples, r.lights, r.width, r.height,
+				r.gpu_ms_opaque, r.gpu_ms_total, r.wall_ms, r.scene.c_str(), r.flip, r.rmse, r.ssim, r.hdr_flip);
+	}
+	const bool ok = fclose(f) == 0;
+	if (!ok && r_error) {
+		*r_error = "Writing the sweep CSV '" + p_path + "' failed.";
+	}
+	return ok;
+}
+
+bool MethodsSweep::write_shader_sources(const String &p_dir, String *r_error) {
+	auto fail = [&](const String &p_message) {
+		if (r_error) {
+			*r_error = p_message;
+		}
+		return false;
+	};
+	// The same file and variant list as RenderForwardClustered::initialize().
+	ShaderRD shader;
+	const std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
+	if (!shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants)) {
+		return fail("Cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
+	}
+	std::error_code ec;
+	std::filesystem::create_directories(p_dir, ec);
+	auto write = [&](const String &p_name, const String &p_text) {
+		const String path = p_dir + "/" + p_name;
+		FILE *f = fopen(path.c_str(), "w");
+		if (!f) {
+			return false;
+		}
+		fwrite(p_text.data(), 1, p_text.size(), f);
+		return fclose(f) == 0;
+	};
+	if (!write("base.frag", shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, RenderForwardClustered::SCENE_SHADER_COLOR))) {
+		return fail("Cannot write shader sources under '" + p_dir + "'.");
+	}
+	const char *names[4] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC" };
+	for (int m = 0; m < 4; m++) {
+		const String source = shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, RenderForwardClustered::SCENE_SHADER_COLOR_AREA, RenderForwardClustered::get_area_method_defines(1u << m));
+		if (!write(String("area_") + names[m] + ".frag", source)) {
+			return fail("Cannot write shader sources under '" + p_dir + "'.");
+		}
+	}
+	return true;
+}

@@ -1,0 +1,147 @@
+/**************************************************************************/
+/*  methods_sweep_command.cpp                                             */
+/**************************************************************************/
+/* godot-area: the `bench --sweep methods` command (see the header).      */
+
+#include "modules/benchmark/methods_sweep_command.h"
+
+#include "modules/benchmark/methods_sweep.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+
+namespace {
+
+bool parse_int(const String &p_text, int p_min, int p_max, int &r_value) {
+	char *end = nullptr;
+	long v = strtol(p_text.c_str(), &end, 10);
+	if (p_text.empty() || *end != '\0' || v < p_min || v > p_max) {
+		return false;
+	}
+	r_value = int(v);
+	return true;
+}
+
+int usage_error(const String &p_message) {
+	fprintf(stderr, "godot-area bench --sweep methods: %s\n", p_message.c_str());
+	return 2;
+}
+
+} // namespace
+
+int methods_sweep_command(const std::vector<String> &p_args) {
+	MethodsSweep::Options options;
+	bool seen_sweep = false;
+	for (size_t i = 0; i < p_args.size(); i++) {
+		const String &a = p_args[i];
+		const bool has_value = i + 1 < p_args.size();
+		if (a == "bench") {
+			continue;
+		} else if (a == "--sweep") {
+			if (!has_value || p_args[i + 1] != "methods") {
+				return usage_error("--sweep expects 'methods'.");
+			}
+			seen_sweep = true;
+			i++;
+		} else if (a == "--progress") {
+			options.progress = true;
+		} else if (a == "--no-errors") {
+			options.errors = false;
+		} else if (a == "--no-timing") {
+			options.timing = false;
+		} else if (a == "--spirv-sources") {
+			if (!has_value) {
+				return usage_error("--spirv-sources needs a directory.");
+			}
+			String error;
+			if (!MethodsSweep::write_shader_sources(p_args[i + 1], &error)) {
+				fprintf(stderr, "godot-area bench --sweep methods: %s\n", error.c_str());
+				return 1;
+			}
+			printf("Wrote the per-method fragment sources to %s\n", p_args[i + 1].c_str());
+			return 0;
+		} else if (a == "--csv" || a == "--maps" || a == "--resolution" || a == "--lights" || a == "--frames" || a == "--warmup" || a == "--error-resolution" || a == "--configs" || a == "--frame-cap-ms") {
+			if (!has_value) {
+				return usage_error(a + " needs a value.");
+			}
+			const String v = p_args[++i];
+			if (a == "--csv") {
+				options.csv_path = v;
+			} else if (a == "--maps") {
+				options.maps_dir = v;
+			} else if (a == "--resolution") {
+				std::vector<String> wh = string_split(v, 'x');
+				if (wh.size() != 2 || !parse_int(wh[0], 1, 4096, options.width) || !parse_int(wh[1], 1, 4096, options.height)) {
+					return usage_error("--resolution expects WxH (1..4096), got '" + v + "'.");
+				}
+			} else if (a == "--lights") {
+				options.light_counts.clear();
+				for (const String &n : string_split(v, ',', false)) {
+					int count = 0;
+					if (!parse_int(n, 1, 512, count)) {
+						return usage_error("--lights expects counts in 1..512, got '" + n + "'.");
+					}
+					options.light_counts.push_back(count);
+				}
+				if (options.light_counts.empty()) {
+					return usage_error("--lights needs at least one count.");
+				}
+			} else if (a == "--frames") {
+				if (!parse_int(v, 1, 1000, options.frames)) {
+					return usage_error("--frames expects 1..1000, got '" + v + "'.");
+				}
+			} else if (a == "--warmup") {
+				if (!parse_int(v, 0, 1000, options.warmup_frames)) {
+					return usage_error("--warmup expects 0..1000, got '" + v + "'.");
+				}
+			} else if (a == "--frame-cap-ms") {
+				int cap = 0;
+				if (!parse_int(v, 0, 10000000, cap)) {
+					return usage_error("--frame-cap-ms expects a number of milliseconds (0 = no cap), got '" + v + "'.");
+				}
+				options.frame_cap_ms = double(cap);
+			} else if (a == "--error-resolution") {
+				if (!parse_int(v, 8, 1024, options.error_resolution)) {
+					return usage_error("--error-resolution expects 8..1024, got '" + v + "'.");
+				}
+			} else {
+				for (const String &c : string_split(v, ',', false)) {
+					bool known = false;
+					for (const MethodsSweep::Config &config : MethodsSweep::default_configs()) {
+						known = known || config.name == c;
+					}
+					if (!known) {
+						return usage_error("unknown configuration '" + c + "' (LTC, LTC_POLYNOMIAL, MRP, MC1, MC4, MC16, SPOT, OMNI).");
+					}
+					options.only_configs.push_back(c);
+				}
+			}
+		} else {
+			return usage_error("unknown argument '" + a + "'.");
+		}
+	}
+	if (!seen_sweep) {
+		return usage_error("expected '--sweep methods'.");
+	}
+	std::vector<MethodsSweep::Row> rows;
+	String error;
+	if (!MethodsSweep::run(options, &rows, &error)) {
+		fprintf(stderr, "godot-area bench --sweep methods: %s\n", error.c_str());
+		return 1;
+	}
+	// Summary: GPU ms of the opaque pass per configuration and light count, mean FLIP per configuration.
+	std::map<String, std::pair<double, int>> flip;
+	for (const MethodsSweep::Row &r : rows) {
+		if (r.section == "timing") {
+			printf("%-16s %4d lights  opaque %9.3f ms  GPU %9.3f ms\n", r.config.c_str(), r.lights, r.gpu_ms_opaque, r.gpu_ms_total);
+		} else {
+			flip[r.config].first += r.flip;
+			flip[r.config].second++;
+		}
+	}
+	for (const auto &kv : flip) {
+		printf("%-16s mean LDR-FLIP %.4f over %d scenes\n", kv.first.c_str(), kv.second.first / kv.second.second, kv.second.second);
+	}
+	return 0;
+}

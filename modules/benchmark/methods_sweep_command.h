@@ -1,0 +1,26 @@
+/**************************************************************************/
+/*  methods_sweep_command.h                                               */
+/**************************************************************************/
+/* godot-area: `godot-area bench --sweep methods`, the shading-method     */
+/* sweep on the command line (methods_sweep.h):                           */
+/*                                                                        */
+/*   godot-area bench --sweep methods [--csv F] [--maps DIR]              */
+/*        [--resolution WxH] [--lights 1,4,16,..] [--frames N]            */
+/*        [--warmup N] [--error-resolution N] [--configs LTC,MRP,..]      */
+/*        [--no-errors] [--no-timing] [--frame-cap-ms N] [--progress]     */
+/*   godot-area bench --sweep methods --spirv-sources DIR                 */
+/*        (writes the per-method fragment sources and exits)              */
+/*                                                                        */
+/* Defaults: 256x144, lights 1,4,16,64,256, 7 frames after 2 warm-up     */
+/* frames, errors at 64x64 on the CI subset + the failure scenes.        */
+/* Must run before Main::setup() (the sweep makes its own servers).       */
+
+#pragma once
+
+#include "core/string/ustring.h"
+
+#include <vector>
+
+// p_args: the arguments after "bench" ("--sweep" and "methods" are skipped).
+// Returns 0 on success, 1 on a failed run, 2 on bad arguments.
+int methods_sweep_command(const std::vector<String> &p_args);

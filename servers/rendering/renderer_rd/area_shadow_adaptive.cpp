@@ -1,0 +1,402 @@
+/**************************************************************************/
+/*  area_shadow_adaptive.cpp                                              */
+/**************************************************************************/
+
+#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+
+#include "core/config/project_settings.h"
+#include "core/error/error_macros.h"
+
+#include <algorithm>
+#include <cstring>
+
+/* Settings and heuristic */
+
+uint32_t AreaShadowAdaptiveRD::get_project_reprojection_divisor() {
+	int v = int(GLOBAL_DEF(SETTING_REPROJECTION_DIVISOR, int(DEFAULT_REPROJECTION_DIVISOR)).to_int());
+	if (v < 1 || v > 64) {
+		ERR_PRINT(vformat("%s must be 1..64; got %d. Using %u.", SETTING_REPROJECTION_DIVISOR, v, DEFAULT_REPROJECTION_DIVISOR));
+		return DEFAULT_REPROJECTION_DIVISOR;
+	}
+	return uint32_t(v);
+}
+
+uint32_t AreaShadowAdaptiveRD::get_project_max_depth() {
+	int v = int(GLOBAL_DEF(SETTING_MAX_DEPTH, int(MAX_GPU_DEPTH)).to_int());
+	if (v < 1 || v > int(MAX_GPU_DEPTH)) {
+		ERR_PRINT(vformat("%s must be 1..%u; got %d. Using %u.", SETTING_MAX_DEPTH, MAX_GPU_DEPTH, v, MAX_GPU_DEPTH));
+		return MAX_GPU_DEPTH;
+	}
+	return uint32_t(v);
+}
+
+uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data) {
+	AreaShadowQuadtree::HeuristicInput in;
+	in.light_size = p_size;
+	in.range = p_range;
+	// Camera to the closest point of the range box (0 inside it).
+	Vector3 cam = p_data.cam_transform.origin;
+	Vector3 lo = p_world_box.position;
+	Vector3 hi = p_world_box.position + p_world_box.size;
+	Vector3 d;
+	for (int i = 0; i < 3; i++) {
+		d[i] = std::max(std::max(lo[i] - cam[i], cam[i] - hi[i]), real_t(0));
+	}
+	in.camera_distance = d.length();
+	in.fov_y = p_data.fovy_degrees * 0.017453293f;
+	in.viewport_height = p_data.viewport_height > 0 ? float(p_data.viewport_height) : 1080.0f;
+	in.max_depth = get_project_max_depth();
+	return AreaShadowQuadtree::estimate_heuristic(in).grid;
+}
+
+bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "AreaShadowAdaptiveRD::initialize() needs an initialized RenderingDevice.");
+	if (initialized) {
+		return true;
+	}
+	ERR_FAIL_COND_V(!ring.configure(p_ring_slots), false);
+	divisor = get_project_reprojection_divisor();
+	max_depth = get_project_max_depth();
+	// Loading splits the files; nothing is compiled before the first dispatch with work.
+	ERR_FAIL_COND_V_MSG(!reprojection_shader.initialize("area_shadow_reprojection.glsl", { "" }), false, "AreaShadowAdaptiveRD: cannot load shaders/area_shadow_reprojection.glsl.");
+	ERR_FAIL_COND_V_MSG(!banding_shader.initialize("area_shadow_banding.glsl", { "" }), false, "AreaShadowAdaptiveRD: cannot load shaders/area_shadow_banding.glsl.");
+	RD::SamplerState ss; // Nearest, clamp: texelFetch only.
+	sampler = rd->sampler_create(ss);
+	query_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(QueryData));
+	rd->set_resource_name(query_buffer, "AreaShadowAdaptiveRD queries");
+	flag_buffers.clear();
+	for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
+		RID b = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(uint32_t));
+		rd->set_resource_name(b, vformat("AreaShadowAdaptiveRD banding flags %u", i));
+		flag_buffers.push_back(b);
+	}
+	slot_queries.assign(ring.get_slot_count(), std::vector<IssuedQuery>());
+	slot_submissions.assign(ring.get_slot_count(), 0);
+	ring.set_frame_complete_predicate([this](uint64_t p_frame) {
+		// One frame in flight at a time: the frame is complete once a later submission started.
+		for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
+			if (ring.get_slot_state(i) == AreaShadowReadbackRing::SLOT_IN_FLIGHT && ring.get_slot_frame(i) == p_frame) {
+				return RenderingDevice::get_singleton()->get_frames_submitted() > slot_submissions[i];
+			}
+		}
+		return true;
+	});
+	ERR_FAIL_COND_V_MSG(!sampler.is_valid() || !query_buffer.is_valid(), false, "AreaShadowAdaptiveRD: GPU resources could not be created.");
+	initialized = true;
+	return true;
+}
+
+void AreaShadowAdaptiveRD::finalize() {
+	trees.clear(); // Tiles back to their sources.
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (rd && rd->is_initialized()) {
+		RID all[] = { reprojection_pipeline, banding_pipeline, sampler, query_buffer, values_buffer };
+		for (RID r : all) {
+			if (r.is_valid()) {
+				rd->free(r);
+			}
+		}
+		for (RID r : flag_buffers) {
+			if (r.is_valid()) {
+				rd->free(r);
+			}
+		}
+	}
+	reprojection_pipeline = RID();
+	banding_pipeline = RID();
+	sampler = RID();
+	query_buffer = RID();
+	values_buffer = RID();
+	values_capacity = 0;
+	flag_buffers.clear();
+	slot_queries.clear();
+	reprojection_shader.clear();
+	banding_shader.clear();
+	initialized = false;
+}
+
+bool AreaShadowAdaptiveRD::set_reprojection_divisor(uint32_t p_divisor) {
+	ERR_FAIL_COND_V_MSG(p_divisor < 1 || p_divisor > 64, false, vformat("Area shadow reprojection divisor %u is invalid (expected 1..64).", p_divisor));
+	divisor = p_divisor;
+	return true;
+}
+
+bool AreaShadowAdaptiveRD::set_max_depth(uint32_t p_depth) {
+	ERR_FAIL_COND_V_MSG(p_depth < 1 || p_depth > 3, false, vformat("Area shadow adaptive max depth %u is invalid (expected 1..3: 9 x 9 maps at most).", p_depth));
+	max_depth = p_depth;
+	for (auto &kv : trees) {
+		kv.second->set_max_depth(max_depth);
+	}
+	return true;
+}
+
+bool AreaShadowAdaptiveRD::_ensure_pipelines() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (!reprojection_pipeline.is_valid()) {
+		RID shader = reprojection_shader.version_get_shader(0);
+		ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "Area shadow reprojection shader failed to compile: " + reprojection_shader.get_last_error());
+		reprojection_pipeline = rd->compute_pipeline_create(shader);
+	}
+	if (!banding_pipeline.is_valid()) {
+		RID shader = banding_shader.version_get_shader(0);
+		ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "Area shadow banding shader failed to compile: " + banding_shader.get_last_error());
+		banding_pipeline = rd->compute_pipeline_create(shader);
+	}
+	return reprojection_pipeline.is_valid() && banding_pipeline.is_valid();
+}
+
+/* Lights */
+
+AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles) {
+	auto it = trees.find(p_light);
+	if (it != trees.end()) {
+		return it->second.get();
+	}
+	std::unique_ptr<AreaShadowQuadtree> tree(new AreaShadowQuadtree);
+	tree->set_max_depth(max_depth);
+	if (!tree->reset(p_tiles)) {
+		return nullptr;
+	}
+	AreaShadowQuadtree *ptr = tree.get();
+	trees[p_light] = std::move(tree);
+	return ptr;
+}
+
+bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps) {
+	AreaShadowQuadtree *tree = light_get_tree(p_light, p_tiles);
+	if (!tree) {
+		return false;
+	}
+	auto h = content_hashes.find(p_light);
+	if (h != content_hashes.end() && h->second != p_content_hash) {
+		tree->mark_all_dirty(); // The light or a caster moved: every map is redrawn.
+	}
+	content_hashes[p_light] = p_content_hash;
+	std::vector<AreaShadowQuadtree::Point> points = tree->get_points();
+	for (const AreaShadowQuadtree::Point &p : tree->collect_draws(p_max_draws)) {
+		AreaShadowAtlas::DrawRequest d;
+		d.light = p_light;
+		d.tile = p.tile;
+		d.uv = p.uv;
+		for (uint32_t i = 0; i < points.size(); i++) {
+			if (points[i].tile == p.tile) {
+				d.map_index = i;
+			}
+		}
+		r_draws.push_back(d);
+	}
+	for (const AreaShadowQuadtree::Point &p : tree->get_points()) {
+		if (p.valid) {
+			AreaShadowAtlas::Map m;
+			m.uv = p.uv;
+			m.tile = p.tile;
+			m.valid = true;
+			m.dirty = p.dirty;
+			r_maps.push_back(m);
+		}
+	}
+	return true;
+}
+
+void AreaShadowAdaptiveRD::light_release(uint64_t p_light) {
+	trees.erase(p_light);
+	content_hashes.erase(p_light);
+}
+
+void AreaShadowAdaptiveRD::release_lights_except(const std::vector<uint64_t> &p_seen) {
+	for (auto it = trees.begin(); it != trees.end();) {
+		if (std::find(p_seen.begin(), p_seen.end(), it->first) == p_seen.end()) {
+			content_hashes.erase(it->first);
+			it = trees.erase(it);
+		} else {
+			++it;
+		}
+	}
+}
+
+/* Frames */
+
+void AreaShadowAdaptiveRD::begin_frame() {
+	ERR_FAIL_COND_MSG(!initialized, "AreaShadowAdaptiveRD::begin_frame: not initialized.");
+	frame++;
+	ring.begin_frame(frame);
+	std::map<uint64_t, std::vector<AreaShadowQuadtree::Result>> results;
+	uint64_t data_frame = 0;
+	int slot = ring.take_newest_completed(&data_frame);
+	last_banding_count = 0;
+	if (slot >= 0 && !slot_queries[slot].empty()) {
+		const std::vector<IssuedQuery> &issued = slot_queries[slot];
+		// The slot's frame is complete: the read does not wait for GPU work of this frame.
+		std::vector<uint8_t> bytes = RenderingDevice::get_singleton()->buffer_get_data(flag_buffers[slot], 0, uint32_t(issued.size() * sizeof(uint32_t)));
+		if (bytes.size() == issued.size() * sizeof(uint32_t)) {
+			const uint32_t *flags = reinterpret_cast<const uint32_t *>(bytes.data());
+			for (size_t i = 0; i < issued.size(); i++) {
+				const AreaShadowQuadtree::Query &q = issued[i].query;
+				results[issued[i].light].push_back({ q.node, q.version, q.parent_test, flags[i] != 0 });
+				last_banding_count += flags[i] != 0 ? 1 : 0;
+			}
+		}
+		last_result_frame = data_frame;
+	}
+	for (auto &kv : trees) {
+		kv.second->begin_frame();
+		auto rit = results.find(kv.first);
+		kv.second->apply_results(rit == results.end() ? std::vector<AreaShadowQuadtree::Result>() : rit->second);
+	}
+}
+
+static void _fill_query(AreaShadowAdaptiveRD::QueryData &r_d, const AreaShadowAdaptiveRD::LightInput &p_light, const AreaShadowAdaptiveRD::AtlasInfo &p_atlas, const AreaShadowQuadtree::Query &p_q) {
+	memset(&r_d, 0, sizeof(r_d));
+	Projection::from_transform(p_light.light_from_view).to_floats(r_d.light_from_view);
+	r_d.half_size[0] = p_light.size.x * 0.5f;
+	r_d.half_size[1] = p_light.size.y * 0.5f;
+	r_d.depth_scale = p_light.depth_scale;
+	r_d.bias = p_light.bias;
+	for (uint32_t c = 0; c < 4; c++) {
+		r_d.corner_uv[c * 2 + 0] = p_q.corner_uv[c].x;
+		r_d.corner_uv[c * 2 + 1] = p_q.corner_uv[c].y;
+		r_d.corner_tile[c] = p_q.corner_tile[c];
+	}
+	uint32_t sub = std::max(p_atlas.subdivision, 1u);
+	r_d.atlas_subdivision = sub;
+	r_d.tile_size = p_atlas.size / sub;
+	r_d.quadrant_size = std::max(r_d.tile_size / 2, 1u);
+}
+
+static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_reproj_shader, RID p_banding_shader, RID p_sampler, RID p_depth, uint32_t p_width, uint32_t p_height, uint32_t p_divisor, const Projection &p_clip_from_view, RID p_atlas, RID p_queries, RID p_values, RID p_flags, uint32_t p_count) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	uint32_t ow = std::max((p_width + p_divisor - 1) / p_divisor, 1u);
+	uint32_t oh = std::max((p_height + p_divisor - 1) / p_divisor, 1u);
+	std::vector<RD::Uniform> u1 = {
+		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 0, p_depth),
+		RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 1, p_sampler),
+		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, p_atlas),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, p_queries),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 4, p_values),
+	};
+	RID set1 = rd->uniform_set_create(u1, p_reproj_shader, 0);
+	std::vector<RD::Uniform> u2 = {
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, p_values),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, p_flags),
+	};
+	RID set2 = rd->uniform_set_create(u2, p_banding_shader, 0);
+	ERR_FAIL_COND_V_MSG(!set1.is_valid() || !set2.is_valid(), false, "Area shadow reprojection: uniform sets could not be created.");
+	AreaShadowAdaptiveRD::ReprojectionPushConstant rpc;
+	memset(&rpc, 0, sizeof(rpc));
+	p_clip_from_view.inverse().to_floats(rpc.view_from_clip);
+	rpc.out_size[0] = ow;
+	rpc.out_size[1] = oh;
+	rpc.depth_size[0] = p_width;
+	rpc.depth_size[1] = p_height;
+	rpc.scale = p_divisor;
+	rpc.query_count = p_count;
+	AreaShadowAdaptiveRD::BandingPushConstant bpc;
+	bpc.size[0] = ow;
+	bpc.size[1] = oh;
+	bpc.query_count = p_count;
+	bpc.pad = 0;
+	rd->buffer_clear(p_flags, 0, p_count * sizeof(uint32_t));
+	RD::ComputeListID list = rd->compute_list_begin();
+	rd->compute_list_bind_compute_pipeline(list, p_reproj_pipeline);
+	rd->compute_list_bind_uniform_set(list, set1, 0);
+	rd->compute_list_set_push_constant(list, &rpc, sizeof(rpc));
+	rd->compute_list_dispatch_threads(list, ow, oh, p_count);
+	rd->compute_list_bind_compute_pipeline(list, p_banding_pipeline);
+	rd->compute_list_bind_uniform_set(list, set2, 0);
+	rd->compute_list_set_push_constant(list, &bpc, sizeof(bpc));
+	rd->compute_list_dispatch_threads(list, ow, oh, p_count);
+	rd->compute_list_end();
+	rd->free(set1); // Deferred until the frame completes.
+	rd->free(set2);
+	return true;
+}
+
+uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights) {
+	ERR_FAIL_COND_V_MSG(!initialized, 0, "AreaShadowAdaptiveRD::dispatch: not initialized.");
+	last_query_count = 0;
+	if (p_lights.empty() || p_width == 0 || p_height == 0 || !p_depth.is_valid() || !p_atlas.texture.is_valid()) {
+		return 0;
+	}
+	std::vector<IssuedQuery> issued;
+	std::vector<QueryData> data;
+	for (const LightInput &l : p_lights) {
+		auto it = trees.find(l.key);
+		if (it == trees.end()) {
+			continue;
+		}
+		for (const AreaShadowQuadtree::Query &q : it->second->build_queries()) {
+			if (issued.size() >= MAX_QUERIES_PER_FRAME) {
+				break; // The rest is tested on a later frame (the trees re-issue every frame).
+			}
+			IssuedQuery iq;
+			iq.light = l.key;
+			iq.query = q;
+			issued.push_back(iq);
+			data.emplace_back();
+			_fill_query(data.back(), l, p_atlas, q);
+		}
+	}
+	if (issued.empty()) {
+		return 0; // Nothing to test: no shader is compiled for it.
+	}
+	int slot = ring.acquire_write_slot();
+	if (slot < 0) {
+		return 0; // Every result buffer is still in flight: test again next frame rather than wait.
+	}
+	slot_queries[slot].clear();
+	if (!_ensure_pipelines()) {
+		return 0;
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	uint32_t ow = std::max((p_width + divisor - 1) / divisor, 1u);
+	uint32_t oh = std::max((p_height + divisor - 1) / divisor, 1u);
+	uint32_t need = ow * oh * uint32_t(issued.size());
+	if (need > values_capacity) {
+		if (values_buffer.is_valid()) {
+			rd->free(values_buffer);
+		}
+		values_capacity = std::max(need, values_capacity * 2);
+		values_buffer = rd->storage_buffer_create(values_capacity * sizeof(float));
+		rd->set_resource_name(values_buffer, "AreaShadowAdaptiveRD reprojection values");
+	}
+	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
+	if (!_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values_buffer, flag_buffers[slot], uint32_t(issued.size()))) {
+		return 0;
+	}
+	slot_queries[slot] = issued;
+	slot_submissions[slot] = rd->get_frames_submitted();
+	last_query_count = uint32_t(issued.size());
+	return last_query_count;
+}
+
+std::vector<uint32_t> AreaShadowAdaptiveRD::test_queries_blocking(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const LightInput &p_light, const std::vector<AreaShadowQuadtree::Query> &p_queries, std::vector<float> *r_values) {
+	ERR_FAIL_COND_V_MSG(!initialized, std::vector<uint32_t>(), "AreaShadowAdaptiveRD::test_queries_blocking: not initialized.");
+	ERR_FAIL_COND_V_MSG(p_queries.empty() || p_queries.size() > MAX_QUERIES_PER_FRAME, std::vector<uint32_t>(), vformat("AreaShadowAdaptiveRD::test_queries_blocking: %u queries (expected 1..%u).", uint32_t(p_queries.size()), MAX_QUERIES_PER_FRAME));
+	ERR_FAIL_COND_V(!_ensure_pipelines(), std::vector<uint32_t>());
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	std::vector<QueryData> data(p_queries.size());
+	for (size_t i = 0; i < p_queries.size(); i++) {
+		_fill_query(data[i], p_light, p_atlas, p_queries[i]);
+	}
+	uint32_t ow = std::max((p_width + divisor - 1) / divisor, 1u);
+	uint32_t oh = std::max((p_height + divisor - 1) / divisor, 1u);
+	uint32_t n = uint32_t(p_queries.size());
+	RID values = rd->storage_buffer_create(ow * oh * n * sizeof(float));
+	RID flags = rd->storage_buffer_create(n * sizeof(uint32_t));
+	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
+	std::vector<uint32_t> out;
+	if (_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values, flags, n)) {
+		std::vector<uint8_t> fb = rd->buffer_get_data(flags);
+		out.resize(n);
+		memcpy(out.data(), fb.data(), std::min(fb.size(), out.size() * sizeof(uint32_t)));
+		if (r_values) {
+			std::vector<uint8_t> vb = rd->buffer_get_data(values);
+			r_values->resize(vb.size() / sizeof(float));
+			memcpy(r_values->data(), vb.data(), r_values->size() * sizeof(float));
+		}
+	}
+	rd->free(values);
+	rd->free(flags);
+	return out;
+}

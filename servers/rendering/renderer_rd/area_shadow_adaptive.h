@@ -1,0 +1,205 @@
+/**************************************************************************/
+/*  area_shadow_adaptive.h                                                */
+/**************************************************************************/
+/* godot-area: GPU side of adaptive area-light shadows (thesis 6.3,       */
+/* Algorithm 1, spread over frames without a CPU stall).                  */
+/*                                                                        */
+/* Per frame, for every ADAPTIVE light: begin_frame() reads the banding   */
+/* flags of the newest COMPLETED frame from a ring of GPU buffers         */
+/* (AreaShadowReadbackRing) and applies them to the light's quadtree      */
+/* (AreaShadowQuadtree: expand on banding, prune idle quads); the caller  */
+/* draws the tree's dirty points into the atlas and renders the scene;    */
+/* then dispatch() records the reprojection pass (the visibility of each  */
+/* tested quad's four corner maps at 1/divisor of the camera resolution,  */
+/* shaders/area_shadow_reprojection.glsl) and the banding detector        */
+/* (shaders/area_shadow_banding.glsl) writing one flag per quad into this */
+/* frame's ring buffer. Nothing waits for the frame being built.          */
+/*                                                                        */
+/* The two compute shaders are compiled on the first dispatch with work,  */
+/* so a scene without an ADAPTIVE light never compiles them.              */
+/*                                                                        */
+/* Readback: RenderingDevice here runs one frame at a time (sync() after  */
+/* submit()), so a frame older than the current one is always complete;  */
+/* buffer_get_data() still flushes the frame being recorded, which is why */
+/* begin_frame() must run before anything else is recorded in the frame  */
+/* (the flush then submits an empty command buffer, no GPU work waits).   */
+
+#pragma once
+
+#include "core/math/aabb.h"
+#include "core/math/projection.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
+#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/storage_rd/area_shadow_quadtree.h"
+#include "servers/rendering/renderer_rd/storage_rd/area_shadow_readback_ring.h"
+#include "servers/rendering/renderer_scene_render.h"
+
+#include <map>
+#include <memory>
+#include <vector>
+
+class AreaShadowAdaptiveRD {
+public:
+	/* Definition */
+
+	static constexpr uint32_t DEFAULT_REPROJECTION_DIVISOR = 8; // Thesis 6.4: 1/8 of the viewport.
+	static constexpr uint32_t MAX_QUERIES_PER_FRAME = 256;
+	static constexpr const char *SETTING_REPROJECTION_DIVISOR = "rendering/lights_and_shadows/area_shadow_reprojection_divisor";
+	static constexpr const char *SETTING_MAX_DEPTH = "rendering/lights_and_shadows/area_shadow_adaptive_max_depth";
+	static constexpr uint32_t MAX_GPU_DEPTH = 3; // 9 x 9 maps: the AreaShadowData packing's limit.
+
+	// Mirror of QueryData in shaders/area_shadow_reprojection.glsl (std430, 144 bytes).
+	struct QueryData {
+		float light_from_view[16];
+		float half_size[2];
+		float depth_scale;
+		float bias;
+		float corner_uv[8]; // u0 v0 u1 v1 u2 v2 u3 v3.
+		uint32_t corner_tile[4];
+		uint32_t atlas_subdivision;
+		uint32_t quadrant_size;
+		uint32_t tile_size;
+		uint32_t pad;
+	};
+	static_assert(sizeof(QueryData) == 144, "QueryData must match shaders/area_shadow_reprojection.glsl.");
+
+	struct ReprojectionPushConstant {
+		float view_from_clip[16];
+		uint32_t out_size[2];
+		uint32_t depth_size[2];
+		uint32_t scale;
+		uint32_t query_count;
+		uint32_t pad[2];
+	};
+	static_assert(sizeof(ReprojectionPushConstant) == 96, "Push constant must match shaders/area_shadow_reprojection.glsl.");
+
+	struct BandingPushConstant {
+		uint32_t size[2];
+		uint32_t query_count;
+		uint32_t pad;
+	};
+
+	// What dispatch() needs of one ADAPTIVE light this frame.
+	struct LightInput {
+		uint64_t key = 0;
+		Transform3D light_from_view; // Orthonormal.
+		Vector2 size;
+		float depth_scale = 1.0f; // 1 / (range + diagonal), as the atlas.
+		float bias = 0.02f; // shadow_bias.
+	};
+
+	// Tiles of an AreaShadowAtlas for a light's quadtree (AreaShadowAtlas::tile_acquire/tile_release).
+	// When the atlas' get_configuration() changes, release the trees (light_release) and start again.
+	class AtlasTiles : public AreaShadowQuadtree::TileSource {
+		AreaShadowAtlas *atlas = nullptr;
+
+	public:
+		bool acquire_tile(uint32_t &r_tile) override { return atlas && atlas->tile_acquire(r_tile); }
+		void release_tile(uint32_t p_tile) override {
+			if (atlas) {
+				atlas->tile_release(p_tile);
+			}
+		}
+		explicit AtlasTiles(AreaShadowAtlas *p_atlas) :
+				atlas(p_atlas) {}
+	};
+
+	// The atlas layout for the lookups.
+	struct AtlasInfo {
+		RID texture;
+		uint32_t size = 0;
+		uint32_t subdivision = 1;
+	};
+
+private:
+	/* Private Members */
+
+	struct IssuedQuery {
+		uint64_t light = 0;
+		AreaShadowQuadtree::Query query;
+	};
+
+	ShaderRD reprojection_shader;
+	ShaderRD banding_shader;
+	RID reprojection_pipeline;
+	RID banding_pipeline;
+	RID sampler;
+	RID query_buffer; // QueryData[MAX_QUERIES_PER_FRAME].
+	RID values_buffer; // float per (query, reduced pixel).
+	uint32_t values_capacity = 0; // Floats.
+	std::vector<RID> flag_buffers; // One per ring slot: uint per query.
+	std::vector<std::vector<IssuedQuery>> slot_queries;
+	std::vector<uint64_t> slot_submissions; // RenderingDevice::get_frames_submitted() when recorded.
+	AreaShadowReadbackRing ring;
+	std::map<uint64_t, std::unique_ptr<AreaShadowQuadtree>> trees;
+	std::map<uint64_t, uint64_t> content_hashes;
+	uint32_t divisor = DEFAULT_REPROJECTION_DIVISOR;
+	uint32_t max_depth = AreaShadowQuadtree::DEFAULT_MAX_DEPTH;
+	uint64_t frame = 0;
+	uint32_t last_query_count = 0;
+	uint32_t last_banding_count = 0;
+	uint64_t last_result_frame = 0;
+	bool initialized = false;
+
+	bool _ensure_pipelines();
+
+public:
+	/* Public Methods */
+
+	bool initialize(uint32_t p_ring_slots = AreaShadowReadbackRing::DEFAULT_SLOTS);
+	void finalize();
+	bool is_initialized() const { return initialized; }
+
+	// Reprojection resolution = camera resolution / p_divisor (1..64, default 8).
+	bool set_reprojection_divisor(uint32_t p_divisor);
+	uint32_t get_reprojection_divisor() const { return divisor; }
+	// Deepest subdivision (1..3: the GPU map packing holds 9 x 9 points at most).
+	bool set_max_depth(uint32_t p_depth);
+	uint32_t get_max_depth() const { return max_depth; }
+
+	// Start of a frame, before anything is recorded: applies the newest completed frame's flags.
+	void begin_frame();
+	uint64_t get_frame() const { return frame; }
+	// The light's quadtree, created (root quad) on first use with tiles from p_tiles; nullptr when the
+	// source has no four tiles.
+	AreaShadowQuadtree *light_get_tree(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles);
+	bool has_light(uint64_t p_light) const { return trees.count(p_light) != 0; }
+	// Everything the renderer needs of an ADAPTIVE light in one call (after begin_frame()): the tree
+	// (created on first use), its maps redrawn when p_content_hash changed, up to p_max_draws draw
+	// requests appended to r_draws (as the atlas' own, map_index = point index), and the drawn maps
+	// (tile, uv) for the shader in r_maps. false when the light has no tree (no four free tiles).
+	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps);
+	// Frees a light's tree (tiles back to its source).
+	void light_release(uint64_t p_light);
+	// Releases every light not in p_seen (culled, freed, no longer ADAPTIVE).
+	void release_lights_except(const std::vector<uint64_t> &p_seen);
+
+	// Records the reprojection and banding passes of this frame's tests for p_lights (after the
+	// scene's depth is written and the tree's points are drawn). p_depth: the camera depth (sampled,
+	// Vulkan [0,1] depth), p_clip_from_view: the depth-corrected projection that wrote it.
+	// Returns the number of quads tested (0: nothing to do, or every ring slot still in flight).
+	uint32_t dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights);
+
+	// Lower level, for tests: tests p_queries against the given atlas now and returns the flags
+	// (flushes: submit + sync).
+	std::vector<uint32_t> test_queries_blocking(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const LightInput &p_light, const std::vector<AreaShadowQuadtree::Query> &p_queries, std::vector<float> *r_values = nullptr);
+
+	// Project settings (registered on first use): the reprojection divisor (1..64, default 8) and the
+	// deepest subdivision of ADAPTIVE and HEURISTIC lights (1..3, default 3). Bad values print an error
+	// naming the setting and fall back to the default.
+	static uint32_t get_project_reprojection_divisor();
+	static uint32_t get_project_max_depth();
+	// HEURISTIC (thesis 6.5): the grid (2, 3, 5 or 9) for an area light of p_size and p_range whose
+	// world range box is p_world_box, seen by p_data's camera (distance to the box, fovy, viewport
+	// height), up to get_project_max_depth().
+	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data);
+
+	// True once a dispatch with work compiled the reprojection shader.
+	bool is_reprojection_compiled() const { return reprojection_shader.is_variant_created(0); }
+	const AreaShadowReadbackRing &get_ring() const { return ring; }
+	uint32_t get_last_query_count() const { return last_query_count; }
+	uint32_t get_last_banding_count() const { return last_banding_count; }
+	uint64_t get_last_result_frame() const { return last_result_frame; }
+
+	~AreaShadowAdaptiveRD() { finalize(); }
+};
