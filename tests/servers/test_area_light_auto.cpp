@@ -18,6 +18,7 @@
 #include "servers/rendering/rendering_server_globals.h"
 #include "tests/scene/scene_test_fixture.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -202,50 +203,12 @@ area_stochastic_samples = 16
 
 namespace {
 
-struct AutoFixture {
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	std::vector<RID> meshes, materials, lights;
-
-	bool init() { return material_storage.initialize_gpu() && light_storage.initialize_gpu(32) && renderer.initialize(32); }
-	~AutoFixture() {
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
-	}
-	RID plane(float p_half) {
-		RS::SurfaceData s;
-		Vector3 u(0, 0, p_half), v(p_half, 0, 0);
-		Vector3 corners[4] = { -u - v, u - v, u + v, -u + v };
-		for (int i = 0; i < 4; i++) {
-			s.vertices.push_back(corners[i]);
-			s.normals.push_back(Vector3(0, 1, 0));
-		}
-		s.indices = { 0, 2, 1, 0, 3, 2 };
-		RID m = mesh_storage.mesh_create();
-		mesh_storage.mesh_add_surface(m, s);
-		meshes.push_back(m);
-		return m;
-	}
+struct AutoFixture : RenderTest::RenderFixture {
 	RID material(float p_roughness) {
 		RS::MaterialParams mp;
 		mp.roughness = p_roughness;
 		mp.cull_back = false;
-		RID m = material_storage.material_create();
-		material_storage.material_set_params(m, mp);
-		materials.push_back(m);
-		return m;
+		return RenderTest::RenderFixture::material(mp);
 	}
 	RID auto_light(const Vector2 &p_size) {
 		RID l = light_storage.light_create(RS::LIGHT_AREA);

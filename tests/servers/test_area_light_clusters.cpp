@@ -16,6 +16,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -211,55 +212,13 @@ TEST_CASE("[AreaLight3D][Cluster] the oriented box takes no more clusters than t
 
 /* Rendering: clustered == brute force, debug view. */
 
-struct RenderFixture {
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	std::vector<RID> meshes, materials, lights;
-	bool init() {
-		return material_storage.initialize_gpu() && light_storage.initialize_gpu(64) && renderer.initialize(64);
-	}
-	~RenderFixture() {
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
-	}
+// Storages + renderer (tests/servers/render_test_fixture.h), 64 lights per type.
+struct RenderFixture : RenderTest::RenderFixture {
+	bool init() { return RenderTest::RenderFixture::init(64); }
 };
 
-static void add_quad(RS::SurfaceData &r_s, const Vector3 &p_center, const Vector3 &p_u, const Vector3 &p_v) {
-	uint32_t base = uint32_t(r_s.vertices.size());
-	Vector3 n = p_u.cross(p_v).normalized();
-	Vector3 corners[4] = { p_center - p_u - p_v, p_center + p_u - p_v, p_center + p_u + p_v, p_center - p_u + p_v };
-	for (int i = 0; i < 4; i++) {
-		r_s.vertices.push_back(corners[i]);
-		r_s.normals.push_back(n);
-	}
-	uint32_t idx[6] = { 0, 2, 1, 0, 3, 2 };
-	for (int i = 0; i < 6; i++) {
-		r_s.indices.push_back(base + idx[i]);
-	}
-}
-
-static RS::SurfaceData make_box(const Vector3 &p_half) {
-	RS::SurfaceData s;
-	add_quad(s, Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z));
-	add_quad(s, Vector3(-p_half.x, 0, 0), Vector3(0, 0, p_half.z), Vector3(0, p_half.y, 0));
-	add_quad(s, Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0));
-	add_quad(s, Vector3(0, -p_half.y, 0), Vector3(p_half.x, 0, 0), Vector3(0, 0, p_half.z));
-	add_quad(s, Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0));
-	add_quad(s, Vector3(0, 0, -p_half.z), Vector3(0, p_half.y, 0), Vector3(p_half.x, 0, 0));
-	return s;
-}
+using RenderTest::add_quad;
+using RenderTest::make_box;
 
 // A ground plane, three boxes, 12 area lights + 8 omni + 8 spot lights at random.
 static RenderSceneData build_mixed_scene(RenderFixture &f, int p_w, int p_h) {

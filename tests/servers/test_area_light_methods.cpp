@@ -24,6 +24,7 @@
 #include "servers/rendering/storage/light_storage.h"
 #include "tests/scene/scene_test_fixture.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -128,13 +129,9 @@ area_stochastic_samples = 32
 
 /* Rendering fixture: RD storages shared by the GPU renderer and the reference renderer */
 
-struct MethodsFixture {
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
+struct MethodsFixture : RenderTest::RenderFixture {
 	ReferenceRenderer reference{ &light_storage, &mesh_storage, &material_storage };
-	std::vector<RID> meshes, materials, lights, targets;
+	std::vector<RID> targets;
 
 	bool init() {
 		ReferenceRenderOptions options;
@@ -142,8 +139,9 @@ struct MethodsFixture {
 		options.target_relative_error = 0.001f;
 		options.max_samples = 65536;
 		reference.set_options(options);
-		return material_storage.initialize_gpu() && light_storage.initialize_gpu(32) && renderer.initialize(32);
+		return RenderTest::RenderFixture::init(32);
 	}
+	// Render targets go first; the base then frees meshes, materials, lights and the renderer.
 	~MethodsFixture() {
 		for (RID t : targets) {
 			if (renderer.owns_render_target(t)) {
@@ -152,33 +150,6 @@ struct MethodsFixture {
 				reference.render_target_free(t);
 			}
 		}
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
-	}
-	// Ground plane y = 0, normal +Y, front faces up.
-	RID plane(float p_half) {
-		RS::SurfaceData s;
-		Vector3 u(0, 0, p_half), v(p_half, 0, 0);
-		Vector3 corners[4] = { -u - v, u - v, u + v, -u + v };
-		for (int i = 0; i < 4; i++) {
-			s.vertices.push_back(corners[i]);
-			s.normals.push_back(Vector3(0, 1, 0));
-		}
-		s.indices = { 0, 2, 1, 0, 3, 2 };
-		RID m = mesh_storage.mesh_create();
-		mesh_storage.mesh_add_surface(m, s);
-		meshes.push_back(m);
-		return m;
 	}
 	RID material(float p_roughness, float p_metallic) {
 		RS::MaterialParams mp;
@@ -186,20 +157,12 @@ struct MethodsFixture {
 		mp.roughness = p_roughness;
 		mp.metallic = p_metallic;
 		mp.cull_back = false;
-		RID m = material_storage.material_create();
-		material_storage.material_set_params(m, mp);
-		materials.push_back(m);
-		return m;
+		return RenderTest::RenderFixture::material(mp);
 	}
 	RID area_light(const Vector2 &p_size, float p_energy, RS::LightAreaShadingMethod p_method, int p_samples = 8) {
-		RID l = light_storage.light_create(RS::LIGHT_AREA);
-		light_storage.light_area_set_size(l, p_size);
-		light_storage.light_set_param(l, RS::LIGHT_PARAM_ENERGY, p_energy);
-		light_storage.light_set_param(l, RS::LIGHT_PARAM_RANGE, 100.0f);
-		light_storage.light_set_param(l, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+		RID l = RenderTest::RenderFixture::area_light(p_size, p_energy, 100.0f, 0.0f);
 		light_storage.light_area_set_shading_method(l, p_method);
 		light_storage.light_area_set_stochastic_samples(l, p_samples);
-		lights.push_back(l);
 		return l;
 	}
 	std::vector<float> render_gpu(const RenderSceneData &p_data) {
@@ -219,41 +182,14 @@ struct MethodsFixture {
 };
 
 static RenderSceneData make_scene(const Transform3D &p_cam, float p_fovy, int p_size) {
-	RenderSceneData d;
-	d.cam_transform = p_cam;
-	d.z_near = 0.05f;
-	d.z_far = 30.0f;
-	d.fovy_degrees = p_fovy;
-	d.cam_projection = Projection::create_perspective(p_fovy, 1.0f, d.z_near, d.z_far);
-	d.viewport_width = p_size;
-	d.viewport_height = p_size;
-	d.environment.has_environment = true;
-	d.environment.background = RS::ENV_BG_COLOR;
-	d.environment.bg_color = Color(0, 0, 0, 1);
-	d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
-	d.environment.ambient_color = Color(0, 0, 0, 1);
-	d.environment.ambient_energy = 0.0f;
-	return d;
+	return RenderTest::make_scene(p_cam, p_fovy, p_size, p_size, 30.0f);
 }
 
-static void add_geometry(RenderSceneData &r_d, RID p_mesh, RID p_material) {
-	RenderSceneData::GeometryInstance g;
-	g.mesh = p_mesh;
-	g.material_override = p_material;
-	r_d.geometry.push_back(g);
-}
+using RenderTest::add_geometry;
+using RenderTest::facing_down;
 
 static void add_area(RenderSceneData &r_d, RID p_light, const Transform3D &p_xform) {
-	RenderSceneData::LightInstance l;
-	l.light = p_light;
-	l.type = RS::LIGHT_AREA;
-	l.transform = p_xform;
-	r_d.lights.push_back(l);
-}
-
-// Emission (local -Z) towards world -Y.
-static Basis facing_down() {
-	return Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f);
+	RenderTest::add_light(r_d, p_light, RS::LIGHT_AREA, p_xform);
 }
 
 // The facing test scene: a 1 x 0.6 m light 1 m above a rough ground plane, an oblique camera.

@@ -17,6 +17,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -25,113 +26,14 @@
 
 namespace TestAreaLightRender {
 
-struct AreaFixture {
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	std::vector<RID> meshes;
-	std::vector<RID> materials;
-	std::vector<RID> lights;
-
-	bool init() {
-		return material_storage.initialize_gpu() && light_storage.initialize_gpu(32) && renderer.initialize(32);
-	}
-	~AreaFixture() {
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
-	}
-	RID plane(float p_half) {
-		RS::SurfaceData s;
-		// Normal +Y, clockwise from above (Godot's front faces).
-		Vector3 u(0, 0, p_half), v(p_half, 0, 0);
-		Vector3 corners[4] = { -u - v, u - v, u + v, -u + v };
-		for (int i = 0; i < 4; i++) {
-			s.vertices.push_back(corners[i]);
-			s.normals.push_back(Vector3(0, 1, 0));
-		}
-		s.indices = { 0, 2, 1, 0, 3, 2 };
-		RID m = mesh_storage.mesh_create();
-		mesh_storage.mesh_add_surface(m, s);
-		meshes.push_back(m);
-		return m;
-	}
-	RID material(const RS::MaterialParams &p_params) {
-		RID m = material_storage.material_create();
-		material_storage.material_set_params(m, p_params);
-		materials.push_back(m);
-		return m;
-	}
-	RID area_light(const Vector2 &p_size, float p_energy, float p_range, float p_attenuation) {
-		RID l = light_storage.light_create(RS::LIGHT_AREA);
-		light_storage.light_area_set_size(l, p_size);
-		light_storage.light_set_param(l, RS::LIGHT_PARAM_ENERGY, p_energy);
-		light_storage.light_set_param(l, RS::LIGHT_PARAM_RANGE, p_range);
-		light_storage.light_set_param(l, RS::LIGHT_PARAM_ATTENUATION, p_attenuation);
-		lights.push_back(l);
-		return l;
-	}
-};
-
-static RenderSceneData make_scene(const Transform3D &p_cam, float p_fovy, int p_w, int p_h, float p_z_far) {
-	RenderSceneData d;
-	d.cam_transform = p_cam;
-	d.z_near = 0.05f;
-	d.z_far = p_z_far;
-	d.fovy_degrees = p_fovy;
-	d.cam_projection = Projection::create_perspective(p_fovy, float(p_w) / float(p_h), d.z_near, d.z_far);
-	d.viewport_width = p_w;
-	d.viewport_height = p_h;
-	d.environment.has_environment = true;
-	d.environment.background = RS::ENV_BG_COLOR;
-	d.environment.bg_color = Color(0, 0, 0, 1);
-	return d;
-}
-
-static void add_geometry(RenderSceneData &r_d, RID p_mesh, RID p_material) {
-	RenderSceneData::GeometryInstance g;
-	g.mesh = p_mesh;
-	g.material_override = p_material;
-	r_d.geometry.push_back(g);
-}
-
-static void add_light(RenderSceneData &r_d, RID p_light, RS::LightType p_type, const Transform3D &p_xform) {
-	RenderSceneData::LightInstance l;
-	l.light = p_light;
-	l.type = p_type;
-	l.transform = p_xform;
-	r_d.lights.push_back(l);
-}
-
-static Transform3D camera_looking_down(float p_height) {
-	return Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0, p_height, 0));
-}
-
-// Light basis whose local -Z (emission) points to world -Y; local X stays world X, local Y becomes world -Z.
-static Basis facing_down() {
-	return Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f);
-}
-
-// World point on y = 0 seen through the centre of pixel (p_px, p_py) (top row first).
-static Vector3 pixel_on_ground(const RenderSceneData &p_d, int p_px, int p_py) {
-	float t = std::tan(Math::deg_to_rad(p_d.fovy_degrees) * 0.5f);
-	float aspect = float(p_d.viewport_width) / float(p_d.viewport_height);
-	float x_ndc = (p_px + 0.5f) / p_d.viewport_width * 2.0f - 1.0f;
-	float y_ndc = 1.0f - (p_py + 0.5f) / p_d.viewport_height * 2.0f;
-	Vector3 dir = p_d.cam_transform.basis.xform(Vector3(x_ndc * t * aspect, y_ndc * t, -1.0f));
-	Vector3 o = p_d.cam_transform.origin;
-	return o + dir * (-o.y / dir.y);
-}
+// Storages + renderer, plane/material/area light helpers: tests/servers/render_test_fixture.h.
+using AreaFixture = RenderTest::RenderFixture;
+using RenderTest::add_geometry;
+using RenderTest::add_light;
+using RenderTest::camera_looking_down;
+using RenderTest::facing_down;
+using RenderTest::make_scene;
+using RenderTest::pixel_on_ground;
 
 static const float *pixel(const std::vector<float> &p_img, int p_w, int p_x, int p_y) {
 	return &p_img[(size_t(p_y) * p_w + p_x) * 4];

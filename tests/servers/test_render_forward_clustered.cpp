@@ -16,6 +16,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -24,115 +25,19 @@
 
 namespace TestRenderForwardClustered {
 
-// Storages + renderer, torn down (GPU objects freed) at the end of each test.
-struct RenderFixture {
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	std::vector<RID> meshes;
-	std::vector<RID> materials;
-	std::vector<RID> lights;
-
-	bool init() {
-		return material_storage.initialize_gpu() && light_storage.initialize_gpu(64) && renderer.initialize(64);
-	}
-	~RenderFixture() {
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
-	}
+// Storages + renderer (tests/servers/render_test_fixture.h), 64 lights per type.
+struct RenderFixture : RenderTest::RenderFixture {
+	bool init() { return RenderTest::RenderFixture::init(64); }
 };
 
-// Appends a quad centred at p_center with half axes p_u, p_v; its front (normal p_u x p_v) is
-// clockwise as seen from the front (Godot's winding).
-static void add_quad(RS::SurfaceData &r_s, const Vector3 &p_center, const Vector3 &p_u, const Vector3 &p_v) {
-	uint32_t base = uint32_t(r_s.vertices.size());
-	Vector3 n = p_u.cross(p_v).normalized();
-	Vector3 corners[4] = { p_center - p_u - p_v, p_center + p_u - p_v, p_center + p_u + p_v, p_center - p_u + p_v };
-	for (int i = 0; i < 4; i++) {
-		r_s.vertices.push_back(corners[i]);
-		r_s.normals.push_back(n);
-	}
-	uint32_t idx[6] = { 0, 2, 1, 0, 3, 2 };
-	for (int i = 0; i < 6; i++) {
-		r_s.indices.push_back(base + idx[i]);
-	}
-}
-
-static RS::SurfaceData make_plane(float p_half_size) {
-	RS::SurfaceData s;
-	add_quad(s, Vector3(), Vector3(0, 0, p_half_size), Vector3(p_half_size, 0, 0)); // Normal +Y.
-	return s;
-}
-
-static RS::SurfaceData make_box(const Vector3 &p_half) {
-	RS::SurfaceData s;
-	add_quad(s, Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z)); // +X
-	add_quad(s, Vector3(-p_half.x, 0, 0), Vector3(0, 0, p_half.z), Vector3(0, p_half.y, 0)); // -X
-	add_quad(s, Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0)); // +Y
-	add_quad(s, Vector3(0, -p_half.y, 0), Vector3(p_half.x, 0, 0), Vector3(0, 0, p_half.z)); // -Y
-	add_quad(s, Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0)); // +Z
-	add_quad(s, Vector3(0, 0, -p_half.z), Vector3(0, p_half.y, 0), Vector3(p_half.x, 0, 0)); // -Z
-	return s;
-}
-
-static RenderSceneData make_scene(const Transform3D &p_cam, float p_fovy, int p_w, int p_h, float p_z_far) {
-	RenderSceneData d;
-	d.cam_transform = p_cam;
-	d.z_near = 0.05f;
-	d.z_far = p_z_far;
-	d.fovy_degrees = p_fovy;
-	d.cam_projection = Projection::create_perspective(p_fovy, float(p_w) / float(p_h), d.z_near, d.z_far);
-	d.viewport_width = p_w;
-	d.viewport_height = p_h;
-	d.environment.has_environment = true;
-	d.environment.background = RS::ENV_BG_COLOR;
-	d.environment.bg_color = Color(0, 0, 0, 1);
-	d.environment.bg_energy = 1.0f;
-	d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
-	d.environment.ambient_color = Color(0, 0, 0, 1);
-	d.environment.ambient_energy = 0.0f;
-	return d;
-}
-
-static void add_geometry(RenderSceneData &r_d, RID p_mesh, RID p_material, const Transform3D &p_xform) {
-	RenderSceneData::GeometryInstance g;
-	g.mesh = p_mesh;
-	g.material_override = p_material;
-	g.transform = p_xform;
-	r_d.geometry.push_back(g);
-}
-
-static void add_light(RenderSceneData &r_d, RID p_light, RS::LightType p_type, const Transform3D &p_xform) {
-	RenderSceneData::LightInstance l;
-	l.light = p_light;
-	l.type = p_type;
-	l.transform = p_xform;
-	r_d.lights.push_back(l);
-}
-
-// World point seen through the centre of pixel (p_px, p_py) on the plane y = 0 (top row first).
-static Vector3 pixel_on_ground(const RenderSceneData &p_d, int p_px, int p_py) {
-	float t = std::tan(Math::deg_to_rad(p_d.fovy_degrees) * 0.5f);
-	float aspect = float(p_d.viewport_width) / float(p_d.viewport_height);
-	float x_ndc = (p_px + 0.5f) / p_d.viewport_width * 2.0f - 1.0f;
-	float y_ndc = 1.0f - (p_py + 0.5f) / p_d.viewport_height * 2.0f;
-	Vector3 dir_view(x_ndc * t * aspect, y_ndc * t, -1.0f);
-	Vector3 dir = p_d.cam_transform.basis.xform(dir_view);
-	Vector3 o = p_d.cam_transform.origin;
-	float s = -o.y / dir.y;
-	return o + dir * s;
-}
+using RenderTest::add_geometry;
+using RenderTest::add_light;
+using RenderTest::add_quad;
+using RenderTest::camera_looking_down;
+using RenderTest::make_scene;
+using RenderTest::pixel_on_ground;
+using RenderTest::make_box;
+using RenderTest::make_plane;
 
 static Color pixel(const std::vector<float> &p_img, int p_w, int p_x, int p_y) {
 	const float *p = &p_img[(size_t(p_y) * p_w + p_x) * 4];
@@ -143,11 +48,6 @@ static Color pixel(const std::vector<float> &p_img, int p_w, int p_x, int p_y) {
 static double omni_attenuation(double p_d, double p_range, double p_decay) {
 	double window = std::max(1.0 - std::pow(p_d / p_range, 4.0), 0.0);
 	return window * window * std::pow(std::max(p_d, 1e-4), -p_decay);
-}
-
-static Transform3D camera_looking_down(float p_height) {
-	// Looking along -Y with -Z as screen-up.
-	return Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0, p_height, 0));
 }
 
 TEST_CASE("[Render][ForwardClustered] Lambertian plane under an omni light matches the analytic radiance") {

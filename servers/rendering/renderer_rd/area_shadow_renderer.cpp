@@ -4,6 +4,8 @@
 
 #include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 
+#include "core/config/project_settings.h"
+
 #include "core/error/error_macros.h"
 #include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
@@ -40,6 +42,17 @@ bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage,
 	light_storage = p_light_storage;
 	mesh_storage = p_mesh_storage;
 	max_lights = std::max(p_max_lights, 1u);
+	// Project settings for the default atlas (per-viewport sizes come from RS::area_shadow_atlas_set_size).
+	// Invalid values are reported by set_atlas_size() and the built-in defaults stay.
+	{
+		int size = int(GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_size", int(AreaShadowAtlas::DEFAULT_SIZE)).to_int());
+		int subdivision = int(GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_subdivision", int(AreaShadowAtlas::DEFAULT_SUBDIVISION)).to_int());
+		if (uint32_t(size) != default_size || uint32_t(subdivision) != default_subdivision) {
+			if (size <= 0 || subdivision <= 0 || !set_atlas_size(uint32_t(size), uint32_t(subdivision))) {
+				ERR_PRINT(vformat("Project settings rendering/lights_and_shadows/area_shadow_atlas_size = %d, _subdivision = %d are invalid; using %u and %u.", size, subdivision, default_size, default_subdivision));
+			}
+		}
+	}
 	data_buffer = rd->storage_buffer_create(max_lights * sizeof(AreaShadowData));
 	rd->set_resource_name(data_buffer, "AreaShadowRendererRD shadow data");
 
