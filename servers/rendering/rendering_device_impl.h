@@ -228,3 +228,7 @@ struct RenderingDevice::Impl {
 	static VkCompareOp to_vk_compare(CompareOperator p_op);
 	static String make_set_key(const std::vector<SetLayoutBinding> &p_bindings);
 };
+
+// Shared by rendering_device.cpp and rendering_device_resources.cpp.
+void destroy_staging(VkDevice p_device, RenderingDevice::Impl::Staging &p_s);
+void host_read_barrier(VkCommandBuffer p_cmd);
