@@ -21,6 +21,10 @@ PACKAGES=(
 	python3-matplotlib python3-numpy
 	# Python module godot_area (modules/python), built for and tested with /usr/bin/python3.
 	python3-dev python3-pybind11 pybind11-dev
+	# Python tests (pytest, run with /usr/bin/python3).
+	python3-pytest
+	# Editor window (GLFW + Dear ImGui) and its tests under a virtual X server with synthetic input.
+	libglfw3-dev libimgui-dev xvfb xdotool
 )
 
 missing=()
