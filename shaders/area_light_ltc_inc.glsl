@@ -40,8 +40,9 @@
 /*                                                                        */
 /* Methods (defines set by the per-method shader versions):              */
 /*   AREA_METHOD_LTC_POLYNOMIAL: the matrix and Fresnel terms come from  */
-/*     degree-5 polynomials (thesis section 5.4.3, appendix C), fitted   */
-/*     by `godot-area ltc-fit --polynomial` into ltc_poly_coeffs_inc.glsl */
+/*     degree-5 polynomials (thesis section 5.4.3, appendix C) on 2 x 2  */
+/*     patches of (roughness, theta_v) blended by smoothsteps, fitted by */
+/*     `godot-area ltc-fit --polynomial` into ltc_poly_coeffs_inc.glsl   */
 /*     (compiled-in constants, no binding). Without it no polynomial     */
 /*     code is compiled.                                                 */
 /*   The LUT fetch is compiled unless only AREA_METHOD_LTC_POLYNOMIAL is  */
@@ -81,26 +82,32 @@ float ltc_edge_integral_unit(vec3 a, vec3 b) {
 	return theta * c.z / s;
 }
 
-// Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit).
-float ltc_edge_integral(vec3 p_v1, vec3 p_v2) {
-	vec3 a = p_v1 / max(length(p_v1), 1e-30);
-	vec3 b = p_v2 / max(length(p_v2), 1e-30);
-	if (dot(a, b) > -0.5) {
-		return ltc_edge_integral_unit(a, b);
+// Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit), with
+// p_a, p_b their unit directions (normalised once per vertex by the caller).
+float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
+	// Thesis section 5.4.4: an edge wider than 120 degrees is split at the projected midpoint m. The first
+	// arc ends at m (split) or at b, so only two arcs are ever evaluated: a software rasterizer runs both
+	// sides of a branch, and the result is the same as evaluating (a, b) or (a, m) + (m, b).
+	bool split = !(dot(p_a, p_b) > -0.5);
+	vec3 m = p_b;
+	if (split) {
+		vec3 e = p_v2 - p_v1;
+		float t = clamp(-dot(p_v1, e) / max(dot(e, e), 1e-30), 0.0, 1.0);
+		m = p_v1 + e * t;
+		m = m / max(length(m), 1e-30);
 	}
-	// Thesis section 5.4.4: split at the projected midpoint.
-	vec3 e = p_v2 - p_v1;
-	float t = clamp(-dot(p_v1, e) / max(dot(e, e), 1e-30), 0.0, 1.0);
-	vec3 m = p_v1 + e * t;
-	m = m / max(length(m), 1e-30);
-	return ltc_edge_integral_unit(a, m) + ltc_edge_integral_unit(m, b);
+	float sum = ltc_edge_integral_unit(p_a, m);
+	if (split) {
+		sum += ltc_edge_integral_unit(m, p_b);
+	}
+	return sum;
 }
 
 #else // AREA_LTC_NO_PRECISION_FIX
 
 // Heitz et al. 2016's original edge integral (the thesis' version before section 5.4.4): theta from
 // acos, the direction from the raw cross product, no split. Ill-conditioned for near-antipodal ends.
-float ltc_edge_integral(vec3 p_v1, vec3 p_v2) {
+float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
 	vec3 a = normalize(p_v1);
 	vec3 b = normalize(p_v2);
 	float cos_theta = clamp(dot(a, b), -1.0, 1.0);
@@ -110,33 +117,55 @@ float ltc_edge_integral(vec3 p_v1, vec3 p_v2) {
 
 #endif // AREA_LTC_NO_PRECISION_FIX
 
+// Slot p_i of the clipped polygon (c0..c4 are named, not an array: no indexed local memory, which a
+// software rasterizer handles lane by lane).
+vec3 ltc_clip_pick(int p_i, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4) {
+	return p_i == 0 ? c0 : (p_i == 1 ? c1 : (p_i == 2 ? c2 : (p_i == 3 ? c3 : c4)));
+}
+
+// Appends p_v as vertex n of the clipped polygon when p_emit and n < 5 (Sutherland-Hodgman output).
+void ltc_clip_emit(bool p_emit, vec3 p_v, inout int n, inout vec3 c0, inout vec3 c1, inout vec3 c2, inout vec3 c3, inout vec3 c4) {
+	if (!p_emit || n >= 5) {
+		return;
+	}
+	c0 = n == 0 ? p_v : c0;
+	c1 = n == 1 ? p_v : c1;
+	c2 = n == 2 ? p_v : c2;
+	c3 = n == 3 ? p_v : c3;
+	c4 = n == 4 ? p_v : c4;
+	n++;
+}
+
 // Cosine form factor (1 / pi) integral of max(z, 0) over the spherical projection of the quad p_q
 // (a planar convex polygon not containing the origin), i.e. the integral of the normalised clamped
 // cosine distribution D_o = max(z, 0) / pi. In [0, 1]; independent of the winding.
 float ltc_polygon_form_factor(vec3 p_q[4]) {
-	// Sutherland-Hodgman clipping to z >= 0 (at most 5 vertices for a convex quad).
-	vec3 c[5];
+	// Sutherland-Hodgman clipping to z >= 0 (at most 5 vertices for a convex quad), into named slots.
+	vec3 c0 = vec3(0.0), c1 = vec3(0.0), c2 = vec3(0.0), c3 = vec3(0.0), c4 = vec3(0.0);
 	int n = 0;
 	for (int i = 0; i < 4; i++) {
 		vec3 a = p_q[i];
 		vec3 b = p_q[(i + 1) & 3];
 		bool a_in = a.z > 0.0;
 		bool b_in = b.z > 0.0;
-		if (a_in && n < 5) {
-			c[n++] = a;
-		}
-		if (a_in != b_in && n < 5) {
-			vec3 p = mix(a, b, a.z / (a.z - b.z));
-			p.z = 0.0;
-			c[n++] = p;
-		}
+		ltc_clip_emit(a_in, a, n, c0, c1, c2, c3, c4);
+		vec3 p = mix(a, b, a.z / (a.z - b.z));
+		p.z = 0.0;
+		ltc_clip_emit(a_in != b_in, p, n, c0, c1, c2, c3, c4);
 	}
 	if (n < 3) {
 		return 0.0;
 	}
+	// The edges in clipping order, each vertex normalised once.
 	float sum = 0.0;
+	vec3 first = c0 / max(length(c0), 1e-30);
+	vec3 a = first;
 	for (int i = 0; i < n; i++) {
-		sum += ltc_edge_integral(c[i], c[(i + 1) % n]);
+		vec3 v1 = ltc_clip_pick(i, c0, c1, c2, c3, c4);
+		vec3 v2 = i + 1 < n ? ltc_clip_pick(i + 1, c0, c1, c2, c3, c4) : c0;
+		vec3 b = i + 1 < n ? v2 / max(length(v2), 1e-30) : first;
+		sum += ltc_edge_integral(v1, v2, a, b);
+		a = b;
 	}
 	// Lambert: integral of cos over the polygon = 1/2 sum theta_i n.gamma_i; divided by pi.
 	return abs(sum) * (0.5 / M_PI);
@@ -176,45 +205,61 @@ void ltc_fetch_lut(float p_roughness, float p_NoV, out vec4 r_t0, out vec4 r_t1)
 
 #ifdef AREA_LTC_HAS_POLYNOMIAL
 
-// LTC_POLY_DEGREE, LTC_POLY_TERMS, LTC_POLY_COEFFS (generated by `godot-area ltc-fit --polynomial`).
+// LTC_POLY_* seams and ltc_poly_patch_0..3 (generated by `godot-area ltc-fit --polynomial`; see
+// modules/ltc_fit/ltc_polynomial.h): each patch function returns (a, b, c, d) and (e, fn, fg, 0).
 #include "ltc_poly_coeffs_inc.glsl"
 
-// P_k(x, y) = sum_{i + j <= 5} c_k,ij x^i y^j, coefficients ordered by i (power of x), then j.
-float ltc_poly_eval(int p_k, float p_x, float p_y) {
-	int at = p_k * LTC_POLY_TERMS;
-	float sum = 0.0;
-	float xi = 1.0;
-	for (int i = 0; i <= LTC_POLY_DEGREE; i++) {
-		float inner = 0.0;
-		for (int j = LTC_POLY_DEGREE - i; j >= 0; j--) {
-			inner = inner * p_y + LTC_POLY_COEFFS[at + j];
-		}
-		at += LTC_POLY_DEGREE - i + 1;
-		sum += xi * inner;
-		xi *= p_x;
-	}
-	return sum;
-}
-
 // The LUT's components from the polynomials (thesis section 5.4.3): x = 1 + roughness (perceptual,
-// the LUT's axis), y = 1 + theta_v. Guarded so that M stays invertible: a, c, e >= the table's
-// smallest a (2 * alpha floor), a e - b d > 0, fn, fg in [0, 1].
+// the LUT's axis), y = 1 + theta_v; the patches are blended with smoothstep weights across
+// theta_v = LTC_POLY_SEAM_THETA and roughness = LTC_POLY_SEAM_ROUGHNESS (sum 1, no seam), and a
+// patch is evaluated only where its weight is not 0. Guarded so that M stays invertible: a, c, e >=
+// the table's smallest a (2 * alpha floor), a e - b d > 0, fn, fg in [0, 1].
 void ltc_fetch_polynomial(float p_roughness, float p_NoV, out vec4 r_t0, out vec4 r_t1) {
-	float x = 1.0 + clamp(p_roughness, 0.0, 1.0);
-	float y = 1.0 + acos(clamp(p_NoV, 0.0, 1.0));
-	float a = max(ltc_poly_eval(0, x, y), 2e-4);
-	float b = ltc_poly_eval(1, x, y);
-	float c = max(ltc_poly_eval(2, x, y), 2e-4);
-	float d = ltc_poly_eval(3, x, y);
-	float e = max(ltc_poly_eval(4, x, y), 2e-4);
+	float r = clamp(p_roughness, 0.0, 1.0);
+	float theta = acos(clamp(p_NoV, 0.0, 1.0));
+	float x = 1.0 + r;
+	float y = 1.0 + theta;
+	float wt = smoothstep(LTC_POLY_SEAM_THETA - LTC_POLY_BLEND_THETA, LTC_POLY_SEAM_THETA + LTC_POLY_BLEND_THETA, theta);
+	float wr = smoothstep(LTC_POLY_SEAM_ROUGHNESS - LTC_POLY_BLEND_ROUGHNESS, LTC_POLY_SEAM_ROUGHNESS + LTC_POLY_BLEND_ROUGHNESS, r);
+	vec4 t0 = vec4(0.0);
+	vec4 t1 = vec4(0.0);
+	vec4 p0;
+	vec4 p1;
+	float w = (1.0 - wt) * (1.0 - wr);
+	if (w > 0.0) {
+		ltc_poly_patch_0(x, y, p0, p1);
+		t0 += w * p0;
+		t1 += w * p1;
+	}
+	w = (1.0 - wt) * wr;
+	if (w > 0.0) {
+		ltc_poly_patch_1(x, y, p0, p1);
+		t0 += w * p0;
+		t1 += w * p1;
+	}
+	w = wt * (1.0 - wr);
+	if (w > 0.0) {
+		ltc_poly_patch_2(x, y, p0, p1);
+		t0 += w * p0;
+		t1 += w * p1;
+	}
+	w = wt * wr;
+	if (w > 0.0) {
+		ltc_poly_patch_3(x, y, p0, p1);
+		t0 += w * p0;
+		t1 += w * p1;
+	}
+	float a = max(t0.x, 2e-4);
+	float b = t0.y;
+	float c = max(t0.z, 2e-4);
+	float d = t0.w;
+	float e = max(t1.x, 2e-4);
 	if (a * e - b * d < 1e-8) {
 		b = 0.0;
 		d = 0.0;
 	}
-	float fn = clamp(ltc_poly_eval(5, x, y), 0.0, 1.0);
-	float fg = clamp(ltc_poly_eval(6, x, y), 0.0, 1.0);
 	r_t0 = vec4(a, b, c, d);
-	r_t1 = vec4(e, fn, fg, 0.0);
+	r_t1 = vec4(e, clamp(t1.y, 0.0, 1.0), clamp(t1.z, 0.0, 1.0), 0.0);
 }
 
 #endif // AREA_LTC_HAS_POLYNOMIAL

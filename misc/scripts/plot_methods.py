@@ -79,7 +79,9 @@ def main():
 			y = statistics.mean(errors[c].values())
 			pts.append((x, y, c))
 			ax.scatter([x], [y], s=30)
-			ax.annotate(LABEL[c], (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
+	# Labels of points close to each other (e.g. LTC and LTC poly) alternate above and below.
+	for i, (x, y, c) in enumerate(sorted(pts)):
+		ax.annotate(LABEL[c], (x, y), textcoords="offset points", xytext=(4, 4 if i % 2 == 0 else -11), fontsize=8)
 	front, best = [], float("inf")
 	for x, y, c in sorted(pts):
 		if y < best:

@@ -8,11 +8,20 @@
 /*        [--resolution WxH] [--lights 1,4,16,..] [--frames N]            */
 /*        [--warmup N] [--error-resolution N] [--configs LTC,MRP,..]      */
 /*        [--no-errors] [--no-timing] [--frame-cap-ms N] [--progress]     */
+/*        [--no-charts]                                                   */
 /*   godot-area bench --sweep methods --spirv-sources DIR                 */
 /*        (writes the per-method fragment sources and exits)              */
 /*                                                                        */
-/* Defaults: 256x144, lights 1,4,16,64,256, 7 frames after 2 warm-up     */
-/* frames, errors at 64x64 on the CI subset + the failure scenes.        */
+/* Defaults: CSV doc/results/methods_sweep.csv, 256x144, lights           */
+/* 1,4,16,64,256, 7 frames after 2 warm-up frames, errors at 64x64 on the */
+/* CI subset + the failure scenes. After the CSV, the command draws the   */
+/* charts into the CSV's directory by running                            */
+/*   /usr/bin/python3 misc/scripts/plot_methods.py CSV --out DIR --maps M */
+/* (methods_pareto.png, methods_lights.png, methods_failure_*.png; the    */
+/* failure strips go to a temporary M unless --maps is given). Without    */
+/* the interpreter (GODOT_AREA_PYTHON overrides the path) or matplotlib   */
+/* it fails before the sweep with a message naming the problem;         */
+/* --no-charts skips the charts.                                          */
 /* Must run before Main::setup() (the sweep makes its own servers).       */
 
 #pragma once
