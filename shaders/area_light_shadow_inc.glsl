@@ -24,6 +24,13 @@
 #define AREA_SHADOW_MODE_FIXED 0u
 #define AREA_SHADOW_MODE_PCSS 1u
 
+// Lookups compiled in: AREA_SHADOWS_PCF (grid modes) and/or AREA_SHADOWS_PCSS (PCSS baseline), set by the
+// area version key of RenderForwardClustered from the lights that have maps; with neither, both.
+#if !defined(AREA_SHADOWS_PCF) && !defined(AREA_SHADOWS_PCSS)
+#define AREA_SHADOWS_PCF
+#define AREA_SHADOWS_PCSS
+#endif
+
 struct AreaShadowData { // std430, 448 bytes.
 	mat4 light_from_view; // 0: view space -> light space (orthonormal; emission along -Z).
 	vec2 half_size; // 64: rectangle half extents (m).
@@ -37,7 +44,7 @@ struct AreaShadowData { // std430, 448 bytes.
 	float atlas_texel; // 100: 1 / atlas size (pixels).
 	uint quadrant_size; // 104: pixels per octant view (tile size / 2).
 	uint tile_size; // 108: pixels per tile (>= 2 * quadrant_size).
-	uint maps[AREA_SHADOW_MAX_MAPS]; // 112: tile | u_num << 16 | v_num << 20 | den << 24 (u = u_num / den).
+	uint maps[AREA_SHADOW_MAX_MAPS]; // 112: tile | u_num << 12 | v_num << 16 | den << 20 | weight << 24 (u = u_num / den).
 };
 
 layout(set = 0, binding = 12, std430) restrict readonly buffer AreaShadowLights {
@@ -49,16 +56,27 @@ layout(set = 0, binding = 13) uniform texture2D area_shadow_atlas;
 layout(set = 0, binding = 14) uniform sampler area_shadow_sampler;
 
 vec2 area_shadow_map_uv(uint p_packed) {
-	float den = float((p_packed >> 24u) & 0xFFu);
+	float den = float((p_packed >> 20u) & 0xFu);
 	if (den == 0.0) {
 		return vec2(0.5);
 	}
-	return vec2(float((p_packed >> 16u) & 0xFu), float((p_packed >> 20u) & 0xFu)) / den;
+	return vec2(float((p_packed >> 12u) & 0xFu), float((p_packed >> 16u) & 0xFu)) / den;
+}
+
+// Quadrature weight of a map: bits 24..31 / 256 when set (ADAPTIVE: the point's share of the light from
+// its quadtree, AreaShadowQuadtree::get_point_weights()), else the trapezoid rule of a regular grid.
+float area_shadow_map_weight(uint p_packed, vec2 p_uv) {
+	uint w = p_packed >> 24u;
+	if (w != 0u) {
+		return float(w) * (1.0 / 256.0);
+	}
+	vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(p_uv - 0.5), vec2(0.4999)))); // Trapezoid rule.
+	return edge.x * edge.y;
 }
 
 // Pixel origin of quadrant p_quadrant of the map's tile.
 ivec2 area_shadow_quadrant_origin(uint p_packed, uint p_quadrant, uint p_subdivision, uint p_quadrant_size, uint p_tile_size) {
-	uint tile = p_packed & 0xFFFFu;
+	uint tile = p_packed & 0xFFFu;
 	uvec2 t = uvec2(tile % p_subdivision, tile / p_subdivision) * p_tile_size;
 	return ivec2(t + uvec2(p_quadrant & 1u, p_quadrant >> 1u) * p_quadrant_size);
 }
@@ -70,16 +88,15 @@ float area_shadow_fetch(ivec2 p_origin, int p_size, ivec2 p_texel) {
 
 // Offset from the sample point p_sample to the receiver, quadrant origin, texel position and the
 // receiver distance (stored units) for one map.
-// r_weight: the sample's share of the light's irradiance at the receiver (trapezoid weight of the grid
-// point times the point-to-point form factor cos_light * cos_receiver / d^2), so the average
+// r_weight: the sample's share of the light's irradiance at the receiver (quadrature weight of the point,
+// area_shadow_map_weight(), times the point-to-point form factor cos_light * cos_receiver / d^2), so the average
 // approximates the ratio of the shadowed to the unshadowed light integral, not a plain vote.
 float area_shadow_pcf(const AreaShadowData p_s, uint p_packed, vec3 p_pos, vec3 p_normal, int p_radius, out float r_weight) {
 	vec2 uv = area_shadow_map_uv(p_packed);
 	vec3 sample_pos = vec3((uv - 0.5) * 2.0 * p_s.half_size, 0.0);
 	vec3 v = p_pos - sample_pos;
 	float dist = length(v);
-	vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(uv - 0.5), vec2(0.4999)))); // Trapezoid rule.
-	float grid_weight = edge.x * edge.y;
+	float grid_weight = area_shadow_map_weight(p_packed, uv);
 	r_weight = grid_weight * max(-v.z, 0.0) * max(dot(p_normal, -v), 0.0) / max(dist * dist * dist * dist, 1e-12);
 	// World size of one texel at the receiver (the views span about 2.5 units at distance 1).
 	float texel_world = dist * (2.0 * AREA_SHADOW_OCTANT_HALF_X) / float(p_s.quadrant_size);
@@ -169,19 +186,27 @@ float light_process_area_shadow(uint p_light_index, vec3 p_vertex, vec3 p_normal
 	const AreaShadowData s = area_shadows.data[p_light_index];
 	vec3 pos = (s.light_from_view * vec4(p_vertex, 1.0)).xyz;
 	vec3 normal = mat3(s.light_from_view) * p_normal;
+#ifdef AREA_SHADOWS_PCSS
 	if (s.mode == AREA_SHADOW_MODE_PCSS) {
 		return area_shadow_pcss(s, s.maps[0], pos, normal);
 	}
+#endif
+#ifdef AREA_SHADOWS_PCF
 	int radius = int(s.pcf_radius + 0.5);
 	float visibility = 0.0;
 	float total = 0.0;
 	for (uint i = 0u; i < count; i++) {
 		float w;
-		float lit = area_shadow_pcf(s, s.maps[i], pos, normal, radius, w);
+		// maps[i] straight from the buffer: a dynamically indexed array of the local copy s would be
+		// copied whole into indexable memory per pixel and light (llvmpipe: about 40 % of a shadowed frame).
+		float lit = area_shadow_pcf(s, area_shadows.data[p_light_index].maps[i], pos, normal, radius, w);
 		visibility += lit * w;
 		total += w;
 	}
 	return total > 0.0 ? visibility / total : 1.0;
+#else
+	return 1.0; // Not reached: this version's shadowed lights are all PCSS.
+#endif
 }
 
 #endif // AREA_LIGHT_SHADOW_INC_GLSL

@@ -381,7 +381,7 @@ void RenderingServerDefault::viewport_set_scenario(RID p_viewport, RID p_scenari
 void RenderingServerDefault::viewport_set_debug_draw(RID p_viewport, ViewportDebugDraw p_draw) {
 	Viewport *viewport = viewport_owner.get_or_null(p_viewport);
 	ERR_FAIL_NULL_MSG(viewport, "Invalid viewport RID.");
-	ERR_FAIL_INDEX_MSG((int)p_draw, (int)VIEWPORT_DEBUG_DRAW_INTERNAL_BUFFER + 1, "Debug draw mode is not a ViewportDebugDraw value.");
+	ERR_FAIL_INDEX_MSG((int)p_draw, (int)VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS + 1, "Debug draw mode is not a ViewportDebugDraw value."); // The last value (godot-area's addition).
 	viewport->debug_draw = p_draw;
 }
 

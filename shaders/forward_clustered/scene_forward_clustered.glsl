@@ -8,7 +8,8 @@
 /*   1 MODE_DEPTH : depth pre-pass, no colour output;                     */
 /*   2 USE_AREA_LIGHTS : colour pass with area lights, used only when the */
 /*     view has area lights; compiled per version with the AREA_METHOD_*  */
-/*     defines of the methods in use (area_light_inc.glsl dispatches).    */
+/*     defines of the methods in use (area_light_inc.glsl dispatches) and */
+/*     AREA_SHADOWS_PCF / _PCSS only when some light has area shadows.    */
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -67,7 +68,16 @@ void main() {
 #include "../scene_forward_lights_inc.glsl"
 #ifdef USE_AREA_LIGHTS
 #include "../area_light_inc.glsl"
+#if defined(AREA_SHADOWS_PCF) || defined(AREA_SHADOWS_PCSS)
 #include "../area_light_shadow_inc.glsl"
+#else
+// No area light of this view has shadow maps (the version key of RenderForwardClustered): visibility 1
+// without any shadow code. A software rasterizer (llvmpipe) runs untaken branches too, so a compiled-in
+// lookup would cost every pixel of every area light even when no light casts area shadows.
+float light_process_area_shadow(uint p_light_index, vec3 p_vertex, vec3 p_normal) {
+	return 1.0;
+}
+#endif
 #endif
 
 layout(location = 0) in vec3 vertex_interp;

@@ -89,6 +89,8 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 
 void AreaShadowAdaptiveRD::finalize() {
 	trees.clear(); // Tiles back to their sources.
+	content_hashes.clear();
+	settled.clear();
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	if (rd && rd->is_initialized()) {
 		RID all[] = { reprojection_pipeline, banding_pipeline, sampler, query_buffer, values_buffer };
@@ -119,12 +121,14 @@ void AreaShadowAdaptiveRD::finalize() {
 bool AreaShadowAdaptiveRD::set_reprojection_divisor(uint32_t p_divisor) {
 	ERR_FAIL_COND_V_MSG(p_divisor < 1 || p_divisor > 64, false, vformat("Area shadow reprojection divisor %u is invalid (expected 1..64).", p_divisor));
 	divisor = p_divisor;
+	settled.clear();
 	return true;
 }
 
 bool AreaShadowAdaptiveRD::set_max_depth(uint32_t p_depth) {
 	ERR_FAIL_COND_V_MSG(p_depth < 1 || p_depth > 3, false, vformat("Area shadow adaptive max depth %u is invalid (expected 1..3: 9 x 9 maps at most).", p_depth));
 	max_depth = p_depth;
+	settled.clear();
 	for (auto &kv : trees) {
 		kv.second->set_max_depth(max_depth);
 	}
@@ -163,7 +167,7 @@ AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaS
 	return ptr;
 }
 
-bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps) {
+bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights) {
 	AreaShadowQuadtree *tree = light_get_tree(p_light, p_tiles);
 	if (!tree) {
 		return false;
@@ -186,7 +190,10 @@ bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::T
 		}
 		r_draws.push_back(d);
 	}
-	for (const AreaShadowQuadtree::Point &p : tree->get_points()) {
+	points = tree->get_points(); // Drawn this frame: valid now.
+	std::vector<float> weights = tree->get_point_weights();
+	for (size_t i = 0; i < points.size(); i++) {
+		const AreaShadowQuadtree::Point &p = points[i];
 		if (p.valid) {
 			AreaShadowAtlas::Map m;
 			m.uv = p.uv;
@@ -194,20 +201,30 @@ bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::T
 			m.valid = true;
 			m.dirty = p.dirty;
 			r_maps.push_back(m);
+			if (r_weights) {
+				r_weights->push_back(i < weights.size() ? weights[i] : 0.0f);
+			}
 		}
 	}
 	return true;
 }
 
+const AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree_or_null(uint64_t p_light) const {
+	auto it = trees.find(p_light);
+	return it != trees.end() ? it->second.get() : nullptr;
+}
+
 void AreaShadowAdaptiveRD::light_release(uint64_t p_light) {
 	trees.erase(p_light);
 	content_hashes.erase(p_light);
+	settled.erase(p_light);
 }
 
 void AreaShadowAdaptiveRD::release_lights_except(const std::vector<uint64_t> &p_seen) {
 	for (auto it = trees.begin(); it != trees.end();) {
 		if (std::find(p_seen.begin(), p_seen.end(), it->first) == p_seen.end()) {
 			content_hashes.erase(it->first);
+			settled.erase(it->first);
 			it = trees.erase(it);
 		} else {
 			++it;
@@ -221,13 +238,21 @@ void AreaShadowAdaptiveRD::begin_frame() {
 	ERR_FAIL_COND_MSG(!initialized, "AreaShadowAdaptiveRD::begin_frame: not initialized.");
 	frame++;
 	ring.begin_frame(frame);
+	dispatched_this_frame = false;
+	last_begin_submission = RenderingDevice::get_singleton()->get_frames_submitted();
 	std::map<uint64_t, std::vector<AreaShadowQuadtree::Result>> results;
 	uint64_t data_frame = 0;
 	int slot = ring.take_newest_completed(&data_frame);
 	last_banding_count = 0;
 	if (slot >= 0 && !slot_queries[slot].empty()) {
 		const std::vector<IssuedQuery> &issued = slot_queries[slot];
-		// The slot's frame is complete: the read does not wait for GPU work of this frame.
+		// The slot's frame is complete: the read does not wait for GPU work of this frame (begin_frame()
+		// runs before the frame records anything, so the flush only carries the copy).
+		readback_count++;
+		last_read_submission = slot_submissions[slot];
+		if (slot_submissions[slot] >= last_begin_submission || data_frame >= frame) {
+			current_frame_read_count++; // Would wait for the frame being built (never expected).
+		}
 		std::vector<uint8_t> bytes = RenderingDevice::get_singleton()->buffer_get_data(flag_buffers[slot], 0, uint32_t(issued.size() * sizeof(uint32_t)));
 		if (bytes.size() == issued.size() * sizeof(uint32_t)) {
 			const uint32_t *flags = reinterpret_cast<const uint32_t *>(bytes.data());
@@ -239,11 +264,56 @@ void AreaShadowAdaptiveRD::begin_frame() {
 		}
 		last_result_frame = data_frame;
 	}
+	std::map<uint64_t, std::vector<const IssuedQuery *>> answered;
+	if (!results.empty()) {
+		for (const IssuedQuery &iq : slot_queries[slot]) {
+			answered[iq.light].push_back(&iq);
+		}
+	}
 	for (auto &kv : trees) {
 		kv.second->begin_frame();
 		auto rit = results.find(kv.first);
-		kv.second->apply_results(rit == results.end() ? std::vector<AreaShadowQuadtree::Result>() : rit->second);
+		uint32_t changes = kv.second->apply_results(rit == results.end() ? std::vector<AreaShadowQuadtree::Result>() : rit->second);
+		if (rit != results.end()) {
+			_update_settled(kv.first, *kv.second, answered[kv.first], changes);
+		}
 	}
+}
+
+void AreaShadowAdaptiveRD::_update_settled(uint64_t p_light, const AreaShadowQuadtree &p_tree, const std::vector<const IssuedQuery *> &p_answered, uint32_t p_changes) {
+	settled.erase(p_light);
+	if (p_changes != 0 || p_answered.empty()) {
+		return;
+	}
+	// Settled when these answers covered every test the tree would issue now, all for one known state.
+	uint64_t state = p_answered[0]->state_hash;
+	std::vector<std::pair<uint64_t, bool>> done;
+	for (const IssuedQuery *iq : p_answered) {
+		if (iq->state_hash != state) {
+			return;
+		}
+		done.push_back(std::make_pair(iq->query.node, iq->query.parent_test));
+	}
+	if (state == 0) {
+		return;
+	}
+	std::sort(done.begin(), done.end());
+	for (const AreaShadowQuadtree::Query &q : p_tree.build_queries(p_answered[0]->can_grow)) {
+		if (!std::binary_search(done.begin(), done.end(), std::make_pair(q.node, q.parent_test))) {
+			return; // A test not answered yet (a new prune test, or one cut by MAX_QUERIES_PER_FRAME).
+		}
+	}
+	settled[p_light] = state;
+}
+
+void AreaShadowAdaptiveRD::set_skip_settled(bool p_enable) {
+	skip_settled = p_enable;
+	settled.clear();
+}
+
+bool AreaShadowAdaptiveRD::is_light_settled(uint64_t p_light, uint64_t p_state_hash) const {
+	auto it = settled.find(p_light);
+	return it != settled.end() && p_state_hash != 0 && it->second == p_state_hash;
 }
 
 static void _fill_query(AreaShadowAdaptiveRD::QueryData &r_d, const AreaShadowAdaptiveRD::LightInput &p_light, const AreaShadowAdaptiveRD::AtlasInfo &p_atlas, const AreaShadowQuadtree::Query &p_q) {
@@ -264,7 +334,7 @@ static void _fill_query(AreaShadowAdaptiveRD::QueryData &r_d, const AreaShadowAd
 	r_d.quadrant_size = std::max(r_d.tile_size / 2, 1u);
 }
 
-static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_reproj_shader, RID p_banding_shader, RID p_sampler, RID p_depth, uint32_t p_width, uint32_t p_height, uint32_t p_divisor, const Projection &p_clip_from_view, RID p_atlas, RID p_queries, RID p_values, RID p_flags, uint32_t p_count) {
+static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_reproj_shader, RID p_banding_shader, RID p_sampler, RID p_depth, uint32_t p_width, uint32_t p_height, uint32_t p_divisor, const Projection &p_clip_from_view, RID p_atlas, RID p_queries, RID p_values, RID p_flags, uint32_t p_count, const String &p_timestamp_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	uint32_t ow = std::max((p_width + p_divisor - 1) / p_divisor, 1u);
 	uint32_t oh = std::max((p_height + p_divisor - 1) / p_divisor, 1u);
@@ -302,35 +372,52 @@ static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_
 	rd->compute_list_bind_uniform_set(list, set1, 0);
 	rd->compute_list_set_push_constant(list, &rpc, sizeof(rpc));
 	rd->compute_list_dispatch_threads(list, ow, oh, p_count);
+	if (!p_timestamp_prefix.empty()) {
+		rd->capture_timestamp(p_timestamp_prefix + "area_reprojection");
+	}
 	rd->compute_list_bind_compute_pipeline(list, p_banding_pipeline);
 	rd->compute_list_bind_uniform_set(list, set2, 0);
 	rd->compute_list_set_push_constant(list, &bpc, sizeof(bpc));
 	rd->compute_list_dispatch_threads(list, ow, oh, p_count);
+	if (!p_timestamp_prefix.empty()) {
+		rd->capture_timestamp(p_timestamp_prefix + "area_banding");
+	}
 	rd->compute_list_end();
 	rd->free(set1); // Deferred until the frame completes.
 	rd->free(set2);
 	return true;
 }
 
-uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights) {
+uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights, const String &p_timestamp_prefix) {
 	ERR_FAIL_COND_V_MSG(!initialized, 0, "AreaShadowAdaptiveRD::dispatch: not initialized.");
 	last_query_count = 0;
+	if (dispatched_this_frame) {
+		extra_dispatch_count++; // Two dispatches in one frame: the second one's slot is read as usual.
+	}
+	dispatched_this_frame = true;
 	if (p_lights.empty() || p_width == 0 || p_height == 0 || !p_depth.is_valid() || !p_atlas.texture.is_valid()) {
 		return 0;
 	}
 	std::vector<IssuedQuery> issued;
 	std::vector<QueryData> data;
+	last_skipped_count = 0;
 	for (const LightInput &l : p_lights) {
 		auto it = trees.find(l.key);
 		if (it == trees.end()) {
 			continue;
 		}
-		for (const AreaShadowQuadtree::Query &q : it->second->build_queries()) {
+		if (skip_settled && is_light_settled(l.key, l.state_hash)) {
+			last_skipped_count++; // Same view, same scene, and its last full round changed nothing.
+			continue;
+		}
+		for (const AreaShadowQuadtree::Query &q : it->second->build_queries(l.can_grow)) {
 			if (issued.size() >= MAX_QUERIES_PER_FRAME) {
 				break; // The rest is tested on a later frame (the trees re-issue every frame).
 			}
 			IssuedQuery iq;
 			iq.light = l.key;
+			iq.state_hash = l.state_hash;
+			iq.can_grow = l.can_grow;
 			iq.query = q;
 			issued.push_back(iq);
 			data.emplace_back();
@@ -361,7 +448,7 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		rd->set_resource_name(values_buffer, "AreaShadowAdaptiveRD reprojection values");
 	}
 	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
-	if (!_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values_buffer, flag_buffers[slot], uint32_t(issued.size()))) {
+	if (!_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values_buffer, flag_buffers[slot], uint32_t(issued.size()), p_timestamp_prefix)) {
 		return 0;
 	}
 	slot_queries[slot] = issued;
@@ -386,7 +473,7 @@ std::vector<uint32_t> AreaShadowAdaptiveRD::test_queries_blocking(RID p_depth, u
 	RID flags = rd->storage_buffer_create(n * sizeof(uint32_t));
 	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
 	std::vector<uint32_t> out;
-	if (_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values, flags, n)) {
+	if (_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values, flags, n, String())) {
 		std::vector<uint8_t> fb = rd->buffer_get_data(flags);
 		out.resize(n);
 		memcpy(out.data(), fb.data(), std::min(fb.size(), out.size() * sizeof(uint32_t)));

@@ -18,6 +18,10 @@
 /* The two compute shaders are compiled on the first dispatch with work,  */
 /* so a scene without an ADAPTIVE light never compiles them.              */
 /*                                                                        */
+/* Settled lights: when a full round of a light's tests changed nothing   */
+/* for one LightInput::state_hash (camera, scene, light, atlas), the      */
+/* light is not tested again until that hash changes (set_skip_settled).  */
+/*                                                                        */
 /* Readback: RenderingDevice here runs one frame at a time (sync() after  */
 /* submit()), so a frame older than the current one is always complete;  */
 /* buffer_get_data() still flushes the frame being recorded, which is why */
@@ -86,6 +90,11 @@ public:
 		Vector2 size;
 		float depth_scale = 1.0f; // 1 / (range + diagonal), as the atlas.
 		float bias = 0.02f; // shadow_bias.
+		bool can_grow = true; // false: the atlas has no tile for a split (no expansion tests, prune tests only).
+		// Everything the light's tests depend on (camera, light, casters and receivers, atlas); 0 = unknown.
+		// A light whose tests all came back without a change for this state is settled: it is not tested
+		// again until the state changes (set_skip_settled()).
+		uint64_t state_hash = 0;
 	};
 
 	// Tiles of an AreaShadowAtlas for a light's quadtree (AreaShadowAtlas::tile_acquire/tile_release).
@@ -116,6 +125,8 @@ private:
 
 	struct IssuedQuery {
 		uint64_t light = 0;
+		uint64_t state_hash = 0;
+		bool can_grow = true;
 		AreaShadowQuadtree::Query query;
 	};
 
@@ -133,15 +144,26 @@ private:
 	AreaShadowReadbackRing ring;
 	std::map<uint64_t, std::unique_ptr<AreaShadowQuadtree>> trees;
 	std::map<uint64_t, uint64_t> content_hashes;
+	std::map<uint64_t, uint64_t> settled; // Light -> state hash its last complete round of tests left unchanged.
+	bool skip_settled = true;
+	uint32_t last_skipped_count = 0;
 	uint32_t divisor = DEFAULT_REPROJECTION_DIVISOR;
 	uint32_t max_depth = AreaShadowQuadtree::DEFAULT_MAX_DEPTH;
 	uint64_t frame = 0;
 	uint32_t last_query_count = 0;
 	uint32_t last_banding_count = 0;
 	uint64_t last_result_frame = 0;
+	// No-stall instrumentation (begin_frame()).
+	uint64_t readback_count = 0;
+	uint64_t current_frame_read_count = 0; // Reads of data recorded in a submission not complete at begin_frame(): must stay 0.
+	uint64_t last_read_submission = 0; // Submission that recorded the last data read.
+	uint64_t last_begin_submission = 0; // RenderingDevice::get_frames_submitted() at the last begin_frame().
+	bool dispatched_this_frame = false;
+	uint64_t extra_dispatch_count = 0; // dispatch() twice without begin_frame() in between.
 	bool initialized = false;
 
 	bool _ensure_pipelines();
+	void _update_settled(uint64_t p_light, const AreaShadowQuadtree &p_tree, const std::vector<const IssuedQuery *> &p_answered, uint32_t p_changes);
 
 public:
 	/* Public Methods */
@@ -168,7 +190,11 @@ public:
 	// (created on first use), its maps redrawn when p_content_hash changed, up to p_max_draws draw
 	// requests appended to r_draws (as the atlas' own, map_index = point index), and the drawn maps
 	// (tile, uv) for the shader in r_maps. false when the light has no tree (no four free tiles).
-	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps);
+	// r_weights (optional): each map's share of the light (AreaShadowQuadtree::get_point_weights()), same
+	// order as r_maps.
+	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights = nullptr);
+	const AreaShadowQuadtree *light_get_tree_or_null(uint64_t p_light) const;
+	uint32_t get_light_count() const { return uint32_t(trees.size()); }
 	// Frees a light's tree (tiles back to its source).
 	void light_release(uint64_t p_light);
 	// Releases every light not in p_seen (culled, freed, no longer ADAPTIVE).
@@ -178,7 +204,9 @@ public:
 	// scene's depth is written and the tree's points are drawn). p_depth: the camera depth (sampled,
 	// Vulkan [0,1] depth), p_clip_from_view: the depth-corrected projection that wrote it.
 	// Returns the number of quads tested (0: nothing to do, or every ring slot still in flight).
-	uint32_t dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights);
+	// p_timestamp_prefix (non-empty): GPU timestamps p_timestamp_prefix + "area_reprojection" after the
+	// reprojection and + "area_banding" after the banding detector (the renderer's profiler passes).
+	uint32_t dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights, const String &p_timestamp_prefix = String());
 
 	// Lower level, for tests: tests p_queries against the given atlas now and returns the flags
 	// (flushes: submit + sync).
@@ -200,6 +228,20 @@ public:
 	uint32_t get_last_query_count() const { return last_query_count; }
 	uint32_t get_last_banding_count() const { return last_banding_count; }
 	uint64_t get_last_result_frame() const { return last_result_frame; }
+	// No stall: flag buffers read so far, and how many of those reads touched data of a submission that had
+	// not completed when begin_frame() started (i.e. waited for GPU work of the frame being built): 0.
+	uint64_t get_readback_count() const { return readback_count; }
+	uint64_t get_current_frame_read_count() const { return current_frame_read_count; }
+	uint64_t get_last_read_submission() const { return last_read_submission; }
+	uint64_t get_last_begin_submission() const { return last_begin_submission; }
+	uint64_t get_extra_dispatch_count() const { return extra_dispatch_count; } // dispatch() calls after the first of a frame.
+	// Settled lights (a full round of tests changed nothing for the same state_hash) are not tested until
+	// their state changes; off: every light is tested every frame (Algorithm 1 as written).
+	void set_skip_settled(bool p_enable);
+	bool is_skip_settled() const { return skip_settled; }
+	bool is_light_settled(uint64_t p_light, uint64_t p_state_hash) const;
+	// Lights skipped by the last dispatch() because they were settled.
+	uint32_t get_last_skipped_count() const { return last_skipped_count; }
 
 	~AreaShadowAdaptiveRD() { finalize(); }
 };

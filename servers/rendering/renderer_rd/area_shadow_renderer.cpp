@@ -25,11 +25,15 @@ void AreaShadowRendererRD::get_octant_axes(uint32_t p_quadrant, Vector3 &r_right
 	r_up = Vector3(sx, sy, 2.0f) * 0.40824829f;
 }
 
-uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid) {
+uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight) {
 	uint32_t den = p_grid >= 2 ? p_grid - 1 : 2;
 	uint32_t un = uint32_t(std::lround(p_uv.x * den));
 	uint32_t vn = uint32_t(std::lround(p_uv.y * den));
-	return (p_tile & 0xFFFFu) | ((un & 0xFu) << 16) | ((vn & 0xFu) << 20) | ((den & 0xFFu) << 24);
+	uint32_t w = 0;
+	if (p_weight > 0.0f) {
+		w = uint32_t(std::min(std::max(std::lround(p_weight * WEIGHT_SCALE), 1l), 255l));
+	}
+	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20) | (w << 24);
 }
 
 bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, uint32_t p_max_lights) {
@@ -117,6 +121,89 @@ AreaShadowRendererRD::AtlasInstance &AreaShadowRendererRD::_get_atlas_instance(u
 	AtlasInstance &a = atlases[p_owner];
 	a.atlas.configure(default_size, default_subdivision);
 	return a;
+}
+
+void AreaShadowRendererRD::_check_adaptive_configuration(AtlasInstance &p_atlas) {
+	if (p_atlas.adaptive && p_atlas.adaptive_configuration != p_atlas.atlas.get_configuration()) {
+		// configure() took every tile back (tile_release ignores them): the trees start again from their roots.
+		p_atlas.adaptive->release_lights_except({});
+		p_atlas.adaptive_configuration = p_atlas.atlas.get_configuration();
+	}
+}
+
+bool AreaShadowRendererRD::_ensure_adaptive(AtlasInstance &p_atlas) {
+	if (p_atlas.adaptive) {
+		return true;
+	}
+	std::unique_ptr<AreaShadowAdaptiveRD> adaptive(new AreaShadowAdaptiveRD);
+	ERR_FAIL_COND_V_MSG(!adaptive->initialize(), false, "Area shadows: the ADAPTIVE driver could not be initialized; ADAPTIVE lights stay unshadowed.");
+	if (adaptive_divisor != 0) {
+		adaptive->set_reprojection_divisor(adaptive_divisor);
+	}
+	adaptive->set_skip_settled(adaptive_skip_settled);
+	p_atlas.adaptive_tiles.reset(new AreaShadowAdaptiveRD::AtlasTiles(&p_atlas.atlas));
+	p_atlas.adaptive = std::move(adaptive);
+	p_atlas.adaptive_configuration = p_atlas.atlas.get_configuration();
+	return true;
+}
+
+void AreaShadowRendererRD::begin_frame(RID p_owner) {
+	ERR_FAIL_COND_MSG(!initialized, "AreaShadowRendererRD::begin_frame: not initialized.");
+	auto it = atlases.find(p_owner.get_id());
+	if (it == atlases.end() || !it->second.adaptive) {
+		return; // No ADAPTIVE light was ever drawn in this atlas: nothing to read.
+	}
+	_check_adaptive_configuration(it->second);
+	it->second.adaptive->begin_frame();
+}
+
+uint32_t AreaShadowRendererRD::dispatch_adaptive(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const String &p_timestamp_prefix) {
+	if (!current || !current->adaptive || current->adaptive_lights.empty() || !current->texture.is_valid()) {
+		return 0;
+	}
+	AreaShadowAdaptiveRD::AtlasInfo info;
+	info.texture = current->texture;
+	info.size = current->atlas.get_size();
+	info.subdivision = current->atlas.get_subdivision();
+	return current->adaptive->dispatch(p_depth, p_width, p_height, p_clip_from_view, info, current->adaptive_lights, p_timestamp_prefix);
+}
+
+uint32_t AreaShadowRendererRD::light_get_shadow_map_count(RID p_light) const {
+	if (!current) {
+		return 0;
+	}
+	auto it = current->map_counts.find(p_light.get_id());
+	return it != current->map_counts.end() ? it->second : 0;
+}
+
+bool AreaShadowRendererRD::is_reprojection_compiled() const {
+	for (const auto &e : atlases) {
+		if (e.second.adaptive && e.second.adaptive->is_reprojection_compiled()) {
+			return true;
+		}
+	}
+	return false;
+}
+
+bool AreaShadowRendererRD::set_adaptive_reprojection_divisor(uint32_t p_divisor) {
+	ERR_FAIL_COND_V_MSG(p_divisor > 64, false, vformat("Area shadow reprojection divisor %u is invalid (expected 1..64, or 0 for the project setting).", p_divisor));
+	adaptive_divisor = p_divisor;
+	uint32_t value = p_divisor != 0 ? p_divisor : AreaShadowAdaptiveRD::get_project_reprojection_divisor();
+	for (auto &e : atlases) {
+		if (e.second.adaptive) {
+			e.second.adaptive->set_reprojection_divisor(value);
+		}
+	}
+	return true;
+}
+
+void AreaShadowRendererRD::set_adaptive_skip_settled(bool p_enable) {
+	adaptive_skip_settled = p_enable;
+	for (auto &e : atlases) {
+		if (e.second.adaptive) {
+			e.second.adaptive->set_skip_settled(p_enable);
+		}
+	}
 }
 
 bool AreaShadowRendererRD::set_atlas_size(uint32_t p_size, uint32_t p_subdivision) {
@@ -226,6 +313,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		}
 		inst.custom_size = custom;
 	}
+	_check_adaptive_configuration(inst);
 	AreaShadowAtlas &atlas = inst.atlas;
 	std::map<uint64_t, LightFrame> &frame_lights = inst.frame_lights;
 	uint32_t count = std::min(uint32_t(p_area_sources.size()), max_lights);
@@ -234,7 +322,19 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		memset(&d, 0, sizeof(d));
 	}
 	frame_lights.clear();
+	inst.map_counts.clear();
+	inst.adaptive_draws.clear();
+	inst.adaptive_lights.clear();
 	std::vector<uint64_t> gpu_keys(count, 0);
+	// ADAPTIVE lights of this frame: GPU index, key, content hash; handled after the grid lights' sharing.
+	struct AdaptiveLight {
+		uint32_t index = 0;
+		uint64_t key = 0;
+		uint64_t hash = 0;
+		std::vector<AreaShadowAtlas::Map> maps;
+		std::vector<float> weights;
+	};
+	std::vector<AdaptiveLight> adaptive_lights;
 
 	atlas.begin_frame();
 	for (uint32_t i = 0; i < count; i++) {
@@ -285,15 +385,23 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			_hash_transform(hash, gi->transform);
 		}
 		RS::LightAreaShadowMode mode = light_storage->light_area_get_shadow_mode(li.light);
-		uint32_t grid = mode == RS::LIGHT_AREA_SHADOW_PCSS_BASELINE ? 1 : uint32_t(light_storage->light_area_get_shadow_grid(li.light));
-		if (mode == RS::LIGHT_AREA_SHADOW_HEURISTIC || mode == RS::LIGHT_AREA_SHADOW_ADAPTIVE) {
-			// Thesis 6.5 estimate. ADAPTIVE uses it too until its reprojection loop (AreaShadowAdaptiveRD) is wired in.
-			grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data);
+		if (mode == RS::LIGHT_AREA_SHADOW_ADAPTIVE) {
+			// Its quadtree takes single free tiles after the grid lights' sharing (end_frame()).
+			AdaptiveLight al;
+			al.index = i;
+			al.key = lf.key;
+			al.hash = hash;
+			adaptive_lights.push_back(al);
+		} else {
+			uint32_t grid = mode == RS::LIGHT_AREA_SHADOW_PCSS_BASELINE ? 1 : uint32_t(light_storage->light_area_get_shadow_grid(li.light));
+			if (mode == RS::LIGHT_AREA_SHADOW_HEURISTIC) {
+				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data); // Thesis 6.5 estimate.
+			}
+			_hash_bytes(hash, &grid, sizeof(grid));
+			float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
+			atlas.light_set(lf.key, grid, importance, hash);
+			gpu_keys[i] = lf.key;
 		}
-		_hash_bytes(hash, &grid, sizeof(grid));
-		float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
-		atlas.light_set(lf.key, grid, importance, hash);
-		gpu_keys[i] = lf.key;
 
 		AreaShadowData &d = data[i];
 		Projection::from_transform(lf.world_from_light.affine_inverse() * p_data.cam_transform).to_floats(d.light_from_view);
@@ -306,9 +414,85 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		d.mode = uint32_t(mode);
 		frame_lights[lf.key] = lf;
 	}
+	// Trees of lights that are gone or no longer ADAPTIVE give their tiles back before the grid lights share.
+	if (inst.adaptive) {
+		std::vector<uint64_t> seen;
+		for (const AdaptiveLight &al : adaptive_lights) {
+			seen.push_back(al.key);
+		}
+		inst.adaptive->release_lights_except(seen);
+	}
 	atlas.end_frame();
+	// ADAPTIVE: the trees (free tiles only, never evicting grid lights), their dirty points as draws after
+	// the atlas' own (same per-frame cap), the drawn points and their weights for the shader.
+	if (!adaptive_lights.empty() && _ensure_adaptive(inst)) {
+		// What every ADAPTIVE light's tests see besides the light itself: the camera, the receivers (all
+		// geometry of the view) and the atlas.
+		uint64_t view_hash = 1469598103934665603ull;
+		_hash_transform(view_hash, p_data.cam_transform);
+		{
+			float f[16];
+			p_data.cam_projection.to_floats(f);
+			_hash_bytes(view_hash, f, sizeof(f));
+			uint32_t view[2] = { p_data.viewport_width > 0 ? uint32_t(p_data.viewport_width) : 0u, p_data.viewport_height > 0 ? uint32_t(p_data.viewport_height) : 0u };
+			_hash_bytes(view_hash, view, sizeof(view));
+			uint64_t configuration = atlas.get_configuration();
+			_hash_bytes(view_hash, &configuration, sizeof(configuration));
+		}
+		for (const RenderSceneData::GeometryInstance &gi : p_data.geometry) {
+			uint64_t ids[2] = { gi.instance.get_id(), gi.mesh.get_id() };
+			_hash_bytes(view_hash, ids, sizeof(ids));
+			_hash_transform(view_hash, gi.transform);
+		}
+		uint32_t cap = atlas.get_max_draws_per_frame();
+		for (AdaptiveLight &al : adaptive_lights) {
+			uint32_t used = uint32_t(atlas.get_draws().size() + inst.adaptive_draws.size());
+			uint32_t budget = used < cap ? cap - used : 0;
+			if (!inst.adaptive->light_prepare(al.key, inst.adaptive_tiles.get(), al.hash, budget, inst.adaptive_draws, al.maps, &al.weights)) {
+				if (!inst.adaptive_warned) {
+					WARN_PRINT(vformat("Area shadow atlas (%u x %u tiles): no four free tiles for an ADAPTIVE light; it stays unshadowed until tiles free up.", atlas.get_subdivision(), atlas.get_subdivision()));
+					inst.adaptive_warned = true;
+				}
+				continue;
+			}
+			gpu_keys[al.index] = al.key;
+			const LightFrame &lf = frame_lights[al.key];
+			const RenderSceneData::LightInstance &li = p_data.lights[p_area_sources[al.index]];
+			AreaShadowAdaptiveRD::LightInput in;
+			in.key = al.key;
+			in.light_from_view = lf.world_from_light.affine_inverse() * p_data.cam_transform;
+			in.size = lf.size;
+			in.depth_scale = 1.0f / (lf.range + lf.size.length());
+			in.bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BIAS);
+			in.can_grow = atlas.get_free_tile_count() >= 5; // A split needs up to five new points.
+			uint64_t state = view_hash;
+			_hash_bytes(state, &al.hash, sizeof(al.hash));
+			_hash_bytes(state, &in.bias, sizeof(in.bias));
+			_hash_bytes(state, &in.can_grow, sizeof(in.can_grow));
+			in.state_hash = state != 0 ? state : 1;
+			inst.adaptive_lights.push_back(in);
+		}
+	}
 	if (!frame_lights.empty()) {
 		_ensure_atlas(inst);
+	}
+	for (const AdaptiveLight &al : adaptive_lights) {
+		if (gpu_keys[al.index] == 0 || !inst.texture.is_valid()) {
+			continue;
+		}
+		AreaShadowData &d = data[al.index];
+		d.atlas_subdivision = atlas.get_subdivision();
+		d.atlas_texel = 1.0f / float(atlas.get_size());
+		d.quadrant_size = atlas.get_tile_size() / 2;
+		d.tile_size = atlas.get_tile_size();
+		uint32_t n = 0;
+		for (size_t m = 0; m < al.maps.size() && n < MAX_MAPS_GPU; m++) {
+			// Lattice points of a depth <= 3 tree are multiples of 1/8: exact with the 9 x 9 grid's den.
+			d.maps[n++] = pack_map(al.maps[m].tile, al.maps[m].uv, AreaShadowAtlas::MAX_GRID, std::max(al.weights[m], 1.0f / WEIGHT_SCALE));
+		}
+		d.map_count = n;
+		inst.map_counts[al.key] = n;
+		gpu_keys[al.index] = 0; // Packed.
 	}
 	for (uint32_t i = 0; i < count; i++) {
 		if (gpu_keys[i] == 0 || !inst.texture.is_valid()) {
@@ -327,6 +511,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			}
 		}
 		d.map_count = n;
+		inst.map_counts[gpu_keys[i]] = n;
 	}
 	if (count > 0) {
 		RenderingDevice::get_singleton()->buffer_update(data_buffer, 0, count * sizeof(AreaShadowData), data.data());
@@ -340,7 +525,8 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 		return;
 	}
 	const AreaShadowAtlas &atlas = current->atlas;
-	const std::vector<AreaShadowAtlas::DrawRequest> &draws = atlas.get_draws();
+	std::vector<AreaShadowAtlas::DrawRequest> draws = atlas.get_draws();
+	draws.insert(draws.end(), current->adaptive_draws.begin(), current->adaptive_draws.end()); // ADAPTIVE tree points.
 	if (draws.empty() || !current->texture.is_valid() || !pipeline.is_valid()) {
 		return;
 	}

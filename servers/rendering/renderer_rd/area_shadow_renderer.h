@@ -13,17 +13,26 @@
 /* Mapping of one map: four perspective octant views in the four          */
 /* quadrants of a tile (shaders/area_shadow_octant_inc.glsl; the choice   */
 /* is measured in doc/shadows.md).                                        */
+/* ADAPTIVE lights (thesis 6.3): one AreaShadowAdaptiveRD per atlas,     */
+/* created with the first ADAPTIVE light; each such light's quadtree of   */
+/* sample points takes single free tiles of the atlas (never evicts grid  */
+/* lights) and its maps carry the points' quadrature weights. Per frame:  */
+/* begin_frame() (newest completed banding flags, before anything is      */
+/* recorded), prepare(), render_shadows(), the scene's depth pre-pass,    */
+/* dispatch_adaptive() (reprojection + banding of this frame's tests).    */
 /* Casters: LightInstance::shadow_casters from RendererSceneCull (every   */
 /* instance in the light's influence box, on screen or not); hand-built   */
 /* scenes fall back to the visible geometry in the box.                   */
 
 #pragma once
 
+#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
 #include "servers/rendering/renderer_scene_render.h"
 
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace RendererRD {
@@ -41,7 +50,13 @@ public:
 	enum Mode {
 		MODE_FIXED = 0,
 		MODE_PCSS_BASELINE = 1,
+		MODE_ADAPTIVE = 2, // Drawn as FIXED (PCF average) with per-map weights.
+		MODE_HEURISTIC = 3, // Drawn as FIXED.
 	};
+
+	// Quadrature weights in AreaShadowData::maps (bits 24..31): weight * WEIGHT_SCALE (0 = the grid's
+	// trapezoid rule). ADAPTIVE weights are multiples of 1/256 up to 1/4 (a quarter of a leaf's area).
+	static constexpr float WEIGHT_SCALE = 256.0f;
 
 	// Mirror of struct AreaShadowData in shaders/area_light_shadow_inc.glsl (std430), same names and order.
 	struct AreaShadowData {
@@ -57,7 +72,7 @@ public:
 		float atlas_texel;
 		uint32_t quadrant_size;
 		uint32_t tile_size;
-		uint32_t maps[MAX_MAPS_GPU]; // tile | u_num << 16 | v_num << 20 | den << 24.
+		uint32_t maps[MAX_MAPS_GPU]; // tile | u_num << 12 | v_num << 16 | den << 20 | weight << 24 (pack_map).
 	};
 	static_assert(sizeof(AreaShadowData) == 448, "AreaShadowData must match shaders/area_light_shadow_inc.glsl (448 bytes).");
 
@@ -72,8 +87,10 @@ public:
 	// Octant view of quadrant p_quadrant (0..3; bit 0: x > 0, bit 1: y > 0) in light space: rows right,
 	// up, forward (shaders/area_shadow_octant_inc.glsl).
 	static void get_octant_axes(uint32_t p_quadrant, Vector3 &r_right, Vector3 &r_up, Vector3 &r_forward);
-	// Packs one map for the shader (tile and sample uv as a fraction of the grid).
-	static uint32_t pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid);
+	// Packs one map for the shader: tile (12 bits: atlases have at most 64 x 64 tiles), sample uv as
+	// u_num / den, v_num / den (4 bits each, den = grid - 1 <= 8) and the quadrature weight (8 bits,
+	// round(weight * WEIGHT_SCALE), 0 = trapezoid rule of the grid).
+	static uint32_t pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight = 0.0f);
 
 private:
 	/* Private Members */
@@ -108,13 +125,27 @@ private:
 		RID texture; // ATLAS_FORMAT, atlas.get_size() squared; created on the first shadowed light.
 		RID framebuffer;
 		std::map<uint64_t, LightFrame> frame_lights;
+		std::map<uint64_t, uint32_t> map_counts; // Maps handed to the shader per light by the last prepare().
+		// ADAPTIVE lights (created with the first one; declared after the atlas: the trees give their tiles
+		// back to it when destroyed).
+		std::unique_ptr<AreaShadowAdaptiveRD::AtlasTiles> adaptive_tiles;
+		std::unique_ptr<AreaShadowAdaptiveRD> adaptive;
+		uint64_t adaptive_configuration = 0; // atlas.get_configuration() the trees' tiles belong to.
+		std::vector<AreaShadowAtlas::DrawRequest> adaptive_draws; // Tree points to draw this frame.
+		std::vector<AreaShadowAdaptiveRD::LightInput> adaptive_lights; // This frame's ADAPTIVE lights.
+		bool adaptive_warned = false;
 	};
 	std::map<uint64_t, AtlasInstance> atlases;
 	AtlasInstance *current = nullptr; // Atlas of the last prepare().
 	uint32_t default_size = AreaShadowAtlas::DEFAULT_SIZE;
 	uint32_t default_subdivision = AreaShadowAtlas::DEFAULT_SUBDIVISION;
+	uint32_t adaptive_divisor = 0; // 0: the project setting.
+	bool adaptive_skip_settled = true;
 
 	bool _ensure_atlas(AtlasInstance &p_atlas);
+	// Frees the ADAPTIVE trees when the atlas took every tile back (configure()).
+	void _check_adaptive_configuration(AtlasInstance &p_atlas);
+	bool _ensure_adaptive(AtlasInstance &p_atlas);
 	void _free_atlas_texture(AtlasInstance &p_atlas);
 	AtlasInstance &_get_atlas_instance(uint64_t p_owner);
 
@@ -138,6 +169,9 @@ public:
 	// Frees the atlas of a render target (call when the render target is freed).
 	void release_owner(RID p_owner);
 
+	// Start of a frame of render target p_owner, before anything else is recorded in the frame: the
+	// ADAPTIVE lights' quadtrees take the newest completed frame's banding flags (never this frame's).
+	void begin_frame(RID p_owner = RID());
 	// Shares the tiles among the shadowed area lights of this frame and fills the AreaShadowData array
 	// (index = GPU area light index). p_area_sources[i]: index into p_data.lights of GPU area light i
 	// (LightStorage::get_area_light_source_indices()). p_owner: the render target (selects its atlas; sized
@@ -146,6 +180,27 @@ public:
 	// Records the depth passes of the maps listed by prepare() (before the scene passes). p_data must be
 	// the RenderSceneData given to prepare() (the casters point into it).
 	void render_shadows(const RenderSceneData &p_data);
+	// After the camera depth p_depth (p_width x p_height, written with the depth-corrected p_clip_from_view)
+	// is complete: records the reprojection and banding passes of this frame's ADAPTIVE tests, with GPU
+	// timestamps p_timestamp_prefix + "area_reprojection" / "area_banding" when there is work. Returns the
+	// number of quads tested (0 without ADAPTIVE lights: nothing recorded, no shader compiled).
+	uint32_t dispatch_adaptive(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const String &p_timestamp_prefix = String());
+
+	// Shadow maps (sample points) the shader averaged for a light in the last prepare() (any mode; ADAPTIVE:
+	// the drawn points of its tree). p_light: the light RID for scenes built by hand (RenderSceneData
+	// without instances), the instance RID for RenderingServer scenes. 0 if unknown or unshadowed.
+	uint32_t light_get_shadow_map_count(RID p_light) const;
+	// The ADAPTIVE driver of the current atlas (nullptr before its first ADAPTIVE light).
+	const AreaShadowAdaptiveRD *get_adaptive() const { return current ? current->adaptive.get() : nullptr; }
+	// True once any atlas compiled the reprojection shader (an ADAPTIVE light had a quad to test).
+	bool is_reprojection_compiled() const;
+	// Reprojection resolution = camera / p_divisor (1..64) for every atlas, now and later; 0 = the project
+	// setting (rendering/lights_and_shadows/area_shadow_reprojection_divisor).
+	bool set_adaptive_reprojection_divisor(uint32_t p_divisor);
+	// On (default): an ADAPTIVE light whose last full round of tests changed nothing is not tested again
+	// while its camera, light, casters, receivers and atlas stay the same (a static view costs no
+	// reprojection). Off: every frame tests (Algorithm 1 as written; tests of the convergence).
+	void set_adaptive_skip_settled(bool p_enable);
 
 	RID get_data_buffer() const { return data_buffer; }
 	RID get_atlas_texture() const { return current && current->texture.is_valid() ? current->texture : dummy_texture; }

@@ -9,6 +9,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -195,7 +196,26 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 			defines += String("#define ") + names[m] + "\n";
 		}
 	}
+	if (p_area_methods & AREA_VERSION_SHADOWS_PCF) {
+		defines += "#define AREA_SHADOWS_PCF\n";
+	}
+	if (p_area_methods & AREA_VERSION_SHADOWS_PCSS) {
+		defines += "#define AREA_SHADOWS_PCSS\n";
+	}
 	return defines;
+}
+
+uint32_t RenderForwardClustered::_get_area_shadow_version_bits() const {
+	uint32_t bits = 0;
+	const std::vector<AreaShadowRendererRD::AreaShadowData> &data = area_shadows.get_data();
+	const size_t count = std::min(data.size(), size_t(light_storage->get_area_light_count()));
+	for (size_t i = 0; i < count; i++) {
+		if (data[i].map_count == 0) {
+			continue; // Unshadowed (the shader's visibility is 1 without a lookup).
+		}
+		bits |= data[i].mode == uint32_t(RS::LIGHT_AREA_SHADOW_PCSS_BASELINE) ? AREA_VERSION_SHADOWS_PCSS : AREA_VERSION_SHADOWS_PCF;
+	}
+	return bits;
 }
 
 bool RenderForwardClustered::is_scene_shader_variant_compiled(SceneShaderVariant p_variant) const {
@@ -214,21 +234,22 @@ int RenderForwardClustered::get_area_shader_version_count() const {
 }
 
 RID RenderForwardClustered::_get_area_shader(uint32_t p_area_methods) {
-	ERR_FAIL_COND_V_MSG(p_area_methods == 0 || p_area_methods >= (1u << RS::LIGHT_AREA_SHADING_MAX), RID(),
-			vformat("RenderForwardClustered: invalid area shading method mask 0x%x.", p_area_methods));
+	const uint32_t valid_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
+	ERR_FAIL_COND_V_MSG((p_area_methods & AREA_VERSION_METHOD_BITS) == 0 || (p_area_methods & ~valid_bits) != 0, RID(),
+			vformat("RenderForwardClustered: invalid area shader version key 0x%x (shading method mask | shadow bits).", p_area_methods));
 	AreaVersion &av = area_versions[p_area_methods];
 	if (!av.version.is_valid()) {
 		av.version = scene_shader.version_create(get_area_method_defines(p_area_methods));
 	}
 	RID shader = scene_shader.version_get_shader(av.version, SCENE_SHADER_COLOR_AREA);
 	if (shader.is_valid()) {
-		compiled_area_method_mask |= p_area_methods;
+		compiled_area_method_mask |= p_area_methods & AREA_VERSION_METHOD_BITS;
 	}
 	return shader;
 }
 
 RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods) {
-	uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_format) << 16) | (uint64_t(p_area_methods) << 56);
+	uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_area_methods & 0xFFFFu) << 16) | (uint64_t(p_format) << 32);
 	auto it = pipelines.find(key);
 	if (it != pipelines.end()) {
 		return it->second;
@@ -322,6 +343,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RenderTarget *rt = render_target_owner.get_or_null(p_render_target);
 	ERR_FAIL_NULL_MSG(rt, "render_scene: invalid render target RID.");
 	RenderingDevice *rd = RenderingDevice::get_singleton();
+	// ADAPTIVE area shadows: apply the newest completed frame's banding flags before this frame records
+	// anything (the readback then waits for no work of this frame).
+	area_shadows.begin_frame(p_render_target);
 
 	ERR_FAIL_COND_MSG(!cluster_builder.setup(rt->width, rt->height), "render_scene: cluster setup failed.");
 
@@ -375,9 +399,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->buffer_update(scene_ubo, 0, sizeof(ubo), &ubo);
 
 	// Area-light variant only when this view has area lights (a scene without them pays nothing).
-	// The shader version holds the code of exactly the shading methods this view's area lights use.
+	// The shader version holds the code of exactly the shading methods this view's area lights use, and the
+	// area shadow lookups only when some of them have shadow maps this frame.
 	const bool use_area = ubo.area_light_count > 0;
-	const uint32_t area_methods = use_area ? light_storage->get_area_shading_method_mask() : 0u;
+	const uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
 	const SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
 	ERR_FAIL_COND_MSG(!_ensure_scene_sets(area_methods), "render_scene: scene uniform sets could not be created.");
 	RID color_set = use_area ? area_versions[area_methods].scene_set : scene_set_color;
@@ -453,6 +478,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	}
 	rd->draw_list_end();
 	rd->capture_timestamp(prefix + "depth_prepass");
+	// 1b. ADAPTIVE area shadows: reprojection + banding of this frame's quad tests against the pre-pass depth
+	// (timestamps "area_reprojection", "area_banding"; nothing without ADAPTIVE lights).
+	area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
 
 	// 2. Cluster build.
 	cluster_builder.bake_cluster();
@@ -484,9 +512,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const int pass_count = 5;
-	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "cluster_build", "opaque" };
-	int64_t found[pass_count] = { -1, -1, -1, -1, -1 };
+	const int pass_count = 7;
+	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);

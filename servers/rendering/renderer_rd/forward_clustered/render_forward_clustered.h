@@ -13,7 +13,9 @@
 /* then waits for the GPU and keeps the pass timestamps (capture_         */
 /* timestamp) for get_last_frame_profile(): "area_shadows" (the area     */
 /* shadow map passes; only in frames with shadowed area lights, ~0 when   */
-/* no map is redrawn), "depth_prepass",                                   */
+/* no map is redrawn), "depth_prepass", "area_reprojection" and          */
+/* "area_banding" (ADAPTIVE area shadows, only in frames with quad tests, */
+/* recorded after the depth pre-pass whose depth they read),             */
 /* "cluster_build", "opaque" in milliseconds.                             */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
@@ -24,6 +26,10 @@
 /* frame). Each version is compiled on first use, so scenes without area */
 /* lights compile no area code and a method nobody uses is never         */
 /* compiled. The LTC LUT texture is uploaded on the first area frame.     */
+/* The area shadow lookup is part of the version key as well             */
+/* (AREA_SHADOWS_PCF / AREA_SHADOWS_PCSS, from the lights that have maps  */
+/* this frame): views without area shadows carry no shadow code, which   */
+/* llvmpipe would otherwise run for every pixel (it predicates branches). */
 /*                                                                        */
 /* Debug view: RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS / _SPOT_LIGHTS */
 /* (and set_debug_cluster_element_type() for area lights until the RS     */
@@ -139,7 +145,9 @@ private:
 	RID scene_set_color; // Set 0 of the colour variant (invalid after the cluster buffer changes).
 	RID scene_set_depth; // Set 0 of the depth variant.
 	RID scene_set_cluster_buffer; // Cluster buffer scene_set_color was made with.
-	// One scene shader version per set of area shading methods (key: bit m = RS::LightAreaShadingMethod m).
+	// One scene shader version per set of area shading methods and area shadow lookups in use. Key: bit m =
+	// RS::LightAreaShadingMethod m, plus AREA_VERSION_SHADOWS_PCF / _PCSS (a view whose lights cast no area
+	// shadows gets no shadow code: software rasterizers run every branch of a shader, taken or not).
 	struct AreaVersion {
 		RID version; // ShaderRD version with the AREA_METHOD_* defines.
 		RID scene_set; // Set 0 of its SCENE_SHADER_COLOR_AREA variant.
@@ -148,7 +156,7 @@ private:
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
-	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16 | area method mask << 56.
+	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
 	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
@@ -158,10 +166,12 @@ private:
 	uint64_t frame_counter = 0;
 
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
-	// p_area_methods: 0 = no area lights, else the method mask of the view's area lights.
+	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
 	// The SCENE_SHADER_COLOR_AREA shader of the version for p_area_methods (created and compiled on first use).
 	RID _get_area_shader(uint32_t p_area_methods);
+	// AREA_VERSION_SHADOWS_* bits for the area shadow data of this frame (area_shadows.prepare() ran).
+	uint32_t _get_area_shadow_version_bits() const;
 	void _free_render_target(RenderTarget *p_rt);
 	void _read_profile(const String &p_prefix);
 
@@ -199,7 +209,15 @@ public:
 	bool is_area_method_compiled(RS::LightAreaShadingMethod p_method) const { return (compiled_area_method_mask >> uint32_t(p_method)) & 1u; }
 	// Number of area shader versions (method combinations) compiled so far.
 	int get_area_shader_version_count() const;
-	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD.
+	// Bits of an area version key above the method bits: the area shadow lookups compiled in
+	// (area_light_shadow_inc.glsl). PCF: some light of the view has shadow maps in a grid mode (FIXED,
+	// HEURISTIC, ADAPTIVE); PCSS: some light has its PCSS_BASELINE map. Neither: no shadow code at all.
+	static constexpr uint32_t AREA_VERSION_SHADOWS_PCF = 1u << 8;
+	static constexpr uint32_t AREA_VERSION_SHADOWS_PCSS = 1u << 9;
+	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
+	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
+	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
+	// AREA_VERSION_SHADOWS_PCF / _PCSS also "#define AREA_SHADOWS_PCF\n" / "#define AREA_SHADOWS_PCSS\n".
 	static String get_area_method_defines(uint32_t p_area_methods);
 
 	// Area soft shadows (atlas, maps, per-frame draws; one atlas per renderer for now).

@@ -146,6 +146,7 @@ public:
 	uint64_t get_configuration() const { return configuration; }
 
 	void set_max_draws_per_frame(uint32_t p_max) { max_draws_per_frame = p_max; }
+	uint32_t get_max_draws_per_frame() const { return max_draws_per_frame; }
 	void set_max_evictions_per_frame(uint32_t p_max) { max_evictions_per_frame = p_max; }
 	void set_hysteresis(float p_hysteresis) { hysteresis = p_hysteresis < 0.0f ? 0.0f : p_hysteresis; }
 

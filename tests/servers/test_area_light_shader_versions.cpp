@@ -1,0 +1,92 @@
+/**************************************************************************/
+/*  test_area_light_shader_versions.cpp                                   */
+/**************************************************************************/
+/* The area shader version key of RenderForwardClustered: the area shadow */
+/* lookup (AREA_SHADOWS_PCF / _PCSS) is compiled only into versions for   */
+/* views whose area lights have shadow maps, so unshadowed views carry no */
+/* shadow code (llvmpipe runs untaken branches, it cost the opaque pass   */
+/* of the demo about two thirds of its time); the image of an unshadowed  */
+/* light is the same with either version.                                 */
+
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+
+#include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace TestAreaLightShaderVersions {
+
+using namespace RenderTest;
+
+TEST_CASE("[AreaLight3D][Shadows] area shadow defines of the area version key") {
+	const uint32_t ltc = 1u << RS::LIGHT_AREA_SHADING_LTC;
+	CHECK(RenderForwardClustered::get_area_method_defines(ltc) == "#define AREA_METHOD_LTC\n");
+	CHECK(RenderForwardClustered::get_area_method_defines(ltc | RenderForwardClustered::AREA_VERSION_SHADOWS_PCF) == "#define AREA_METHOD_LTC\n#define AREA_SHADOWS_PCF\n");
+	CHECK(RenderForwardClustered::get_area_method_defines(ltc | RenderForwardClustered::AREA_VERSION_SHADOWS_PCSS) == "#define AREA_METHOD_LTC\n#define AREA_SHADOWS_PCSS\n");
+	// The shadow bits lie above every method bit.
+	CHECK((RenderForwardClustered::AREA_VERSION_METHOD_BITS & (RenderForwardClustered::AREA_VERSION_SHADOWS_PCF | RenderForwardClustered::AREA_VERSION_SHADOWS_PCSS)) == 0u);
+}
+
+TEST_CASE("[AreaLight3D][Shadows] the area shadow lookup is compiled only for views with shadowed area lights") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		RenderFixture f;
+		REQUIRE(f.init());
+		const int S = 24;
+		RenderSceneData d = make_scene(camera_looking_down(3.0f), 70.0f, S, S, 20.0f);
+		RS::MaterialParams lambert;
+		lambert.specular = 0.0f;
+		RID mat = f.material(lambert);
+		add_geometry(d, f.plane(4.0f), mat);
+		// A box between the light and the middle of the plane.
+		add_geometry(d, f.mesh(make_box(Vector3(0.3f, 0.3f, 0.3f))), mat, Transform3D(Basis(), Vector3(0, 0.8f, 0)));
+		RID light = f.area_light(Vector2(0.6f, 0.6f), 3.0f, 10.0f, 0.0f);
+		add_light(d, light, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(0, 1.8f, 0)));
+		RID rt = f.renderer.render_target_create(S, S);
+		REQUIRE(rt.is_valid());
+		const ShaderRD &shader = f.renderer.get_scene_shader();
+
+		f.renderer.render_scene(d, rt);
+		std::vector<float> open = f.renderer.render_target_get_data(rt);
+		const uint32_t created_open = shader.get_created_shader_count();
+		CHECK(f.renderer.get_area_shader_version_count() == 1);
+
+		// Shadows on: a second version (with the PCF lookup); the plane around the box gets darker.
+		f.light_storage.light_set_shadow(light, true);
+		f.renderer.render_scene(d, rt);
+		std::vector<float> shadowed = f.renderer.render_target_get_data(rt);
+		CHECK(shader.get_created_shader_count() == created_open + 1);
+		CHECK(f.renderer.get_area_shader_version_count() == 2);
+		CHECK(f.renderer.get_compiled_area_method_mask() == (1u << RS::LIGHT_AREA_SHADING_LTC)); // Method bits only.
+		REQUIRE(open.size() == shadowed.size());
+		double sum_open = 0.0, sum_shadowed = 0.0;
+		for (size_t i = 0; i < open.size(); i += 4) {
+			sum_open += open[i];
+			sum_shadowed += shadowed[i];
+		}
+		MESSAGE("red sum without / with area shadows: ", sum_open, " / ", sum_shadowed);
+		CHECK(sum_open > 1.0);
+		CHECK(sum_shadowed < sum_open * 0.98);
+
+		// Shadows off again: the first version is reused and gives the same image.
+		f.light_storage.light_set_shadow(light, false);
+		f.renderer.render_scene(d, rt);
+		std::vector<float> open_again = f.renderer.render_target_get_data(rt);
+		CHECK(shader.get_created_shader_count() == created_open + 1);
+		REQUIRE(open_again.size() == open.size());
+		int differing = 0;
+		for (size_t i = 0; i < open.size(); i++) {
+			differing += open_again[i] != open[i] ? 1 : 0;
+		}
+		CHECK(differing == 0);
+		f.renderer.render_target_free(rt);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+} // namespace TestAreaLightShaderVersions
