@@ -81,6 +81,17 @@ void Node::remove_child(Node *p_child) {
 	p_child->notification(NOTIFICATION_UNPARENTED);
 }
 
+void Node::move_child(Node *p_child, int p_to_index) {
+	ERR_FAIL_NULL_MSG(p_child, "Cannot move a null child node.");
+	ERR_FAIL_COND_MSG(p_child->parent != this, vformat("Cannot move node \"%s\" within \"%s\": it is not a child of that node.", p_child->name.c_str(), name.c_str()));
+	int count = (int)children.size();
+	int to = p_to_index < 0 ? p_to_index + count : p_to_index;
+	ERR_FAIL_INDEX_MSG(to, count, vformat("Cannot move node \"%s\" to index %d: \"%s\" has %d children.", p_child->name.c_str(), p_to_index, name.c_str(), count));
+	int from = p_child->get_index();
+	children.erase(children.begin() + from);
+	children.insert(children.begin() + to, p_child);
+}
+
 Node *Node::get_child(int p_index) const {
 	int count = (int)children.size();
 	int index = p_index < 0 ? p_index + count : p_index;
@@ -237,6 +248,7 @@ void Node::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_name"), &Node::get_name);
 	ClassDB::bind_method(D_METHOD("add_child", "node"), &Node::add_child);
 	ClassDB::bind_method(D_METHOD("remove_child", "node"), &Node::remove_child);
+	ClassDB::bind_method(D_METHOD("move_child", "child_node", "to_index"), &Node::move_child);
 	ClassDB::bind_method(D_METHOD("get_child_count"), &Node::get_child_count);
 	ClassDB::bind_method(D_METHOD("get_child", "idx"), &Node::get_child);
 	ClassDB::bind_method(D_METHOD("get_parent"), &Node::get_parent);

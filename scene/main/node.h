@@ -65,6 +65,8 @@ public:
 	void add_child(Node *p_child);
 	// Gives ownership back to the caller (sends EXIT_TREE first when inside the tree).
 	void remove_child(Node *p_child);
+	// Moves p_child to position p_to_index among its siblings (negative counts from the end).
+	void move_child(Node *p_child, int p_to_index);
 	int get_child_count() const { return (int)children.size(); }
 	// Negative indices count from the end (-1 = last), as in Godot. Out of range: error, nullptr.
 	Node *get_child(int p_index) const;

@@ -85,6 +85,9 @@ void PrimitiveMesh::_update() const {
 
 void PrimitiveMesh::_request_update() {
 	dirty = true;
+	if (rid_in_use) {
+		_update();
+	}
 	emit_changed();
 }
 
@@ -123,6 +126,7 @@ RS::SurfaceData PrimitiveMesh::surface_get_arrays(int p_surface) const {
 }
 
 RID PrimitiveMesh::get_rid() const {
+	rid_in_use = true;
 	_update();
 	return mesh;
 }

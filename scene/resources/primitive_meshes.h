@@ -21,6 +21,9 @@ class PrimitiveMesh : public Mesh {
 	Ref<Material> material;
 	bool flip_faces = false;
 	mutable bool dirty = true;
+	// Set once the RID was handed out (a MeshInstance3D draws it): later changes rebuild at once,
+	// since this engine has no deferred-call queue to rebuild it before the next frame.
+	mutable bool rid_in_use = false;
 	mutable RS::SurfaceData arrays;
 
 	void _update() const;

@@ -323,6 +323,24 @@ bool RenderingDevice::is_initialized() const {
 	return impl->initialized;
 }
 
+static std::vector<String> pending_instance_extensions;
+static std::vector<String> pending_device_extensions;
+
+void RenderingDevice::set_extra_extensions(const std::vector<String> &p_instance_extensions, const std::vector<String> &p_device_extensions) {
+	pending_instance_extensions = p_instance_extensions;
+	pending_device_extensions = p_device_extensions;
+}
+
+RenderingDevice::VulkanHandles RenderingDevice::get_vulkan_handles() const {
+	VulkanHandles h;
+	h.instance = (void *)impl->instance;
+	h.physical_device = (void *)impl->physical_device;
+	h.device = (void *)impl->device;
+	h.queue = (void *)impl->queue;
+	h.queue_family = impl->queue_family;
+	return h;
+}
+
 bool RenderingDevice::initialize(String *r_error) {
 	Impl *s = impl;
 	ERR_FAIL_COND_V_MSG(s->initialized, true, "RenderingDevice is already initialized.");
@@ -348,6 +366,10 @@ bool RenderingDevice::initialize(String *r_error) {
 		WARN_PRINT("GODOT_AREA_VALIDATION=1 but VK_LAYER_KHRONOS_validation is not installed (look in /usr/share/vulkan/explicit_layer.d/); continuing without validation.");
 	}
 	bool use_validation = want_validation && have_validation;
+	s->extra_instance_extensions = pending_instance_extensions;
+	s->extra_device_extensions = pending_device_extensions;
+	pending_instance_extensions.clear();
+	pending_device_extensions.clear();
 	{
 		uint32_t count = 0;
 		vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
@@ -356,6 +378,14 @@ bool RenderingDevice::initialize(String *r_error) {
 		for (const VkExtensionProperties &e : exts) {
 			if (strcmp(e.extensionName, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0) {
 				s->has_debug_utils = true;
+			}
+		}
+		for (const String &wanted : s->extra_instance_extensions) {
+			bool found = std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties &e) { return wanted == e.extensionName; });
+			if (!found) {
+				err = vformat("The Vulkan instance extension '%s' (needed to present to a window) is not available.", wanted.c_str());
+				ERR_PRINT(err);
+				return false;
 			}
 		}
 	}
@@ -371,6 +401,9 @@ bool RenderingDevice::initialize(String *r_error) {
 	std::vector<const char *> ext_names;
 	if (s->has_debug_utils) {
 		ext_names.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+	}
+	for (const String &e : s->extra_instance_extensions) {
+		ext_names.push_back(e.c_str());
 	}
 	VkInstanceCreateInfo ici = { VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO };
 	ici.pApplicationInfo = &app;
@@ -514,6 +547,19 @@ bool RenderingDevice::initialize(String *r_error) {
 				has_driver_props = true;
 			}
 		}
+		for (const String &wanted : s->extra_device_extensions) {
+			bool found = std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties &e) { return wanted == e.extensionName; });
+			if (!found) {
+				err = vformat("The Vulkan device extension '%s' (needed to present to a window) is not available on '%s'.", wanted.c_str(), s->properties.deviceName);
+				ERR_PRINT(err);
+				finalize();
+				return false;
+			}
+		}
+	}
+	std::vector<const char *> device_ext_names;
+	for (const String &e : s->extra_device_extensions) {
+		device_ext_names.push_back(e.c_str());
 	}
 
 	float priority = 1.0f;
@@ -525,6 +571,8 @@ bool RenderingDevice::initialize(String *r_error) {
 	dci.queueCreateInfoCount = 1;
 	dci.pQueueCreateInfos = &qci;
 	dci.pEnabledFeatures = &s->enabled_features;
+	dci.enabledExtensionCount = (uint32_t)device_ext_names.size();
+	dci.ppEnabledExtensionNames = device_ext_names.data();
 	res = vkCreateDevice(s->physical_device, &dci, nullptr, &s->device);
 	if (res != VK_SUCCESS) {
 		err = vformat("vkCreateDevice failed (VkResult %d) on '%s'.", res, s->properties.deviceName);

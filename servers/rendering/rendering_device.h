@@ -527,6 +527,22 @@ public:
 
 	// Chooses a device (discrete > integrated > virtual > CPU; GODOT_AREA_DEVICE overrides).
 	bool initialize(String *r_error = nullptr);
+
+	// Window presentation (the editor, editor/editor_node.h): extra Vulkan instance and device
+	// extensions that the next initialize() enables, e.g. VK_KHR_surface + VK_KHR_xlib_surface and
+	// VK_KHR_swapchain. initialize() fails with a message naming any the driver lacks. Empty by
+	// default (headless); the list is used once and then cleared.
+	static void set_extra_extensions(const std::vector<String> &p_instance_extensions, const std::vector<String> &p_device_extensions);
+	// Raw handles (VkInstance, VkPhysicalDevice, VkDevice, VkQueue) for a presenter that shares this
+	// device and its queue from the same thread; null before initialize().
+	struct VulkanHandles {
+		void *instance = nullptr;
+		void *physical_device = nullptr;
+		void *device = nullptr;
+		void *queue = nullptr;
+		uint32_t queue_family = 0;
+	};
+	VulkanHandles get_vulkan_handles() const;
 	// Waits for idle, destroys everything; RIDs not freed by the user are reported as leaks.
 	void finalize();
 	bool is_initialized() const;

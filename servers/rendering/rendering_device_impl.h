@@ -161,6 +161,8 @@ struct RenderingDevice::Impl {
 	VkFence fence = VK_NULL_HANDLE;
 	VkQueryPool query_pool = VK_NULL_HANDLE;
 	bool has_debug_utils = false;
+	std::vector<String> extra_instance_extensions; // From set_extra_extensions() (presentation).
+	std::vector<String> extra_device_extensions;
 	PFN_vkSetDebugUtilsObjectNameEXT set_object_name = nullptr;
 	PFN_vkCmdBeginDebugUtilsLabelEXT cmd_begin_label = nullptr;
 	PFN_vkCmdEndDebugUtilsLabelEXT cmd_end_label = nullptr;

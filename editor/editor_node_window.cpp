@@ -1,0 +1,583 @@
+/**************************************************************************/
+/*  editor_node_window.cpp                                                */
+/**************************************************************************/
+/* godot-area: EditorNode::run(), the editor window's main loop (see      */
+/* editor_node.h). Input: GLFW callbacks queue mouse and key events with  */
+/* the cursor position at the time of the event, so a fast synthetic     */
+/* press-move-release (xdotool) is replayed in order even when a frame    */
+/* takes seconds (lavapipe renders on the CPU). The 3D viewport gets the  */
+/* events inside its rectangle; ImGui gets everything through its own     */
+/* GLFW backend.                                                          */
+
+#include "editor/editor_node.h"
+
+#ifdef GODOT_AREA_EDITOR_WINDOW
+
+#include "core/error/error_macros.h"
+#include "core/object/undo_redo.h"
+#include "drivers/glfw/display_server_glfw.h"
+#include "drivers/png/png_writer.h"
+#include "drivers/vulkan/swap_chain_vk.h"
+#include "editor/editor_inspector.h"
+#include "editor/editor_properties.h"
+#include "editor/plugins/node_3d_editor_plugin.h"
+#include "editor/scene_tree_dock.h"
+#include "editor/scene_tree_editor.h"
+#include "main/main.h"
+#include "scene/3d/node_3d.h"
+#include "scene/main/node.h"
+#include "scene/main/scene_tree.h"
+#include "scene/resources/resource_format_text.h"
+#include "servers/rendering/rendering_device.h"
+
+#define GLFW_INCLUDE_NONE
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include <cstdio>
+#include <vector>
+
+namespace {
+
+struct InputEvent {
+	enum Type {
+		MOUSE_BUTTON,
+		MOUSE_MOTION,
+		SCROLL,
+		KEY,
+	};
+	Type type = MOUSE_MOTION;
+	int button = 0; // GLFW mouse button or key.
+	int action = 0;
+	int mods = 0;
+	double x = 0, y = 0; // Window pixels (scroll: offsets).
+};
+
+std::vector<InputEvent> input_queue;
+double cursor_x = 0, cursor_y = 0;
+
+void _on_cursor(GLFWwindow *p_window, double p_x, double p_y) {
+	cursor_x = p_x;
+	cursor_y = p_y;
+	input_queue.push_back({ InputEvent::MOUSE_MOTION, 0, 0, 0, p_x, p_y });
+}
+
+void _on_mouse_button(GLFWwindow *p_window, int p_button, int p_action, int p_mods) {
+	input_queue.push_back({ InputEvent::MOUSE_BUTTON, p_button, p_action, p_mods, cursor_x, cursor_y });
+}
+
+void _on_scroll(GLFWwindow *p_window, double p_dx, double p_dy) {
+	input_queue.push_back({ InputEvent::SCROLL, 0, 0, 0, cursor_x, p_dy });
+}
+
+void _on_key(GLFWwindow *p_window, int p_key, int p_scancode, int p_action, int p_mods) {
+	input_queue.push_back({ InputEvent::KEY, p_key, p_action, p_mods, cursor_x, cursor_y });
+}
+
+void _check_vk(VkResult p_result) {
+	if (p_result != VK_SUCCESS) {
+		ERR_PRINT(vformat("Dear ImGui's Vulkan backend: VkResult %d.", p_result));
+	}
+}
+
+// p_node's path relative to p_root ("." for the root itself), as --select takes it.
+String _path_in_scene(const Node *p_root, const Node *p_node) {
+	if (p_node == p_root) {
+		return ".";
+	}
+	String path;
+	for (const Node *n = p_node; n && n != p_root; n = n->get_parent()) {
+		path = path.empty() ? String(n->get_name()) : String(n->get_name()) + "/" + path;
+	}
+	return path;
+}
+
+class EditorSession {
+public:
+	EditorNode::Options options;
+	FILE *log = nullptr;
+	SceneTree *tree = nullptr;
+	Node *scene = nullptr;
+	UndoRedo undo_redo;
+	SceneTreeDock dock;
+	SceneTreeEditor tree_editor;
+	EditorInspector inspector;
+	Node3DEditorViewport viewport;
+	Node *shown_selection = nullptr;
+	uint64_t seen_undo_version = 0;
+	uint64_t seen_dock_version = 0;
+	int screenshot_count = 0;
+	String status_message;
+	bool quit = false;
+	bool viewport_hovered = false;
+	bool window_captured = false;
+	bool window_capture_requested = false; // F11.
+	bool viewport_pressed[3] = { false, false, false };
+
+	void log_line(const String &p_text) {
+		if (log) {
+			fprintf(log, "%s\n", p_text.c_str());
+			fflush(log);
+		}
+	}
+
+	void log_handles() {
+		for (const Node3DEditorViewport::HandleInfo &h : viewport.get_handles()) {
+			log_line(vformat("handle %d %s %.1f %.1f", h.id, h.name.c_str(), h.position.x + EditorNode::SCENE_PANEL_WIDTH, h.position.y));
+		}
+	}
+
+	void log_state(const char *p_reason) {
+		Node *sel = dock.get_selected();
+		if (sel) {
+			bool valid = false;
+			Variant size = sel->get("area_size", &valid);
+			if (valid) {
+				log_line(vformat("property %s area_size %s (%s)", String(sel->get_name()).c_str(), size.stringify().c_str(), p_reason));
+			}
+		}
+	}
+
+	void sync_selection() {
+		Node *sel = dock.get_selected();
+		if (sel != shown_selection) {
+			shown_selection = sel;
+			viewport.set_selected(sel);
+			inspector.edit(sel);
+			log_line(vformat("select %s", sel ? _path_in_scene(scene, sel).c_str() : "<none>"));
+			log_handles();
+			log_state("select");
+		}
+	}
+
+	void undo(bool p_redo) {
+		viewport.cancel_drag();
+		String name = p_redo ? String() : undo_redo.get_current_action_name();
+		bool ok = p_redo ? undo_redo.redo() : undo_redo.undo();
+		if (p_redo && ok) {
+			name = undo_redo.get_current_action_name();
+		}
+		status_message = ok ? vformat("%s: %s", p_redo ? "Redo" : "Undo", name.c_str()) : String(p_redo ? "Nothing to redo" : "Nothing to undo");
+		log_line(vformat("%s %s %s", p_redo ? "redo" : "undo", ok ? "ok" : "none", name.c_str()));
+		viewport.mark_scene_changed();
+		log_state(p_redo ? "redo" : "undo");
+	}
+
+	void save() {
+		String error;
+		if (ResourceFormatText::save_scene(scene, options.save_path, &error)) {
+			status_message = "Saved " + options.save_path;
+			log_line("save ok " + options.save_path);
+		} else {
+			status_message = "Save failed: " + error;
+			log_line("save error " + error);
+		}
+	}
+
+	void screenshot() {
+		String path = vformat("%s_%d.png", options.screenshot_prefix.empty() ? "editor_viewport" : options.screenshot_prefix.c_str(), screenshot_count++);
+		String error;
+		if (viewport.save_screenshot(path, &error)) {
+			status_message = "Wrote " + path;
+			log_line("screenshot " + path);
+		} else {
+			status_message = "Screenshot failed: " + error;
+			log_line("screenshot error " + error);
+		}
+	}
+
+	void handle_key(const InputEvent &p_e) {
+		if (p_e.action != GLFW_PRESS) {
+			return;
+		}
+		const bool ctrl = p_e.mods & GLFW_MOD_CONTROL;
+		const bool shift = p_e.mods & GLFW_MOD_SHIFT;
+		if (ImGui::GetIO().WantTextInput && p_e.button != GLFW_KEY_F12) {
+			return; // Typing in a field.
+		}
+		if (ctrl && p_e.button == GLFW_KEY_Z) {
+			undo(shift);
+		} else if (ctrl && p_e.button == GLFW_KEY_Y) {
+			undo(true);
+		} else if (ctrl && p_e.button == GLFW_KEY_S) {
+			save();
+		} else if (ctrl && p_e.button == GLFW_KEY_Q) {
+			quit = true;
+		} else if (p_e.button == GLFW_KEY_F11) {
+			window_capture_requested = true;
+		} else if (p_e.button == GLFW_KEY_F12) {
+			viewport.update();
+			screenshot();
+		} else if (p_e.button == GLFW_KEY_ESCAPE) {
+			viewport.cancel_drag();
+		}
+	}
+
+	static bool _popup_open() {
+		return ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+	}
+
+	void handle_mouse(const InputEvent &p_e) {
+		Vector2 local((real_t)p_e.x - EditorNode::SCENE_PANEL_WIDTH, (real_t)p_e.y);
+		bool inside = local.x >= 0 && local.y >= 0 && local.x < EditorNode::VIEWPORT_WIDTH && local.y < EditorNode::VIEWPORT_HEIGHT;
+		if (p_e.type == InputEvent::MOUSE_MOTION) {
+			viewport.mouse_motion(local);
+		} else if (p_e.type == InputEvent::SCROLL) {
+			if (inside && !_popup_open()) {
+				viewport.zoom((real_t)p_e.y);
+			}
+		} else if (p_e.type == InputEvent::MOUSE_BUTTON) {
+			int b = p_e.button == GLFW_MOUSE_BUTTON_LEFT ? Node3DEditorViewport::MOUSE_BUTTON_LEFT : (p_e.button == GLFW_MOUSE_BUTTON_RIGHT ? Node3DEditorViewport::MOUSE_BUTTON_RIGHT : (p_e.button == GLFW_MOUSE_BUTTON_MIDDLE ? Node3DEditorViewport::MOUSE_BUTTON_MIDDLE : -1));
+			if (b < 0) {
+				return;
+			}
+			if (p_e.action == GLFW_PRESS) {
+				if (!inside || _popup_open()) {
+					return; // A combo or menu over the viewport takes the click.
+				}
+				viewport_pressed[b] = true;
+				if (viewport.mouse_button(b, true, local, p_e.mods & GLFW_MOD_SHIFT)) {
+					dock.select(viewport.get_selected());
+				}
+			} else if (viewport_pressed[b]) {
+				viewport_pressed[b] = false;
+				bool was_dragging = viewport.is_dragging_handle();
+				if (viewport.mouse_button(b, false, local, p_e.mods & GLFW_MOD_SHIFT)) {
+					dock.select(viewport.get_selected());
+				}
+				if (was_dragging) {
+					log_state("drag_end");
+					log_handles();
+				}
+			}
+		}
+	}
+
+	void draw_inspector() {
+		inspector.refresh();
+		if (!inspector.get_edited_object()) {
+			ImGui::TextDisabled("Select a node.");
+			return;
+		}
+		Node *node = Object::cast_to<Node>(inspector.get_edited_object());
+		ImGui::Text("%s  (%s)", node ? String(node->get_name()).c_str() : "", inspector.get_edited_object()->get_class().c_str());
+		ImGui::Separator();
+		ImGui::BeginChild("rows");
+		String group;
+		bool group_open = true;
+		for (int i = 0; i < inspector.get_row_count(); i++) {
+			const EditorPropertyRow &row = inspector.get_row(i);
+			if (row.group != group) {
+				group = row.group;
+				group_open = group.empty() || ImGui::CollapsingHeader(group.c_str(), ImGuiTreeNodeFlags_DefaultOpen);
+			}
+			if (!group_open) {
+				continue;
+			}
+			if (!row.subgroup.empty() && (i == 0 || inspector.get_row(i - 1).subgroup != row.subgroup)) {
+				ImGui::TextDisabled("%s", row.subgroup.c_str());
+			}
+			Variant value = inspector.get_row_value(i);
+			Variant new_value;
+			EditorProperties::Result r = EditorProperties::draw_row(row, value, new_value);
+			if (r.changed) {
+				if (!inspector.set_row_value(i, new_value, r.active)) {
+					status_message = inspector.get_last_error();
+				}
+				viewport.mark_scene_changed();
+			}
+			if (r.deactivated) {
+				inspector.end_merge();
+			}
+		}
+		ImGui::EndChild();
+	}
+
+	void draw_status() {
+		double total = 0;
+		String passes;
+		for (const auto &p : viewport.get_profile()) {
+			passes += vformat("  %s %.2f", p.first.c_str(), p.second);
+			total += p.second;
+		}
+		ImGui::Text("GPU %.2f ms:%s   |  %s", total, passes.c_str(), status_message.c_str());
+	}
+
+	void draw_output() {
+		ImGui::Text("GPU time per pass (last frame, ms):");
+		double total = 0;
+		for (const auto &p : viewport.get_profile()) {
+			ImGui::BulletText("%-16s %9.3f", p.first.c_str(), p.second);
+			total += p.second;
+		}
+		ImGui::BulletText("%-16s %9.3f", "total", total);
+		ImGui::Separator();
+		ImGui::TextDisabled("Viewport: right/middle drag orbits, Shift+drag pans, wheel zooms;");
+		ImGui::TextDisabled("click a light to select it, drag its handles. Ctrl+Z / Ctrl+Shift+Z,");
+		ImGui::TextDisabled("Ctrl+S saves %s, F12 writes a screenshot.", options.save_path.c_str());
+		ImGui::Text("Undo history: %d action(s), at %d: %s", undo_redo.get_history_count(), undo_redo.get_current_action(), undo_redo.get_current_action_name().c_str());
+	}
+
+	void draw_panels() {
+		const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+		const float W = EditorNode::WINDOW_WIDTH, H = EditorNode::WINDOW_HEIGHT;
+		const float left = EditorNode::SCENE_PANEL_WIDTH, vw = EditorNode::VIEWPORT_WIDTH, vh = EditorNode::VIEWPORT_HEIGHT, sh = EditorNode::STATUS_HEIGHT;
+		ImGui::SetNextWindowPos(ImVec2(0, 0));
+		ImGui::SetNextWindowSize(ImVec2(left, H - sh));
+		ImGui::Begin("Scene", nullptr, fixed);
+		tree_editor.draw();
+		ImGui::End();
+
+		ImGui::SetNextWindowPos(ImVec2(left, 0));
+		ImGui::SetNextWindowSize(ImVec2(vw, vh));
+		ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+		ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+		ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoBringToFrontOnFocus);
+		// The engine's frame is copied under this window; the button only takes the mouse.
+		ImGui::InvisibleButton("##viewport", ImVec2(vw, vh), ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+		viewport_hovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
+		ImGui::SetCursorPos(ImVec2(6, 4));
+		ImGui::TextColored(ImVec4(1, 1, 1, 0.8f), "Perspective  %s", viewport.is_dragging_handle() ? "(dragging: lighting updates on release)" : "");
+		ImGui::End();
+		ImGui::PopStyleVar(2);
+
+		ImGui::SetNextWindowPos(ImVec2(left, vh));
+		ImGui::SetNextWindowSize(ImVec2(vw, H - sh - vh));
+		ImGui::Begin("Output", nullptr, fixed);
+		draw_output();
+		ImGui::End();
+
+		ImGui::SetNextWindowPos(ImVec2(left + vw, 0));
+		ImGui::SetNextWindowSize(ImVec2(W - left - vw, H - sh));
+		ImGui::Begin("Inspector", nullptr, fixed);
+		draw_inspector();
+		ImGui::End();
+
+		ImGui::SetNextWindowPos(ImVec2(0, H - sh));
+		ImGui::SetNextWindowSize(ImVec2(W, sh));
+		ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6, 4));
+		ImGui::Begin("Status", nullptr, fixed | ImGuiWindowFlags_NoDecoration);
+		draw_status();
+		ImGui::End();
+		ImGui::PopStyleVar();
+	}
+};
+
+} // namespace
+
+int EditorNode::run(const Options &p_options) {
+	EditorSession s;
+	s.options = p_options;
+	if (!p_options.test_log.empty()) {
+		s.log = fopen(p_options.test_log.c_str(), "w");
+		if (!s.log) {
+			fprintf(stderr, "godot-area editor: cannot write the test log '%s'\n", p_options.test_log.c_str());
+			return 2;
+		}
+	}
+	String error;
+	DisplayServerGLFW display;
+	if (!display.initialize(&error)) {
+		fprintf(stderr, "godot-area editor: %s\n", error.c_str());
+		s.log_line("exit error " + error);
+		return 1;
+	}
+	RenderingDevice::set_extra_extensions(display.get_required_instance_extensions(), { VK_KHR_SWAPCHAIN_EXTENSION_NAME });
+	if (!Main::setup(Main::BACKEND_RD, &error)) {
+		fprintf(stderr, "godot-area editor: %s\n", error.c_str());
+		s.log_line("exit error " + error);
+		return 1;
+	}
+	int code = 0;
+	{
+		SceneTree tree;
+		s.tree = &tree;
+		s.scene = Main::load_scene(p_options.scene_path, &error);
+		if (!s.scene) {
+			fprintf(stderr, "godot-area editor: cannot load scene '%s': %s\n", p_options.scene_path.empty() ? "<embedded demo>" : p_options.scene_path.c_str(), error.c_str());
+			code = 2;
+		}
+		SwapChainVK swap_chain;
+		VkDescriptorPool pool = VK_NULL_HANDLE;
+		RenderingDevice::VulkanHandles vk = RenderingDevice::get_singleton()->get_vulkan_handles();
+		if (!code) {
+			tree.get_root()->add_child(s.scene);
+			s.dock.set_undo_redo(&s.undo_redo);
+			s.dock.set_edited_scene(s.scene);
+			s.inspector.set_undo_redo(&s.undo_redo);
+			s.tree_editor.set_dock(&s.dock);
+			s.viewport.set_event_callback([&s](const String &p_text) { s.log_line(p_text); });
+			s.viewport.setup(&tree, s.scene, VIEWPORT_WIDTH, VIEWPORT_HEIGHT, &s.undo_redo);
+			if (!p_options.select_path.empty()) {
+				Node *n = s.scene->get_node_or_null(p_options.select_path);
+				if (!n) {
+					fprintf(stderr, "godot-area editor: --select: the scene has no node '%s'\n", p_options.select_path.c_str());
+					code = 2;
+				} else {
+					s.dock.select(n);
+				}
+			}
+		}
+		if (!code && !display.create_window("godot-area editor - " + (p_options.scene_path.empty() ? String("demo") : p_options.scene_path), WINDOW_WIDTH, WINDOW_HEIGHT, &error)) {
+			fprintf(stderr, "godot-area editor: %s\n", error.c_str());
+			code = 1;
+		}
+		if (!code) {
+			VkSurfaceKHR surface = display.create_surface((VkInstance)vk.instance, &error);
+			if (!surface || !swap_chain.create(vk, surface, WINDOW_WIDTH, WINDOW_HEIGHT, &error)) {
+				fprintf(stderr, "godot-area editor: %s\n", error.c_str());
+				code = 1;
+			}
+		}
+		if (!code) {
+			VkDescriptorPoolSize size = { VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16 };
+			VkDescriptorPoolCreateInfo dpci = { VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO };
+			dpci.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+			dpci.maxSets = 16;
+			dpci.poolSizeCount = 1;
+			dpci.pPoolSizes = &size;
+			vkCreateDescriptorPool((VkDevice)vk.device, &dpci, nullptr, &pool);
+			GLFWwindow *window = display.get_window();
+			// Ours first: ImGui's backend chains to the callbacks installed before it.
+			glfwSetCursorPosCallback(window, _on_cursor);
+			glfwSetMouseButtonCallback(window, _on_mouse_button);
+			glfwSetScrollCallback(window, _on_scroll);
+			glfwSetKeyCallback(window, _on_key);
+			IMGUI_CHECKVERSION();
+			ImGui::CreateContext();
+			ImGui::GetIO().IniFilename = nullptr; // Fixed layout, nothing written next to the scene.
+			ImGui::StyleColorsDark();
+			ImGui_ImplGlfw_InitForVulkan(window, true);
+			ImGui_ImplVulkan_InitInfo info = {};
+			info.Instance = (VkInstance)vk.instance;
+			info.PhysicalDevice = (VkPhysicalDevice)vk.physical_device;
+			info.Device = (VkDevice)vk.device;
+			info.QueueFamily = vk.queue_family;
+			info.Queue = (VkQueue)vk.queue;
+			info.DescriptorPool = pool;
+			info.MinImageCount = swap_chain.get_min_image_count();
+			info.ImageCount = swap_chain.get_image_count();
+			info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+			info.CheckVkResultFn = _check_vk;
+			ImGui_ImplVulkan_Init(&info, swap_chain.get_render_pass());
+
+			// Upload the font atlas in a first (blank) frame: ImGui needs it before NewFrame().
+			bool fonts_uploaded = false, fonts_pending = false, ready = false;
+			for (int attempt = 0; attempt < 10 && !fonts_uploaded; attempt++) {
+				VkCommandBuffer cb = swap_chain.begin_frame(Color(0.1f, 0.1f, 0.12f, 1.0f));
+				if (cb) {
+					fonts_uploaded = ImGui_ImplVulkan_CreateFontsTexture(cb);
+					fonts_pending = true;
+					swap_chain.end_frame();
+				}
+			}
+			if (!fonts_uploaded) {
+				fprintf(stderr, "godot-area editor: could not upload the UI font.\n");
+				s.quit = true;
+				code = 1;
+			}
+			while (!display.should_close() && !s.quit) {
+				// Idle: wait for input instead of spinning (the window only changes on events).
+				if (ready && input_queue.empty()) {
+					glfwWaitEventsTimeout(0.25);
+				} else {
+					display.poll_events();
+				}
+				std::vector<InputEvent> events;
+				events.swap(input_queue);
+				ImGui_ImplVulkan_NewFrame();
+				ImGui_ImplGlfw_NewFrame();
+				ImGui::NewFrame();
+				for (const InputEvent &e : events) {
+					if (e.type == InputEvent::KEY) {
+						s.handle_key(e);
+					} else {
+						s.handle_mouse(e);
+					}
+				}
+				s.sync_selection();
+				if (s.undo_redo.get_version() != s.seen_undo_version || s.dock.get_version() != s.seen_dock_version) {
+					s.seen_undo_version = s.undo_redo.get_version();
+					s.seen_dock_version = s.dock.get_version();
+					s.viewport.mark_scene_changed();
+				}
+				s.draw_panels();
+				s.sync_selection();
+				s.viewport.update();
+				ImGui::Render();
+				VkCommandBuffer cb = swap_chain.begin_frame(Color(0.1f, 0.1f, 0.12f, 1.0f));
+				if (fonts_pending) {
+					ImGui_ImplVulkan_DestroyFontUploadObjects(); // The upload frame has finished.
+					fonts_pending = false;
+				}
+				if (!cb) {
+					continue;
+				}
+				const std::vector<uint8_t> &pixels = s.viewport.get_rgba8();
+				if (!pixels.empty()) {
+					swap_chain.copy_rgba8(pixels.data(), VIEWPORT_WIDTH, VIEWPORT_HEIGHT, SCENE_PANEL_WIDTH, 0);
+				}
+				swap_chain.begin_render_pass();
+				ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cb);
+				bool capture = (!p_options.window_screenshot.empty() && ready && !s.window_captured) || s.window_capture_requested;
+				const String window_path = p_options.window_screenshot.empty() ? String("editor_window.png") : p_options.window_screenshot;
+				if (capture) {
+					s.window_captured = true;
+					s.window_capture_requested = false;
+					capture = swap_chain.capture_next_frame();
+				}
+				swap_chain.end_frame();
+				if (capture && !swap_chain.get_capture().empty()) {
+					String err;
+					if (PNGWriter::save_rgba8(swap_chain.get_capture(), swap_chain.get_width(), swap_chain.get_height(), window_path, &err)) {
+						s.status_message = "Wrote " + window_path;
+						s.log_line("window_screenshot " + window_path);
+					} else {
+						s.log_line("window_screenshot error " + err);
+					}
+				}
+				if (!ready && !pixels.empty()) {
+					// Two frames presented with the rendered viewport: the layout has settled.
+					ready = s.viewport.get_frames_rendered() > 0 && fonts_uploaded && !fonts_pending;
+					if (ready) {
+						s.log_line(vformat("ready viewport %d %d %d %d window %d %d", SCENE_PANEL_WIDTH, 0, VIEWPORT_WIDTH, VIEWPORT_HEIGHT, WINDOW_WIDTH, WINDOW_HEIGHT));
+						s.log_handles();
+					}
+				}
+			}
+			swap_chain.wait_idle();
+			ImGui_ImplVulkan_Shutdown();
+			ImGui_ImplGlfw_Shutdown();
+			ImGui::DestroyContext();
+		}
+		s.viewport.clear();
+		swap_chain.destroy();
+		if (pool) {
+			vkDestroyDescriptorPool((VkDevice)vk.device, pool, nullptr);
+		}
+		s.dock.set_edited_scene(nullptr);
+		s.inspector.edit(nullptr);
+		s.undo_redo.clear_history(); // Frees nodes that only the history held.
+		if (s.scene && !s.scene->get_parent()) {
+			delete s.scene; // Never added to the tree; otherwise the tree deletes it.
+		}
+		s.scene = nullptr;
+	}
+	int validation_errors = Main::get_validation_error_count();
+	if (validation_errors > 0) {
+		fprintf(stderr, "godot-area: the Vulkan validation layer reported %d error(s) (see above)\n", validation_errors);
+		code = code ? code : 1;
+	}
+	Main::cleanup();
+	display.finalize();
+	s.log_line(vformat("exit %d validation_errors %d", code, validation_errors));
+	if (s.log) {
+		fclose(s.log);
+	}
+	return code;
+}
+
+#endif // GODOT_AREA_EDITOR_WINDOW

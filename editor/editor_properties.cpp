@@ -1,0 +1,213 @@
+/**************************************************************************/
+/*  editor_properties.cpp                                                 */
+/**************************************************************************/
+/* godot-area: see editor_properties.h.                                   */
+
+#include "editor/editor_properties.h"
+
+#ifdef GODOT_AREA_EDITOR_WINDOW
+
+#include "core/math/color.h"
+#include "core/math/math_funcs.h"
+#include "core/math/transform_3d.h"
+#include "core/math/vector2.h"
+#include "core/math/vector3.h"
+#include "editor/editor_inspector.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+namespace {
+
+// "%.3f m" style display format for a row.
+std::string _float_format(const EditorPropertyRow &p_row) {
+	int decimals = 3;
+	if (p_row.has_range && p_row.range_step > 0) {
+		decimals = 0;
+		double s = p_row.range_step;
+		while (decimals < 6 && std::fabs(s - std::round(s)) > 1e-9) {
+			s *= 10;
+			decimals++;
+		}
+	}
+	std::string f = "%." + std::to_string(decimals) + "f";
+	if (!p_row.suffix.empty()) {
+		f += " " + p_row.suffix;
+	}
+	return f;
+}
+
+float _drag_speed(const EditorPropertyRow &p_row) {
+	if (p_row.has_range && p_row.range_step > 0) {
+		return (float)p_row.range_step;
+	}
+	return 0.01f;
+}
+
+// Drag bounds: the range, opened where or_greater / or_less allow it (0, 0 = unbounded for ImGui).
+void _drag_bounds(const EditorPropertyRow &p_row, float &r_min, float &r_max) {
+	r_min = 0.0f;
+	r_max = 0.0f;
+	if (!p_row.has_range) {
+		return;
+	}
+	r_min = p_row.or_less ? -FLT_MAX : (float)p_row.range_min;
+	r_max = p_row.or_greater ? FLT_MAX : (float)p_row.range_max;
+}
+
+void _track(EditorProperties::Result &r_result, bool p_changed) {
+	r_result.changed = r_result.changed || p_changed;
+	r_result.active = r_result.active || ImGui::IsItemActive();
+	r_result.deactivated = r_result.deactivated || ImGui::IsItemDeactivated();
+}
+
+} // namespace
+
+EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value) {
+	Result result;
+	ImGui::PushID(p_row.property.c_str());
+	ImGui::AlignTextToFramePadding();
+	ImGui::TextUnformatted(p_row.label.c_str());
+	if (ImGui::IsItemHovered()) {
+		ImGui::SetTooltip("%s (%s)", p_row.property.c_str(), Variant::get_type_name(p_row.type).c_str());
+	}
+	ImGui::SameLine(ImGui::GetWindowContentRegionWidth() * 0.42f);
+	ImGui::SetNextItemWidth(-1);
+	if (p_row.read_only) {
+		ImGui::BeginDisabled();
+	}
+	// "radians_as_degrees" (or "radians"): stored in radians, shown and ranged in degrees.
+	const float scale = p_row.hint == PROPERTY_HINT_RANGE && p_row.hint_string.find("radians") != String::npos ? (float)(180.0 / Math::PI) : 1.0f;
+	const bool is_enum = (p_row.hint == PROPERTY_HINT_ENUM || p_row.hint == PROPERTY_HINT_ENUM_SUGGESTION) && !p_row.enum_options.empty();
+	switch (p_row.type) {
+		case Variant::BOOL: {
+			bool v = p_value.to_bool();
+			_track(result, ImGui::Checkbox("##v", &v));
+			r_value = v;
+		} break;
+		case Variant::INT: {
+			int64_t current = p_value.to_int();
+			if (is_enum) {
+				int index = -1;
+				for (size_t i = 0; i < p_row.enum_values.size(); i++) {
+					if (p_row.enum_values[i] == current) {
+						index = (int)i;
+					}
+				}
+				const char *preview = index >= 0 ? p_row.enum_options[index].c_str() : "?";
+				if (ImGui::BeginCombo("##v", preview)) {
+					for (size_t i = 0; i < p_row.enum_options.size(); i++) {
+						if (ImGui::Selectable(p_row.enum_options[i].c_str(), (int)i == index)) {
+							r_value = (int64_t)p_row.enum_values[i];
+							result.changed = p_row.enum_values[i] != current;
+						}
+					}
+					ImGui::EndCombo();
+				}
+			} else if (p_row.hint == PROPERTY_HINT_FLAGS && !p_row.enum_options.empty()) {
+				int64_t flags = current;
+				for (size_t i = 0; i < p_row.enum_options.size(); i++) {
+					bool on = (flags & p_row.enum_values[i]) != 0;
+					if (ImGui::Checkbox(p_row.enum_options[i].c_str(), &on)) {
+						flags = on ? (flags | p_row.enum_values[i]) : (flags & ~p_row.enum_values[i]);
+						result.changed = true;
+					}
+				}
+				r_value = flags;
+			} else {
+				int v = (int)current;
+				if (p_row.has_range && !p_row.or_greater && !p_row.or_less) {
+					_track(result, ImGui::SliderInt("##v", &v, (int)p_row.range_min, (int)p_row.range_max));
+				} else {
+					float lo, hi;
+					_drag_bounds(p_row, lo, hi);
+					_track(result, ImGui::DragInt("##v", &v, 0.2f, lo <= -FLT_MAX ? INT32_MIN : (int)lo, hi >= FLT_MAX ? INT32_MAX : (int)hi));
+				}
+				r_value = (int64_t)v;
+			}
+		} break;
+		case Variant::FLOAT: {
+			float v = (float)p_value.to_float() * scale;
+			std::string fmt = _float_format(p_row);
+			ImGuiSliderFlags flags = p_row.exp ? ImGuiSliderFlags_Logarithmic : 0;
+			if (p_row.has_range && !p_row.or_greater && !p_row.or_less) {
+				_track(result, ImGui::SliderFloat("##v", &v, (float)p_row.range_min, (float)p_row.range_max, fmt.c_str(), flags));
+			} else {
+				float lo, hi;
+				_drag_bounds(p_row, lo, hi);
+				_track(result, ImGui::DragFloat("##v", &v, _drag_speed(p_row), lo, hi, fmt.c_str(), flags));
+			}
+			r_value = (double)(v / scale);
+		} break;
+		case Variant::STRING: {
+			std::string s = p_value.to_string();
+			if (is_enum) {
+				if (ImGui::BeginCombo("##v", s.c_str())) {
+					for (const String &option : p_row.enum_options) {
+						if (ImGui::Selectable(option.c_str(), option == s)) {
+							r_value = option;
+							result.changed = option != s;
+						}
+					}
+					ImGui::EndCombo();
+				}
+			} else if (ImGui::InputText("##v", &s, ImGuiInputTextFlags_EnterReturnsTrue)) {
+				r_value = String(s);
+				result.changed = true;
+			}
+		} break;
+		case Variant::VECTOR2: {
+			Vector2 v = p_value;
+			float f[2] = { (float)v.x * scale, (float)v.y * scale };
+			float lo, hi;
+			_drag_bounds(p_row, lo, hi);
+			_track(result, ImGui::DragFloat2("##v", f, _drag_speed(p_row), lo, hi, _float_format(p_row).c_str()));
+			r_value = Vector2(f[0] / scale, f[1] / scale);
+		} break;
+		case Variant::VECTOR3: {
+			Vector3 v = p_value;
+			float f[3] = { (float)v.x * scale, (float)v.y * scale, (float)v.z * scale };
+			float lo, hi;
+			_drag_bounds(p_row, lo, hi);
+			_track(result, ImGui::DragFloat3("##v", f, _drag_speed(p_row), lo, hi, _float_format(p_row).c_str()));
+			r_value = Vector3(f[0] / scale, f[1] / scale, f[2] / scale);
+		} break;
+		case Variant::COLOR: {
+			Color c = p_value;
+			float f[4] = { c.r, c.g, c.b, c.a };
+			_track(result, ImGui::ColorEdit4("##v", f, ImGuiColorEditFlags_Float));
+			r_value = Color(f[0], f[1], f[2], f[3]);
+		} break;
+		case Variant::TRANSFORM3D: {
+			// The origin is edited; the basis is shown (edit rotations with a gizmo or in the file).
+			Transform3D t = p_value;
+			float f[3] = { (float)t.origin.x, (float)t.origin.y, (float)t.origin.z };
+			_track(result, ImGui::DragFloat3("##origin", f, 0.01f, 0.0f, 0.0f, "%.3f m"));
+			t.origin = Vector3(f[0], f[1], f[2]);
+			r_value = t;
+			Vector3 s = t.basis.get_scale();
+			ImGui::TextDisabled("scale %.3g %.3g %.3g (basis not editable here)", s.x, s.y, s.z);
+		} break;
+		default: {
+			ImGui::TextDisabled("%s", p_value.get_type() == Variant::NIL ? "<null>" : Variant::get_type_name(p_value.get_type()).c_str());
+		} break;
+	}
+	if (p_row.read_only) {
+		ImGui::EndDisabled();
+		result.changed = false;
+	}
+	ImGui::PopID();
+	return result;
+}
+
+#else
+
+EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value) {
+	return Result();
+}
+
+#endif

@@ -1,0 +1,31 @@
+/**************************************************************************/
+/*  editor_properties.h                                                   */
+/**************************************************************************/
+/* godot-area: the inspector's property widgets (Godot: EditorProperty*   */
+/* in editor_properties.cpp), drawn with Dear ImGui from an               */
+/* EditorPropertyRow of the headless inspector model (editor_inspector.h) */
+/* so no widget knows any particular property:                            */
+/*   bool -> checkbox; int/float with a range hint -> slider (or drag     */
+/*   when or_greater/or_less), exp ranges logarithmic; enums -> combo;    */
+/*   flags -> checkboxes; String -> text field (enum suggestions ->       */
+/*   combo); Vector2/3 -> drag fields; Color -> colour editor;            */
+/*   Transform3D -> origin and rotation (degrees) fields. Read-only rows  */
+/*   are drawn disabled.                                                  */
+/* Only built with Dear ImGui (GODOT_AREA_EDITOR_WINDOW).                 */
+
+#pragma once
+
+#include "core/variant/variant.h"
+
+struct EditorPropertyRow;
+
+class EditorProperties {
+public:
+	struct Result {
+		bool changed = false; // r_value holds a new value.
+		bool active = false; // The widget is being dragged (merge edits into one undo action).
+		bool deactivated = false; // A drag just ended.
+	};
+	// Draws p_row's widget (label on the left) for p_value; a change is returned in r_value.
+	static Result draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value);
+};

@@ -1,0 +1,432 @@
+/**************************************************************************/
+/*  test_editor_window.cpp                                                */
+/**************************************************************************/
+/* godot-area: the editor window (`godot-area editor`, editor/editor_node */
+/* .h) driven like a user would, under a virtual X server: the test       */
+/* starts Xvfb itself, opens a copy of the demo scene with the Vulkan     */
+/* validation layer on, clicks and drags the area light's width handle    */
+/* with xdotool, takes viewport screenshots (F12), undoes, redoes, saves  */
+/* (Ctrl+S), quits, then loads the saved file back and compares it with   */
+/* the original property by property. The editor's --test-log reports    */
+/* each event, so the test waits for events instead of sleeping.          */
+
+#include "core/error/error_macros.h"
+#include "core/math/vector2.h"
+#include "drivers/png/png_reader.h"
+#include "editor/editor_node.h"
+#include "scene/main/node.h"
+#include "scene/resources/resource_format_text.h"
+#include "tests/scene/scene_test_fixture.h"
+
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <thread>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+namespace TestEditorWindow {
+
+bool _has_program(const char *p_name) {
+	String cmd = String("command -v ") + p_name + " > /dev/null 2>&1";
+	return std::system(cmd.c_str()) == 0;
+}
+
+// Starts p_args[0] (searched in PATH) with extra environment entries; returns the pid or -1.
+pid_t _spawn(const std::vector<String> &p_args, const std::vector<String> &p_env, const String &p_output) {
+	std::vector<String> env;
+	for (char **e = environ; *e; e++) {
+		String entry = *e;
+		bool replaced = false;
+		for (const String &x : p_env) {
+			if (entry.substr(0, entry.find('=') + 1) == x.substr(0, x.find('=') + 1)) {
+				replaced = true;
+			}
+		}
+		if (!replaced) {
+			env.push_back(entry);
+		}
+	}
+	env.insert(env.end(), p_env.begin(), p_env.end());
+	std::vector<char *> argv, envp;
+	for (const String &a : p_args) {
+		argv.push_back(const_cast<char *>(a.c_str()));
+	}
+	argv.push_back(nullptr);
+	for (const String &e : env) {
+		envp.push_back(const_cast<char *>(e.c_str()));
+	}
+	envp.push_back(nullptr);
+	posix_spawn_file_actions_t actions;
+	posix_spawn_file_actions_init(&actions);
+	posix_spawn_file_actions_addopen(&actions, 1, p_output.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+	posix_spawn_file_actions_adddup2(&actions, 1, 2);
+	pid_t pid = -1;
+	int rc = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+	posix_spawn_file_actions_destroy(&actions);
+	return rc == 0 ? pid : -1;
+}
+
+String _read_file(const String &p_path) {
+	std::ifstream f(p_path);
+	std::stringstream ss;
+	ss << f.rdbuf();
+	return ss.str();
+}
+
+std::vector<String> _lines(const String &p_path) {
+	std::vector<String> out;
+	std::ifstream f(p_path);
+	String line;
+	while (std::getline(f, line)) {
+		out.push_back(line);
+	}
+	return out;
+}
+
+struct EditorProcess {
+	String dir;
+	String log;
+	String output;
+	String display;
+	pid_t xvfb = -1;
+	pid_t editor = -1;
+	int exit_code = -1;
+
+	bool alive() {
+		if (editor < 0) {
+			return false;
+		}
+		int status = 0;
+		pid_t r = waitpid(editor, &status, WNOHANG);
+		if (r == editor) {
+			exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+			editor = -1;
+			return false;
+		}
+		return true;
+	}
+
+	// Waits (generously: lavapipe with validation is slow on 2 cores) for a log line starting with
+	// p_prefix after line p_from; returns its index or -1. Not a timing assertion.
+	int wait_line(const String &p_prefix, size_t p_from = 0, int p_timeout_s = 600) {
+		auto start = std::chrono::steady_clock::now();
+		while (std::chrono::steady_clock::now() - start < std::chrono::seconds(p_timeout_s)) {
+			std::vector<String> lines = _lines(log);
+			for (size_t i = p_from; i < lines.size(); i++) {
+				if (lines[i].compare(0, p_prefix.size(), p_prefix) == 0) {
+					return (int)i;
+				}
+			}
+			if (!alive()) {
+				lines = _lines(log);
+				for (size_t i = p_from; i < lines.size(); i++) {
+					if (lines[i].compare(0, p_prefix.size(), p_prefix) == 0) {
+						return (int)i;
+					}
+				}
+				return -1;
+			}
+			std::this_thread::sleep_for(std::chrono::milliseconds(100));
+		}
+		return -1;
+	}
+
+	String line(int p_index) {
+		std::vector<String> lines = _lines(log);
+		return p_index >= 0 && p_index < (int)lines.size() ? lines[p_index] : String();
+	}
+	size_t line_count() { return _lines(log).size(); }
+
+	bool xdotool(const String &p_args) {
+		String cmd = "DISPLAY=" + display + " xdotool " + p_args + " >> '" + output + "' 2>&1";
+		return std::system(cmd.c_str()) == 0;
+	}
+
+	~EditorProcess() {
+		if (editor > 0) {
+			kill(editor, SIGTERM);
+			waitpid(editor, nullptr, 0);
+		}
+		if (xvfb > 0) {
+			kill(xvfb, SIGTERM);
+			waitpid(xvfb, nullptr, 0);
+		}
+	}
+};
+
+// "property TVPanel area_size (1.6, 0.9) (reason)" -> (1.6, 0.9).
+bool _parse_area_size(const String &p_line, Vector2 &r_size) {
+	size_t p = p_line.find("area_size (");
+	if (p == String::npos) {
+		return false;
+	}
+	return sscanf(p_line.c_str() + p, "area_size (%f, %f)", &r_size.x, &r_size.y) == 2;
+}
+
+// "handle 0 Width 512.3 170.0" -> (512.3, 170.0).
+bool _parse_handle(const String &p_line, int p_id, Vector2 &r_pos) {
+	int id = -1;
+	char name[64] = {};
+	float x = 0, y = 0;
+	if (sscanf(p_line.c_str(), "handle %d %63s %f %f", &id, name, &x, &y) != 4 || id != p_id) {
+		return false;
+	}
+	r_pos = Vector2(x, y);
+	return true;
+}
+
+// Gizmo outline pixels: the selected TV panel's outline is its light colour at full brightness,
+// (0.75, 0.85, 1) -> blue-white and much bluer than the warm, dim room around it.
+bool _is_outline(const std::vector<uint8_t> &p_rgba, int p_w, int p_x, int p_y) {
+	const uint8_t *p = &p_rgba[(size_t(p_y) * p_w + p_x) * 4];
+	return p[2] >= 150 && p[2] >= p[0] + 15 && p[1] >= 120;
+}
+
+// Columns within +-p_range of p_x where rows [p_y0, p_y1] are mostly outline-coloured.
+int _outline_column_near(const std::vector<uint8_t> &p_rgba, int p_w, int p_h, int p_x, int p_y0, int p_y1, int p_range) {
+	int best = -1, best_count = 0;
+	for (int x = std::max(0, p_x - p_range); x <= std::min(p_w - 1, p_x + p_range); x++) {
+		int count = 0;
+		for (int y = std::max(0, p_y0); y <= std::min(p_h - 1, p_y1); y++) {
+			count += _is_outline(p_rgba, p_w, x, y) ? 1 : 0;
+		}
+		if (count > best_count) {
+			best_count = count;
+			best = x;
+		}
+	}
+	return best_count >= (p_y1 - p_y0 + 1) / 2 ? best : -1;
+}
+
+// Every stored property of p_a and p_b is equal (resources compared the same way, recursively),
+// except p_override_property of the node named p_override_node, which must equal p_override_value.
+void _check_same_object(const Object *p_a, const Object *p_b, const String &p_where, const String &p_override_node, const String &p_override_property, const Variant &p_override_value, int p_depth = 0) {
+	REQUIRE(p_a);
+	REQUIRE(p_b);
+	CHECK_MESSAGE(p_a->get_class() == p_b->get_class(), p_where);
+	const Node *node = Object::cast_to<Node>(p_a);
+	std::vector<PropertyInfo> list;
+	p_a->get_property_list(&list);
+	for (const PropertyInfo &pi : list) {
+		if (pi.is_group_marker() || !(pi.usage & PROPERTY_USAGE_STORAGE)) {
+			continue;
+		}
+		Variant va = p_a->get(pi.name), vb = p_b->get(pi.name);
+		const String where = p_where + "." + pi.name;
+		if (pi.type == Variant::OBJECT) {
+			CHECK_MESSAGE((va.get_object() == nullptr) == (vb.get_object() == nullptr), where);
+			if (va.get_object() && vb.get_object() && p_depth < 4) {
+				_check_same_object(va.get_object(), vb.get_object(), where, p_override_node, p_override_property, p_override_value, p_depth + 1);
+			}
+			continue;
+		}
+		if (node && node->get_name() == p_override_node && pi.name == p_override_property) {
+			va = p_override_value;
+		}
+		bool same = va == vb;
+		if (!same && va.get_type() == Variant::VECTOR2 && vb.get_type() == Variant::VECTOR2) {
+			same = Vector2(va).is_equal_approx(Vector2(vb));
+		}
+		CHECK_MESSAGE(same, where << ": " << va.stringify() << " vs saved " << vb.stringify());
+	}
+	if (node) {
+		const Node *node_b = Object::cast_to<Node>(p_b);
+		REQUIRE(node_b);
+		CHECK(node->get_name() == node_b->get_name());
+		REQUIRE(node->get_child_count() == node_b->get_child_count());
+		for (int i = 0; i < node->get_child_count(); i++) {
+			_check_same_object(node->get_child(i), node_b->get_child(i), p_where + "/" + node->get_child(i)->get_name(), p_override_node, p_override_property, p_override_value);
+		}
+	}
+}
+
+TEST_CASE("[Editor] editor command line: options, defaults and errors") {
+	EditorNode::Options o;
+	String error;
+	CHECK(EditorNode::parse_options({ "scene.tscn", "--select", "A/B", "--test-log", "log.txt", "--screenshot", "s" }, o, &error));
+	CHECK(o.scene_path == "scene.tscn");
+	CHECK(o.select_path == "A/B");
+	CHECK(o.test_log == "log.txt");
+	CHECK(o.screenshot_prefix == "s");
+	CHECK(o.save_path == "scene.tscn"); // Ctrl+S writes the opened file by default.
+	EditorNode::Options demo;
+	CHECK(EditorNode::parse_options({}, demo, &error));
+	CHECK(demo.save_path == "demo_edited.tscn"); // Never the embedded demo's source.
+	EditorNode::Options bad;
+	CHECK_FALSE(EditorNode::parse_options({ "--bogus" }, bad, &error));
+	CHECK(error.find("--bogus") != String::npos);
+	CHECK_FALSE(EditorNode::parse_options({ "--select" }, bad, &error));
+	CHECK_FALSE(EditorNode::parse_options({ "a.tscn", "b.tscn" }, bad, &error));
+	CHECK(EditorNode::command({ "--bogus" }) == 2);
+}
+
+TEST_CASE("[Editor][Window] under Xvfb: select the area light, drag its width handle, undo, redo, save, reload") {
+	if (!_has_program("Xvfb") || !_has_program("xdotool")) {
+		MESSAGE("SKIPPED: the editor window test needs Xvfb and xdotool (Debian: xvfb, xdotool; misc/scripts/install_deps.sh)");
+		return;
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	EditorProcess p;
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_window_" + std::to_string(getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	p.dir = dir.string();
+	p.log = (dir / "events.log").string();
+	p.output = (dir / "output.txt").string();
+	const String scene = (dir / "scene.tscn").string();
+	const String original = String(GODOT_AREA_ROOT) + "/demo/demo.tscn";
+	std::filesystem::copy_file(original, scene);
+
+	// A free display number.
+	int display = 90 + int(getpid() % 400);
+	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
+		display++;
+	}
+	p.display = ":" + std::to_string(display);
+	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
+	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
+	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+
+	const String shot = (dir / "shot").string();
+	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--select", "TVPanel", "--test-log", p.log, "--screenshot", shot },
+			{ "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
+	REQUIRE(p.editor > 0);
+	int ready = p.wait_line("ready");
+	REQUIRE_MESSAGE(ready >= 0, "the editor did not start; its output:\n" << _read_file(p.output) << "\nlog:\n" << _read_file(p.log));
+	REQUIRE(p.wait_line("select TVPanel") >= 0);
+
+	// Handle positions (window pixels) as the editor reports them.
+	Vector2 width_handle, height_handle;
+	bool have_w = false, have_h = false;
+	for (size_t i = 0; i < p.line_count(); i++) {
+		have_w = _parse_handle(p.line(i), 0, width_handle) || have_w;
+		have_h = _parse_handle(p.line(i), 1, height_handle) || have_h;
+	}
+	REQUIRE(have_w);
+	REQUIRE(have_h);
+	Vector2 original_size;
+	REQUIRE(_parse_area_size(p.line(p.wait_line("property TVPanel area_size")), original_size));
+	CHECK(original_size.is_equal_approx(Vector2(1.6f, 0.9f)));
+
+	// Screenshot before the drag.
+	const int hx = (int)std::lround(width_handle.x), hy = (int)std::lround(width_handle.y);
+	REQUIRE(p.xdotool(vformat("mousemove %d %d", hx, hy)));
+	std::this_thread::sleep_for(std::chrono::milliseconds(300));
+	size_t mark = p.line_count();
+	REQUIRE(p.xdotool("key F12"));
+	REQUIRE(p.wait_line("screenshot " + shot + "_0.png", mark) >= 0);
+
+	// Drag the width handle outwards (away from the height handle, which sits above the centre).
+	const int outward = width_handle.x > height_handle.x ? 1 : -1;
+	const int drag_px = 50;
+	mark = p.line_count();
+	REQUIRE(p.xdotool("mousedown 1"));
+	REQUIRE_MESSAGE(p.wait_line("drag_start handle=0", mark) >= 0, _read_file(p.log));
+	REQUIRE(p.xdotool(vformat("mousemove %d %d", hx + outward * drag_px / 2, hy)));
+	std::this_thread::sleep_for(std::chrono::milliseconds(200));
+	REQUIRE(p.xdotool(vformat("mousemove %d %d", hx + outward * drag_px, hy)));
+	std::this_thread::sleep_for(std::chrono::milliseconds(200));
+	REQUIRE(p.xdotool("mouseup 1"));
+	int drag_end = p.wait_line("drag_end handle=0", mark);
+	REQUIRE_MESSAGE(drag_end >= 0, _read_file(p.log));
+	int end = p.wait_line("property TVPanel area_size", drag_end);
+	REQUIRE_MESSAGE(end >= 0, _read_file(p.log));
+	Vector2 dragged_size;
+	REQUIRE(_parse_area_size(p.line(end), dragged_size));
+	CHECK_MESSAGE(dragged_size.x > original_size.x + 0.1f, "area_size after the drag: " << dragged_size.x << ", " << dragged_size.y);
+	CHECK(std::fabs(dragged_size.y - original_size.y) < 1e-4f);
+	Vector2 new_handle;
+	bool have_new = false;
+	for (size_t i = end; i < p.line_count(); i++) {
+		have_new = _parse_handle(p.line(i), 0, new_handle) || have_new;
+	}
+	REQUIRE(have_new);
+	CHECK(std::fabs(new_handle.x - (hx + outward * drag_px)) < 3.0f); // The handle follows the mouse.
+
+	// Screenshot after: the outline's vertical edge moved from the old handle column to the new one.
+	mark = p.line_count();
+	REQUIRE(p.xdotool("mousemove 5 590")); // Off the viewport, so nothing hovers it.
+	REQUIRE(p.xdotool("key F12"));
+	REQUIRE(p.wait_line("screenshot " + shot + "_1.png", mark) >= 0);
+	std::vector<uint8_t> before, after;
+	int w0 = 0, h0 = 0, w1 = 0, h1 = 0;
+	String error;
+	REQUIRE_MESSAGE(PNGReader::load(shot + "_0.png", before, w0, h0, &error), error);
+	REQUIRE_MESSAGE(PNGReader::load(shot + "_1.png", after, w1, h1, &error), error);
+	REQUIRE(w0 == w1);
+	REQUIRE(h0 == h1);
+	// Viewport pixels: the viewport starts at the scene panel's right edge (x = 240).
+	const int vx = 240;
+	const int old_col = hx - vx, new_col = (int)std::lround(new_handle.x) - vx, row = hy;
+	// Rows on the edge away from the handle square (7 px) but inside the light's half-height.
+	const int y0 = row + 5, y1 = row + 10;
+	int col_before = _outline_column_near(before, w0, h0, old_col, y0, y1, 3);
+	int col_after_old = _outline_column_near(after, w1, h1, old_col, y0, y1, 3);
+	int col_after_new = _outline_column_near(after, w1, h1, new_col, y0, y1, 3);
+	CHECK_MESSAGE(col_before >= 0, "no outline edge at x=" << old_col << " before the drag");
+	CHECK_MESSAGE(col_after_old < 0, "the outline edge is still at x=" << old_col << " after the drag");
+	CHECK_MESSAGE(col_after_new >= 0, "no outline edge at x=" << new_col << " after the drag");
+
+	// Undo restores the size, redo applies the drag again, then save and quit.
+	mark = p.line_count();
+	REQUIRE(p.xdotool("mousemove 500 150"));
+	REQUIRE(p.xdotool("key ctrl+z"));
+	int undo_ok = p.wait_line("undo ok", mark);
+	REQUIRE_MESSAGE(undo_ok >= 0, _read_file(p.log));
+	int undo = p.wait_line("property TVPanel area_size", undo_ok);
+	REQUIRE_MESSAGE(undo >= 0, _read_file(p.log));
+	Vector2 undone_size;
+	REQUIRE(_parse_area_size(p.line(undo), undone_size));
+	CHECK(undone_size.is_equal_approx(original_size));
+	mark = p.line_count();
+	REQUIRE(p.xdotool("key ctrl+shift+z"));
+	int redo_ok = p.wait_line("redo ok", mark);
+	REQUIRE_MESSAGE(redo_ok >= 0, _read_file(p.log));
+	int redo = p.wait_line("property TVPanel area_size", redo_ok);
+	REQUIRE_MESSAGE(redo >= 0, _read_file(p.log));
+	Vector2 redone_size;
+	REQUIRE(_parse_area_size(p.line(redo), redone_size));
+	CHECK(redone_size.is_equal_approx(dragged_size));
+	mark = p.line_count();
+	REQUIRE(p.xdotool("key ctrl+s"));
+	REQUIRE_MESSAGE(p.wait_line("save ok", mark) >= 0, _read_file(p.log));
+	REQUIRE(p.xdotool("key ctrl+q"));
+	int exit_line = p.wait_line("exit ", mark);
+	REQUIRE(exit_line >= 0);
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+	for (int i = 0; i < 600 && p.alive(); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(100));
+	}
+	CHECK(p.exit_code == 0);
+
+	// The saved scene loads back equal to the original, but for the dragged width.
+	{
+		SceneTest::DummyServer server;
+		Node *a = ResourceFormatText::load_scene(original, &error);
+		REQUIRE_MESSAGE(a, error);
+		Node *b = ResourceFormatText::load_scene(scene, &error);
+		REQUIRE_MESSAGE(b, error);
+		_check_same_object(a, b, ".", "TVPanel", "area_size", Variant(dragged_size));
+		delete a;
+		delete b;
+	}
+	std::filesystem::remove_all(dir);
+}
+
+} // namespace TestEditorWindow
