@@ -13,6 +13,7 @@
 /*                   [--spp N] [--error E] [--shadows on|off] [--seed S]  */
 /* godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH]     */
 /* godot-area info                                                        */
+/* godot-area editor [SCENE.tscn] [options]   (editor/editor_node.h)       */
 /* Without SCENE the embedded demo scene (demo/demo.tscn) is used.        */
 /* Exit codes: 0 success, 1 runtime failure, 2 bad arguments or files.    */
 
@@ -22,6 +23,7 @@
 #include "core/io/image.h"
 #include "core/io/tonemap.h"
 #include "drivers/png/png_writer.h"
+#include "editor/editor_node.h"
 #include "editor/gizmo_overlay.h"
 #include "main/demo_scene.gen.h"
 #include "core/config/project_settings.h"
@@ -129,6 +131,7 @@ void _print_usage() {
 			"                       [--seed S] [--png P] [--progress]\n"
 			"  godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--polynomial [--glsl PATH]]\n"
 			"  godot-area info\n"
+			"  godot-area editor [SCENE.tscn] [--select NODE_PATH] [--save-as PATH] [--test-log FILE] [--screenshot PREFIX]\n"
 			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
 			"GODOT_AREA_VALIDATION=1 enables the validation layer. --setting name=value overrides a project setting\n"
 			"(e.g. rendering/lights_and_shadows/area_light_error_budget=0.02).\n");
@@ -447,6 +450,10 @@ int Main::run(int p_argc, char **p_argv) {
 	}
 	p_argc = int(argv_rest.size());
 	p_argv = argv_rest.data();
+	if (p_argc >= 2 && String(p_argv[1]) == "editor") {
+		// The editor window (editor/editor_node.h) has its own options and sets up its own servers.
+		return EditorNode::command(std::vector<String>(p_argv + 2, p_argv + p_argc));
+	}
 	if (p_argc >= 2 && String(p_argv[1]) == "ltc-fit") {
 		// The LTC LUT fitter has its own options (modules/ltc_fit/ltc_fit_command.h).
 		return ltc_fit_command(std::vector<String>(p_argv + 2, p_argv + p_argc));
