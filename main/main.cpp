@@ -29,6 +29,7 @@
 #include "core/config/project_settings.h"
 #include "modules/accuracy/accuracy_command.h"
 #include "modules/benchmark/methods_sweep_command.h"
+#include "modules/benchmark/dolly_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
 #include "modules/gltf/register_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
@@ -124,7 +125,7 @@ void _print_usage() {
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
-			"  godot-area bench --sweep methods|shadows [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
+			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
@@ -466,7 +467,7 @@ int Main::run(int p_argc, char **p_argv) {
 		}
 		auto sweep = std::find(rest.begin(), rest.end(), String("--sweep"));
 		if (sweep != rest.end()) {
-			// bench --sweep methods|shadows: benchmark sweeps with their own servers (modules/benchmark).
+			// bench --sweep methods|shadows|dolly: benchmark sweeps with their own servers (modules/benchmark).
 			String what = (sweep + 1) != rest.end() ? *(sweep + 1) : String();
 			std::vector<String> sweep_args;
 			for (auto it = rest.begin(); it != rest.end(); ++it) {
@@ -481,7 +482,10 @@ int Main::run(int p_argc, char **p_argv) {
 			if (what == "shadows") {
 				return shadows_sweep_command(sweep_args);
 			}
-			fprintf(stderr, "godot-area bench: --sweep needs 'methods' or 'shadows', got '%s'\n", what.c_str());
+			if (what == "dolly") {
+				return dolly_sweep_command(sweep_args);
+			}
+			fprintf(stderr, "godot-area bench: --sweep needs 'methods', 'shadows' or 'dolly', got '%s'\n", what.c_str());
 			return 2;
 		}
 	}

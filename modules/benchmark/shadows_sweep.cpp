@@ -6,6 +6,7 @@
 #include "modules/benchmark/shadows_sweep.h"
 
 #include "core/math/math_funcs.h"
+#include "modules/benchmark/penumbra_scene.h"
 #include "modules/reference/reference_renderer.h"
 #include "servers/rendering/dummy/storage/light_storage.h"
 #include "servers/rendering/dummy/storage/material_storage.h"
@@ -21,119 +22,10 @@
 
 namespace {
 
-const Vector2 LIGHT_SIZE(1.6f, 1.6f);
-const float LIGHT_HEIGHT = 1.5f;
-const float BOX_HALF = 0.25f;
-const Vector3 BOX_CENTER(0.0f, 0.55f, 0.0f);
-
-RS::SurfaceData make_plane(float p_half) {
-	RS::SurfaceData s;
-	s.vertices = { Vector3(-p_half, 0, -p_half), Vector3(p_half, 0, -p_half), Vector3(p_half, 0, p_half), Vector3(-p_half, 0, p_half) };
-	s.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-	s.indices = { 0, 1, 2, 0, 2, 3 };
-	return s;
-}
-
-RS::SurfaceData make_box(const Vector3 &p_center, float p_half) {
-	RS::SurfaceData s;
-	for (int axis = 0; axis < 3; axis++) {
-		for (int sign = -1; sign <= 1; sign += 2) {
-			Vector3 n;
-			n[axis] = float(sign);
-			Vector3 u, v;
-			u[(axis + 1) % 3] = p_half;
-			v[(axis + 2) % 3] = p_half;
-			Vector3 c = p_center + n * p_half;
-			uint32_t base = uint32_t(s.vertices.size());
-			Vector3 corners[4] = { c - u - v, c + u - v, c + u + v, c - u + v };
-			for (int i = 0; i < 4; i++) {
-				s.vertices.push_back(corners[i]);
-				s.normals.push_back(n);
-			}
-			s.indices.insert(s.indices.end(), { base, base + 2, base + 1, base, base + 3, base + 2 }); // Clockwise front faces.
-		}
-	}
-	return s;
-}
-
-RS::MaterialParams lambert() {
-	RS::MaterialParams mp;
-	mp.albedo = Color(0.8f, 0.8f, 0.8f, 1.0f);
-	mp.specular = 0.0f;
-	mp.specular_mode = RS::MATERIAL_SPECULAR_DISABLED;
-	mp.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
-	mp.roughness = 1.0f;
-	mp.cull_back = false;
-	return mp;
-}
-
-Transform3D light_transform() {
-	return Transform3D(Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f), Vector3(0, LIGHT_HEIGHT, 0));
-}
-
-RenderSceneData make_scene(int p_res) {
-	RenderSceneData d;
-	d.cam_transform = Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0.3f, 3.2f, 0.2f));
-	d.z_near = 0.05f;
-	d.z_far = 20.0f;
-	d.fovy_degrees = 60.0f;
-	d.cam_projection = Projection::create_perspective(60.0f, 1.0f, d.z_near, d.z_far);
-	d.viewport_width = p_res;
-	d.viewport_height = p_res;
-	d.environment.has_environment = true;
-	d.environment.background = RS::ENV_BG_COLOR;
-	d.environment.bg_color = Color(0, 0, 0, 1);
-	return d;
-}
-
-template <typename LS, typename MS, typename MatS>
-struct SceneObjects {
-	RID plane, box, mat, light;
-	void create(LS &p_ls, MS &p_ms, MatS &p_mats, RenderSceneData &r_scene) {
-		plane = p_ms.mesh_create();
-		p_ms.mesh_add_surface(plane, make_plane(4.0f));
-		box = p_ms.mesh_create();
-		p_ms.mesh_add_surface(box, make_box(BOX_CENTER, BOX_HALF));
-		mat = p_mats.material_create();
-		p_mats.material_set_params(mat, lambert());
-		light = p_ls.light_create(RS::LIGHT_AREA);
-		p_ls.light_area_set_size(light, LIGHT_SIZE);
-		p_ls.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);
-		p_ls.light_set_param(light, RS::LIGHT_PARAM_RANGE, 20.0f);
-		p_ls.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
-		RenderSceneData::GeometryInstance g;
-		g.mesh = plane;
-		g.material_override = mat;
-		r_scene.geometry.push_back(g);
-		g.mesh = box;
-		r_scene.geometry.push_back(g);
-		RenderSceneData::LightInstance li;
-		li.light = light;
-		li.type = RS::LIGHT_AREA;
-		li.transform = light_transform();
-		r_scene.lights.push_back(li);
-	}
-	void free(LS &p_ls, MS &p_ms, MatS &p_mats) {
-		p_ls.light_free(light);
-		p_ms.mesh_free(plane);
-		p_ms.mesh_free(box);
-		p_mats.material_free(mat);
-	}
-};
-
-double visibility_rmse(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed) {
-	double sum = 0.0;
-	int n = 0;
-	for (size_t i = 0; i + 3 < p_open.size() && i + 3 < p_ref_open.size(); i += 4) {
-		if (p_open[i] <= 1e-3f || p_ref_open[i] <= 1e-3f) {
-			continue;
-		}
-		double v = std::min(std::max(double(p_shadowed[i] / p_open[i]), 0.0), 1.5);
-		double vr = std::min(std::max(double(p_ref_shadowed[i] / p_ref_open[i]), 0.0), 1.5);
-		sum += (v - vr) * (v - vr);
-		n++;
-	}
-	return n > 0 ? std::sqrt(sum / n) : 1.0;
+double visibility_rmse(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, int p_res) {
+	double rmse = 1.0;
+	PenumbraScene::visibility_error(p_open, p_shadowed, p_res, p_ref_open, p_ref_shadowed, p_res, p_res, 1, rmse);
+	return rmse;
 }
 
 double shadow_pass_ms(const RenderForwardClustered &p_renderer) {
@@ -178,9 +70,11 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 		options.target_relative_error = p_options.reference_error;
 		options.max_samples = 4096;
 		ReferenceRenderer ref(&ls, &ms, &mats, options);
-		RenderSceneData d = make_scene(res);
-		SceneObjects<RendererDummy::LightStorage, RendererDummy::MeshStorage, RendererDummy::MaterialStorage> objects;
-		objects.create(ls, ms, mats, d);
+		RenderSceneData d = PenumbraScene::make_top_view(res);
+		PenumbraScene objects;
+		if (!objects.create(&ls, &ms, &mats, d)) {
+			return fail("the reference scene could not be created.");
+		}
 		RID rt = ref.render_target_create(res, res);
 		ref.render_scene(d, rt);
 		ref_open = ref.render_target_get_data(rt);
@@ -189,7 +83,7 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 		ref.render_scene(d, rt);
 		ref_shadowed = ref.render_target_get_data(rt);
 		ref.render_target_free(rt);
-		objects.free(ls, ms, mats);
+		objects.free();
 		if (p_options.progress) {
 			printf("[reference] %dx%d done\n", res, res);
 			fflush(stdout);
@@ -216,11 +110,14 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 			ok = false;
 			error = "The Forward+ renderer could not be initialized (see the errors above).";
 		}
-		RenderSceneData scene = make_scene(res);
-		SceneObjects<RendererRD::LightStorage, RendererRD::MeshStorage, RendererRD::MaterialStorage> objects;
+		RenderSceneData scene = PenumbraScene::make_top_view(res);
+		PenumbraScene objects;
 		RID rt;
+		if (ok && !objects.create(&light_storage, &mesh_storage, &material_storage, scene)) {
+			ok = false;
+			error = "The scene could not be created.";
+		}
 		if (ok) {
-			objects.create(light_storage, mesh_storage, material_storage, scene);
 			rt = renderer.render_target_create(res, res);
 			ok = rt.is_valid();
 			error = ok ? String() : String("The render target could not be created.");
@@ -229,7 +126,8 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 			renderer.render_scene(scene, rt);
 			return renderer.render_target_get_data(rt);
 		};
-		const RID light = objects.light;
+		const RID light = objects.get_light();
+		const Transform3D rest = PenumbraScene::light_transform(PenumbraScene::Settings());
 		for (size_t a = 0; ok && a < p_options.atlas_sizes.size(); a++) {
 			const int atlas = p_options.atlas_sizes[a];
 			for (size_t g = 0; ok && g < p_options.grids.size(); g++) {
@@ -242,7 +140,7 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 				}
 				light_storage.light_area_set_shadow_mode(light, RS::LIGHT_AREA_SHADOW_FIXED);
 				light_storage.light_area_set_shadow_grid(light, grid);
-				scene.lights[0].transform = light_transform();
+				scene.lights[0].transform = rest;
 				Row base;
 				base.mode = "FIXED";
 				base.atlas = atlas;
@@ -265,7 +163,7 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 						Row row = base;
 						row.section = "error";
 						row.blur = blur;
-						row.visibility_rmse = visibility_rmse(open, shadowed, ref_open, ref_shadowed);
+						row.visibility_rmse = visibility_rmse(open, shadowed, ref_open, ref_shadowed, res);
 						r_rows.push_back(row);
 						if (p_options.progress) {
 							printf("[error] atlas %d tile %d maps %d blur %.0f: visibility RMSE %.4f\n", atlas, row.tile, row.maps, blur, row.visibility_rmse);
@@ -317,7 +215,7 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 					break;
 				}
 				light_storage.light_area_set_shadow_mode(light, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
-				scene.lights[0].transform = light_transform();
+				scene.lights[0].transform = rest;
 				for (float blur : p_options.blurs) {
 					light_storage.light_set_shadow(light, false);
 					std::vector<float> open = render();
@@ -332,7 +230,7 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 					row.tile = atlas / p_options.pcss_subdivision;
 					row.maps = 1;
 					row.blur = blur;
-					row.visibility_rmse = visibility_rmse(open, shadowed, ref_open, ref_shadowed);
+					row.visibility_rmse = visibility_rmse(open, shadowed, ref_open, ref_shadowed, res);
 					r_rows.push_back(row);
 				}
 			}
@@ -340,9 +238,7 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 		if (rt.is_valid()) {
 			renderer.render_target_free(rt);
 		}
-		if (objects.light.is_valid()) {
-			objects.free(light_storage, mesh_storage, material_storage);
-		}
+		objects.free();
 		renderer.finalize();
 		light_storage.finalize_gpu();
 		material_storage.finalize_gpu();

@@ -4,8 +4,8 @@
 /* godot-area: the area soft-shadow sweep (thesis section 6.2 on our      */
 /* engine; `godot-area bench --sweep shadows`). Scene: a 1.6 x 1.6 m     */
 /* area light 1.5 m above a Lambert floor and a 0.5 m box centred 0.55 m */
-/* above it (the penumbra scene of tests/servers/test_area_shadows_      */
-/* render.cpp), seen from above.                                          */
+/* above it (penumbra_scene.h, shared with the dolly sweep), seen from  */
+/* above.                                                                 */
 /*                                                                        */
 /*  error   For each atlas size and number of maps (grid^2), the atlas is */
 /*          split into the smallest power-of-two subdivision that holds   */

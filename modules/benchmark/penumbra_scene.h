@@ -1,0 +1,80 @@
+/**************************************************************************/
+/*  penumbra_scene.h                                                      */
+/**************************************************************************/
+/* godot-area: the penumbra scene of the shadow benchmarks (thesis        */
+/* chapter 6), shared by `bench --sweep shadows` (shadows_sweep.h) and    */
+/* `bench --sweep dolly` (dolly_sweep.h): a square area light facing down */
+/* above a Lambert floor, and a box between them that casts a wide        */
+/* penumbra. The same objects are created in any storages (the Forward+  */
+/* renderer's or the dummy ones the Embree reference reads), so the GPU   */
+/* image and the reference see one scene.                                 */
+/*                                                                        */
+/* Also the visibility error of the sweeps: visibility = shadowed /       */
+/* unshadowed image (the shading method's own error cancels), compared    */
+/* with the reference's over the lit pixels.                              */
+/* (tests/servers/test_area_shadows_render.cpp still has its own copy of  */
+/* this scene; it can use this class.)                                    */
+
+#pragma once
+
+#include "core/math/transform_3d.h"
+#include "core/math/vector2.h"
+#include "core/math/vector3.h"
+#include "servers/rendering/renderer_scene_render.h"
+
+#include <vector>
+
+class RendererLightStorage;
+class RendererMeshStorage;
+class RendererMaterialStorage;
+
+class PenumbraScene {
+public:
+	struct Settings {
+		Vector2 light_size = Vector2(1.6f, 1.6f);
+		float light_height = 1.5f; // Light centre above the floor (y = 0).
+		float light_energy = 2.0f;
+		float light_range = 20.0f;
+		float box_half = 0.25f;
+		Vector3 box_center = Vector3(0.0f, 0.55f, 0.0f);
+		float floor_half = 4.0f;
+	};
+
+private:
+	RendererLightStorage *light_storage = nullptr;
+	RendererMeshStorage *mesh_storage = nullptr;
+	RendererMaterialStorage *material_storage = nullptr;
+	RID floor_mesh, box_mesh, material, light;
+
+public:
+	static RS::SurfaceData make_plane(float p_half);
+	// Axis-aligned box, 24 vertices with outward normals.
+	static RS::SurfaceData make_box(const Vector3 &p_center, float p_half);
+	static RS::MaterialParams lambert();
+	// world_from_light: the light faces down (-Z local = -Y world).
+	static Transform3D light_transform(const Settings &p_settings);
+	// A camera at p_position looking at p_target (up +Y, or -Z when looking straight down), black
+	// background, p_width x p_height, vertical field of view p_fovy.
+	static RenderSceneData make_view(const Vector3 &p_position, const Vector3 &p_target, int p_width, int p_height, float p_fovy = 60.0f);
+	// The shadows sweep's view: from 3.2 m above, slightly off centre, square.
+	static RenderSceneData make_top_view(int p_resolution);
+
+	// Creates the floor, box, material and light in the storages and appends them to r_scene (light index 0
+	// of r_scene.lights if it had none). False if a storage refused.
+	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene, const Settings &p_settings);
+	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene) { return create(p_light_storage, p_mesh_storage, p_material_storage, r_scene, Settings()); }
+	void free();
+	RID get_light() const { return light; }
+	bool is_created() const { return light.is_valid(); }
+
+	// Visibility error of an engine image against the reference (RGBA float images, row-major). Reference
+	// pixel (x, y) is compared with engine pixel (x * p_step + p_step / 2, y * p_step + p_step / 2): with an odd
+	// p_step and an engine image p_step times larger, the two pixel centres coincide. Visibility is clamped to
+	// [0, 1.5]; pixels unlit in either unshadowed image are skipped. r_rmse: over the lit pixels (1 when
+	// none); r_penumbra_rmse (optional): over the reference's penumbra (0.02 < v < 0.98; -1 when none).
+	static void visibility_error(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, int p_width,
+			const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, int p_ref_width, int p_ref_height,
+			int p_step, double &r_rmse, double *r_penumbra_rmse = nullptr);
+
+	~PenumbraScene() { free(); }
+};
