@@ -21,6 +21,24 @@ bool file_exists(const String &p_path) {
 	return stat(p_path.c_str(), &st) == 0;
 }
 
+String chart_python() {
+	const char *env_python = getenv("GODOT_AREA_PYTHON");
+	return env_python != nullptr && env_python[0] != '\0' ? String(env_python) : String("/usr/bin/python3");
+}
+
+// The script under GODOT_AREA_ROOT, else relative to the working directory.
+String chart_script(const String &p_script) {
+	const String script = String(GODOT_AREA_ROOT) + "/misc/scripts/" + p_script;
+	return file_exists(script) ? script : "misc/scripts/" + p_script;
+}
+
+bool fail(String *r_error, const String &p_message) {
+	if (r_error) {
+		*r_error = "cannot draw the charts: " + p_message;
+	}
+	return false;
+}
+
 } // namespace
 
 String BenchCharts::shell_quote(const String &p_text) {
@@ -36,29 +54,25 @@ String BenchCharts::directory_of(const String &p_path) {
 	return slash == String::npos ? String(".") : (slash == 0 ? String("/") : p_path.substr(0, slash));
 }
 
-bool BenchCharts::draw(const String &p_script, const String &p_csv, const std::vector<String> &p_extra_args, String *r_error) {
-	auto fail = [&](const String &p_message) {
-		if (r_error) {
-			*r_error = "cannot draw the charts: " + p_message + " (--no-charts skips them).";
-		}
-		return false;
-	};
-	const char *env_python = getenv("GODOT_AREA_PYTHON");
-	const String python = env_python != nullptr && env_python[0] != '\0' ? String(env_python) : String("/usr/bin/python3");
+bool BenchCharts::check(const String &p_script, String *r_error) {
+	const String python = chart_python();
 	if (access(python.c_str(), X_OK) != 0) {
-		return fail("the Python interpreter '" + python + "' is missing or not executable (install python3 and python3-matplotlib, see misc/scripts/install_deps.sh; GODOT_AREA_PYTHON picks another interpreter)");
+		return fail(r_error, "the Python interpreter '" + python + "' is missing or not executable (install python3 and python3-matplotlib, see misc/scripts/install_deps.sh; GODOT_AREA_PYTHON picks another interpreter; --no-charts skips the charts).");
 	}
 	if (std::system((shell_quote(python) + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) != 0) {
-		return fail("matplotlib is not installed for '" + python + "' (install python3-matplotlib, see misc/scripts/install_deps.sh)");
+		return fail(r_error, "matplotlib is not installed for '" + python + "' (install python3-matplotlib, see misc/scripts/install_deps.sh; --no-charts skips the charts).");
 	}
-	String script = String(GODOT_AREA_ROOT) + "/misc/scripts/" + p_script;
-	if (!file_exists(script)) {
-		script = "misc/scripts/" + p_script;
+	if (!file_exists(chart_script(p_script))) {
+		return fail(r_error, "misc/scripts/" + p_script + " not found (run from the repository root or pass --no-charts).");
 	}
-	if (!file_exists(script)) {
-		return fail("misc/scripts/" + p_script + " not found (run from the repository root)");
+	return true;
+}
+
+bool BenchCharts::draw(const String &p_script, const String &p_csv, const std::vector<String> &p_extra_args, String *r_error) {
+	if (!check(p_script, r_error)) {
+		return false;
 	}
-	String command = shell_quote(python) + " " + shell_quote(script) + " " + shell_quote(p_csv) + " --out " + shell_quote(directory_of(p_csv));
+	String command = shell_quote(chart_python()) + " " + shell_quote(chart_script(p_script)) + " " + shell_quote(p_csv) + " --out " + shell_quote(directory_of(p_csv));
 	for (const String &a : p_extra_args) {
 		command += " " + shell_quote(a);
 	}
@@ -66,7 +80,7 @@ bool BenchCharts::draw(const String &p_script, const String &p_csv, const std::v
 	fflush(stdout);
 	const int status = std::system(command.c_str());
 	if (status != 0) {
-		return fail(vformat("'%s' failed (status %d)", command.c_str(), status));
+		return fail(r_error, vformat("'%s' failed (status %d).", command.c_str(), status));
 	}
 	return true;
 }

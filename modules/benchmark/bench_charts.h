@@ -19,7 +19,10 @@ public:
 	static String shell_quote(const String &p_text);
 	// Directory part of p_path ("." when it has none).
 	static String directory_of(const String &p_path);
-	// Runs `python misc/scripts/<p_script> <p_csv> --out <dir of p_csv> <p_extra_args...>`. False with r_error
-	// naming the problem (no interpreter, no matplotlib, no script, the script failed).
+	// Checks that the charts can be drawn: the interpreter, matplotlib and misc/scripts/<p_script>. A sweep
+	// runs it up front so that a missing tool does not cost a whole run. False with r_error naming the problem.
+	static bool check(const String &p_script, String *r_error);
+	// Runs `python misc/scripts/<p_script> <p_csv> --out <dir of p_csv> <p_extra_args...>` after check().
+	// False with r_error naming the problem (no interpreter, no matplotlib, no script, the script failed).
 	static bool draw(const String &p_script, const String &p_csv, const std::vector<String> &p_extra_args, String *r_error);
 };

@@ -5,23 +5,19 @@
 
 #include "modules/benchmark/methods_sweep_command.h"
 
+#include "modules/benchmark/bench_charts.h"
 #include "modules/benchmark/methods_sweep.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <sys/stat.h>
 #include <unistd.h>
-
-#ifndef GODOT_AREA_ROOT
-#define GODOT_AREA_ROOT "."
-#endif
 
 namespace {
 
 const char *DEFAULT_CSV = "doc/results/methods_sweep.csv";
-const char *DEFAULT_PYTHON = "/usr/bin/python3";
+const char *CHART_SCRIPT = "plot_methods.py"; // misc/scripts/, run by BenchCharts.
 
 bool parse_int(const String &p_text, int p_min, int p_max, int &r_value) {
 	char *end = nullptr;
@@ -36,76 +32,6 @@ bool parse_int(const String &p_text, int p_min, int p_max, int &r_value) {
 int usage_error(const String &p_message) {
 	fprintf(stderr, "godot-area bench --sweep methods: %s\n", p_message.c_str());
 	return 2;
-}
-
-bool file_exists(const String &p_path) {
-	struct stat st;
-	return stat(p_path.c_str(), &st) == 0;
-}
-
-String directory_of(const String &p_path) {
-	size_t slash = p_path.find_last_of('/');
-	return slash == String::npos ? String(".") : (slash == 0 ? String("/") : p_path.substr(0, slash));
-}
-
-// Single-quotes p_text for /bin/sh.
-String shell_quote(const String &p_text) {
-	String out = "'";
-	for (char c : p_text) {
-		out += c == '\'' ? String("'\\''") : String(1, c);
-	}
-	return out + "'";
-}
-
-String chart_python() {
-	const char *env_python = getenv("GODOT_AREA_PYTHON");
-	return env_python != nullptr && env_python[0] != '\0' ? String(env_python) : String(DEFAULT_PYTHON);
-}
-
-String chart_script() {
-	const String script = String(GODOT_AREA_ROOT) + "/misc/scripts/plot_methods.py";
-	return file_exists(script) ? script : String("misc/scripts/plot_methods.py");
-}
-
-// Checks that the charts can be drawn: the interpreter, matplotlib and the script. Run before the
-// sweep so that a missing tool does not cost a whole run. Returns false with r_error naming the problem.
-bool check_chart_tools(String *r_error) {
-	const String python = chart_python();
-	if (access(python.c_str(), X_OK) != 0) {
-		*r_error = "cannot draw the charts: the Python interpreter '" + python + "' is missing or not executable (install python3 and python3-matplotlib, see misc/scripts/install_deps.sh; GODOT_AREA_PYTHON picks another interpreter; --no-charts skips the charts).";
-		return false;
-	}
-	if (std::system((shell_quote(python) + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) != 0) {
-		*r_error = "cannot draw the charts: matplotlib is not installed for '" + python + "' (install python3-matplotlib, see misc/scripts/install_deps.sh; --no-charts skips the charts).";
-		return false;
-	}
-	if (!file_exists(chart_script())) {
-		*r_error = "cannot draw the charts: misc/scripts/plot_methods.py not found (run from the repository root or pass --no-charts).";
-		return false;
-	}
-	return true;
-}
-
-// Draws the charts of p_csv with misc/scripts/plot_methods.py into the CSV's directory. Returns false
-// with r_error naming the problem.
-bool draw_charts(const String &p_csv, const String &p_maps_dir, String *r_error) {
-	if (!check_chart_tools(r_error)) {
-		return false;
-	}
-	const String python = chart_python();
-	const String script = chart_script();
-	String command = shell_quote(python) + " " + shell_quote(script) + " " + shell_quote(p_csv) + " --out " + shell_quote(directory_of(p_csv));
-	if (!p_maps_dir.empty()) {
-		command += " --maps " + shell_quote(p_maps_dir);
-	}
-	printf("Drawing the charts: %s\n", command.c_str());
-	fflush(stdout);
-	const int status = std::system(command.c_str());
-	if (status != 0) {
-		*r_error = vformat("cannot draw the charts: '%s' failed (status %d).", command.c_str(), status);
-		return false;
-	}
-	return true;
 }
 
 } // namespace
@@ -211,7 +137,7 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 	}
 	if (charts) {
 		String tools_error;
-		if (!check_chart_tools(&tools_error)) {
+		if (!BenchCharts::check(CHART_SCRIPT, &tools_error)) {
 			fprintf(stderr, "godot-area bench --sweep methods: %s Nothing was run.\n", tools_error.c_str());
 			return 1;
 		}
@@ -222,8 +148,9 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 		const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
 		options.maps_dir = (ec ? String("/tmp") : String(tmp.string())) + "/godot_area_methods_maps_" + itos((int64_t)getpid());
 	}
-	const String csv_dir = directory_of(options.csv_path);
-	if (!file_exists(csv_dir)) {
+	const String csv_dir = BenchCharts::directory_of(options.csv_path);
+	std::error_code exists_ec;
+	if (!std::filesystem::exists(csv_dir, exists_ec)) {
 		std::error_code ec;
 		std::filesystem::create_directories(csv_dir, ec);
 		if (ec) {
@@ -257,7 +184,11 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 	printf("Wrote %s\n", options.csv_path.c_str());
 	if (charts) {
 		String chart_error;
-		const bool drawn = draw_charts(options.csv_path, options.maps_dir, &chart_error);
+		std::vector<String> extra_args;
+		if (!options.maps_dir.empty()) {
+			extra_args = { "--maps", options.maps_dir };
+		}
+		const bool drawn = BenchCharts::draw(CHART_SCRIPT, options.csv_path, extra_args, &chart_error);
 		if (!maps_given && !options.maps_dir.empty()) {
 			std::error_code ec;
 			std::filesystem::remove_all(options.maps_dir, ec);

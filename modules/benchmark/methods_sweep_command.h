@@ -20,7 +20,8 @@
 /* (methods_pareto.png, methods_lights.png, methods_failure_*.png; the    */
 /* failure strips go to a temporary M unless --maps is given). Without    */
 /* the interpreter (GODOT_AREA_PYTHON overrides the path) or matplotlib   */
-/* it fails before the sweep with a message naming the problem;         */
+/* it fails before the sweep with a message naming the problem            */
+/* (bench_charts.h runs the script);                                      */
 /* --no-charts skips the charts.                                          */
 /* Must run before Main::setup() (the sweep makes its own servers).       */
 

@@ -23,16 +23,16 @@ RS::SurfaceData PenumbraScene::make_plane(float p_half) {
 	return s;
 }
 
-RS::SurfaceData PenumbraScene::make_box(const Vector3 &p_center, float p_half) {
+RS::SurfaceData PenumbraScene::make_box(const Vector3 &p_center, const Vector3 &p_half) {
 	RS::SurfaceData s;
 	for (int axis = 0; axis < 3; axis++) {
 		for (int sign = -1; sign <= 1; sign += 2) {
 			Vector3 n;
 			n[axis] = float(sign);
 			Vector3 u, v;
-			u[(axis + 1) % 3] = p_half;
-			v[(axis + 2) % 3] = p_half;
-			Vector3 c = p_center + n * p_half;
+			u[(axis + 1) % 3] = p_half[(axis + 1) % 3];
+			v[(axis + 2) % 3] = p_half[(axis + 2) % 3];
+			Vector3 c = p_center + n * p_half[axis];
 			uint32_t base = uint32_t(s.vertices.size());
 			Vector3 corners[4] = { c - u - v, c + u - v, c + u + v, c - u + v };
 			for (int i = 0; i < 4; i++) {

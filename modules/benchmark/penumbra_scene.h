@@ -12,8 +12,7 @@
 /* Also the visibility error of the sweeps: visibility = shadowed /       */
 /* unshadowed image (the shading method's own error cancels), compared    */
 /* with the reference's over the lit pixels.                              */
-/* (tests/servers/test_area_shadows_render.cpp still has its own copy of  */
-/* this scene; it can use this class.)                                    */
+/* tests/servers/test_area_shadows_render.cpp renders it too.             */
 
 #pragma once
 
@@ -48,8 +47,9 @@ private:
 
 public:
 	static RS::SurfaceData make_plane(float p_half);
-	// Axis-aligned box, 24 vertices with outward normals.
-	static RS::SurfaceData make_box(const Vector3 &p_center, float p_half);
+	// Axis-aligned box, 24 vertices with outward normals (half extents p_half, or p_half on every axis).
+	static RS::SurfaceData make_box(const Vector3 &p_center, const Vector3 &p_half);
+	static RS::SurfaceData make_box(const Vector3 &p_center, float p_half) { return make_box(p_center, Vector3(p_half, p_half, p_half)); }
 	static RS::MaterialParams lambert();
 	// world_from_light: the light faces down (-Z local = -Y world).
 	static Transform3D light_transform(const Settings &p_settings);

@@ -14,6 +14,7 @@
 
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 
+#include "modules/benchmark/penumbra_scene.h"
 #include "modules/reference/reference_renderer.h"
 #include "servers/rendering/dummy/storage/light_storage.h"
 #include "servers/rendering/dummy/storage/material_storage.h"
@@ -33,17 +34,6 @@ static const float LIGHT_HEIGHT = 1.5f;
 static const Vector3 BOX_HALF(0.25f, 0.25f, 0.25f);
 static const Vector3 BOX_CENTER(0.0f, 0.55f, 0.0f);
 static const float PLANE_HALF = 4.0f;
-
-static RS::MaterialParams lambert() {
-	RS::MaterialParams mp;
-	mp.albedo = Color(0.8f, 0.8f, 0.8f, 1.0f);
-	mp.specular = 0.0f;
-	mp.specular_mode = RS::MATERIAL_SPECULAR_DISABLED;
-	mp.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
-	mp.roughness = 1.0f;
-	mp.cull_back = false;
-	return mp;
-}
 
 // Camera at p_origin looking straight down (-Z is screen-up).
 static RenderSceneData make_view(const Vector3 &p_origin, int p_size) {
@@ -66,7 +56,7 @@ struct AdaptiveScene {
 			return false;
 		}
 		size = p_size;
-		RID mat = f.material(lambert());
+		RID mat = f.material(PenumbraScene::lambert());
 		scene = make_view(p_camera, p_size);
 		RenderTest::add_geometry(scene, f.plane(PLANE_HALF), mat);
 		if (p_box) {
@@ -129,7 +119,7 @@ static void render_reference(const RenderSceneData &p_view, std::vector<float> &
 	RID box = ms.mesh_create();
 	ms.mesh_add_surface(box, RenderTest::make_box(BOX_HALF));
 	RID mat = mats.material_create();
-	mats.material_set_params(mat, lambert());
+	mats.material_set_params(mat, PenumbraScene::lambert());
 	RID light = ls.light_create(RS::LIGHT_AREA);
 	ls.light_area_set_size(light, LIGHT_SIZE);
 	ls.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);

@@ -12,6 +12,7 @@
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 
 #include "core/math/math_funcs.h"
+#include "modules/benchmark/penumbra_scene.h"
 #include "scene/3d/light_3d.h"
 #include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "servers/rendering/renderer_scene_cull.h"
@@ -24,28 +25,9 @@
 
 namespace TestAreaShadowCasters {
 
+// Axis-aligned box of half extents p_half around the origin (clockwise front faces seen from outside).
 static RS::SurfaceData make_box(const Vector3 &p_half) {
-	RS::SurfaceData s;
-	for (int axis = 0; axis < 3; axis++) {
-		for (int sign = -1; sign <= 1; sign += 2) {
-			Vector3 n;
-			n[axis] = float(sign);
-			Vector3 u, v;
-			u[(axis + 1) % 3] = p_half[(axis + 1) % 3];
-			v[(axis + 2) % 3] = p_half[(axis + 2) % 3];
-			Vector3 c = n * p_half[axis];
-			uint32_t base = uint32_t(s.vertices.size());
-			Vector3 corners[4] = { c - u - v, c + u - v, c + u + v, c - u + v };
-			for (int i = 0; i < 4; i++) {
-				s.vertices.push_back(corners[i]);
-				s.normals.push_back(n);
-			}
-			// Clockwise front faces seen from outside (Godot's convention; double-sided materials flip the
-			// normal of back faces).
-			s.indices.insert(s.indices.end(), { base, base + 2, base + 1, base, base + 3, base + 2 });
-		}
-	}
-	return s;
+	return PenumbraScene::make_box(Vector3(), p_half);
 }
 
 static Basis facing_down() {

@@ -13,7 +13,7 @@
 
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 
-#include "core/math/math_funcs.h"
+#include "modules/benchmark/penumbra_scene.h"
 #include "modules/reference/reference_renderer.h"
 #include "scene/3d/light_3d.h"
 #include "scene/main/node.h"
@@ -32,81 +32,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace TestAreaShadowsRender {
 
 static const int W = 48;
 static const int H = 48;
 
-static RS::SurfaceData make_plane(float p_half) {
-	RS::SurfaceData s;
-	s.vertices = { Vector3(-p_half, 0, -p_half), Vector3(p_half, 0, -p_half), Vector3(p_half, 0, p_half), Vector3(-p_half, 0, p_half) };
-	s.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-	s.indices = { 0, 1, 2, 0, 2, 3 };
-	return s;
-}
-
-// Axis-aligned box centred at p_center with half extent p_half (24 vertices, outward normals).
-static RS::SurfaceData make_box(const Vector3 &p_center, float p_half) {
-	RS::SurfaceData s;
-	for (int axis = 0; axis < 3; axis++) {
-		for (int sign = -1; sign <= 1; sign += 2) {
-			Vector3 n;
-			n[axis] = float(sign);
-			Vector3 u, v;
-			u[(axis + 1) % 3] = p_half;
-			v[(axis + 2) % 3] = p_half;
-			Vector3 c = p_center + n * p_half;
-			uint32_t base = uint32_t(s.vertices.size());
-			Vector3 corners[4] = { c - u - v, c + u - v, c + u + v, c - u + v };
-			for (int i = 0; i < 4; i++) {
-				s.vertices.push_back(corners[i]);
-				s.normals.push_back(n);
-			}
-			s.indices.insert(s.indices.end(), { base, base + 1, base + 2, base, base + 2, base + 3 });
-		}
-	}
-	return s;
-}
-
-static Basis facing_down() {
-	return Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f);
-}
-
+// The penumbra scene (modules/benchmark/penumbra_scene.h) seen from above, as in `bench --sweep shadows`.
 static RenderSceneData make_scene() {
-	RenderSceneData d;
-	d.cam_transform = Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0.3f, 3.2f, 0.2f));
-	d.z_near = 0.05f;
-	d.z_far = 20.0f;
-	d.fovy_degrees = 60.0f;
-	d.cam_projection = Projection::create_perspective(60.0f, float(W) / float(H), d.z_near, d.z_far);
-	d.viewport_width = W;
-	d.viewport_height = H;
-	d.environment.has_environment = true;
-	d.environment.background = RS::ENV_BG_COLOR;
-	d.environment.bg_color = Color(0, 0, 0, 1);
-	return d;
-}
-
-static const Vector2 LIGHT_SIZE(1.6f, 1.6f);
-static const float LIGHT_HEIGHT = 1.5f;
-static const float BOX_HALF = 0.25f;
-static const Vector3 BOX_CENTER(0.0f, 0.55f, 0.0f);
-
-static RS::MaterialParams lambert() {
-	RS::MaterialParams mp;
-	mp.albedo = Color(0.8f, 0.8f, 0.8f, 1.0f);
-	mp.specular = 0.0f;
-	mp.specular_mode = RS::MATERIAL_SPECULAR_DISABLED;
-	mp.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
-	mp.roughness = 1.0f;
-	mp.cull_back = false;
-	return mp;
+	return PenumbraScene::make_top_view(W);
 }
 
 // The Embree reference of the penumbra scene, with and without shadow rays.
-static void render_reference(bool p_with_box, std::vector<float> &r_open, std::vector<float> &r_shadowed) {
+static void render_reference(std::vector<float> &r_open, std::vector<float> &r_shadowed) {
 	RendererDummy::LightStorage ls;
 	RendererDummy::MeshStorage ms;
 	RendererDummy::MaterialStorage mats;
@@ -115,31 +53,9 @@ static void render_reference(bool p_with_box, std::vector<float> &r_open, std::v
 	options.target_relative_error = 0.01f;
 	options.max_samples = 2048;
 	ReferenceRenderer ref(&ls, &ms, &mats, options);
-	RID plane = ms.mesh_create();
-	ms.mesh_add_surface(plane, make_plane(4.0f));
-	RID box = ms.mesh_create();
-	ms.mesh_add_surface(box, make_box(BOX_CENTER, BOX_HALF));
-	RID mat = mats.material_create();
-	mats.material_set_params(mat, lambert());
-	RID light = ls.light_create(RS::LIGHT_AREA);
-	ls.light_area_set_size(light, LIGHT_SIZE);
-	ls.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);
-	ls.light_set_param(light, RS::LIGHT_PARAM_RANGE, 20.0f);
-	ls.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+	PenumbraScene penumbra;
 	RenderSceneData d = make_scene();
-	RenderSceneData::GeometryInstance g;
-	g.mesh = plane;
-	g.material_override = mat;
-	d.geometry.push_back(g);
-	if (p_with_box) {
-		g.mesh = box;
-		d.geometry.push_back(g);
-	}
-	RenderSceneData::LightInstance li;
-	li.light = light;
-	li.type = RS::LIGHT_AREA;
-	li.transform = Transform3D(facing_down(), Vector3(0, LIGHT_HEIGHT, 0));
-	d.lights.push_back(li);
+	REQUIRE(penumbra.create(&ls, &ms, &mats, d));
 	RID rt = ref.render_target_create(W, H);
 	ref.render_scene(d, rt);
 	r_open = ref.render_target_get_data(rt);
@@ -148,10 +64,7 @@ static void render_reference(bool p_with_box, std::vector<float> &r_open, std::v
 	ref.render_scene(d, rt);
 	r_shadowed = ref.render_target_get_data(rt);
 	ref.render_target_free(rt);
-	ls.light_free(light);
-	ms.mesh_free(plane);
-	ms.mesh_free(box);
-	mats.material_free(mat);
+	penumbra.free();
 }
 
 struct ShadowFixture {
@@ -159,39 +72,24 @@ struct ShadowFixture {
 	RendererRD::MeshStorage mesh_storage;
 	RendererRD::MaterialStorage material_storage;
 	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	RID plane, box, mat, light, rt;
+	PenumbraScene penumbra;
+	RID light, rt;
 	RenderSceneData scene;
 
+	// p_with_box false: the box mesh is made but left out of the scene (an unoccluded floor).
 	bool init(bool p_with_box) {
 		if (!(material_storage.initialize_gpu() && light_storage.initialize_gpu(32) && renderer.initialize(32))) {
 			return false;
 		}
-		plane = mesh_storage.mesh_create();
-		mesh_storage.mesh_add_surface(plane, make_plane(4.0f));
-		box = mesh_storage.mesh_create();
-		mesh_storage.mesh_add_surface(box, make_box(BOX_CENTER, BOX_HALF));
-		mat = material_storage.material_create();
-		material_storage.material_set_params(mat, lambert());
-		light = light_storage.light_create(RS::LIGHT_AREA);
-		light_storage.light_area_set_size(light, LIGHT_SIZE);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_RANGE, 20.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 2.0f); // PCF radius 4 texels.
 		scene = make_scene();
-		RenderSceneData::GeometryInstance g;
-		g.mesh = plane;
-		g.material_override = mat;
-		scene.geometry.push_back(g);
-		if (p_with_box) {
-			g.mesh = box;
-			scene.geometry.push_back(g);
+		if (!penumbra.create(&light_storage, &mesh_storage, &material_storage, scene)) {
+			return false;
 		}
-		RenderSceneData::LightInstance li;
-		li.light = light;
-		li.type = RS::LIGHT_AREA;
-		li.transform = Transform3D(facing_down(), Vector3(0, LIGHT_HEIGHT, 0));
-		scene.lights.push_back(li);
+		light = penumbra.get_light();
+		light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 2.0f); // PCF radius 4 texels.
+		if (!p_with_box) {
+			scene.geometry.pop_back(); // The box is the last instance.
+		}
 		rt = renderer.render_target_create(W, H);
 		return rt.is_valid();
 	}
@@ -200,37 +98,25 @@ struct ShadowFixture {
 		return renderer.render_target_get_data(rt);
 	}
 	~ShadowFixture() {
-		light_storage.light_free(light);
-		mesh_storage.mesh_free(plane);
-		mesh_storage.mesh_free(box);
-		material_storage.material_free(mat);
+		penumbra.free();
 		renderer.finalize();
 		light_storage.finalize_gpu();
 		material_storage.finalize_gpu();
 	}
 };
 
-// RMS difference of the visibility (shadowed / open) over pixels the light reaches.
+// RMS difference of the visibility (shadowed / open) over pixels the light reaches (same-size images).
 static double visibility_rmse(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed) {
-	double sum = 0.0;
-	int n = 0;
-	for (size_t i = 0; i < p_open.size(); i += 4) {
-		if (p_open[i] <= 1e-3f || p_ref_open[i] <= 1e-3f) {
-			continue;
-		}
-		double v = std::min(std::max(double(p_shadowed[i] / p_open[i]), 0.0), 1.5);
-		double vr = std::min(std::max(double(p_ref_shadowed[i] / p_ref_open[i]), 0.0), 1.5);
-		sum += (v - vr) * (v - vr);
-		n++;
-	}
-	return n > 0 ? std::sqrt(sum / n) : 1.0;
+	double rmse = 1.0;
+	PenumbraScene::visibility_error(p_open, p_shadowed, W, p_ref_open, p_ref_shadowed, W, H, 1, rmse);
+	return rmse;
 }
 
 TEST_CASE("[AreaLight3D][Shadows] the penumbra approaches the reference as shadow maps grow and beats the PCSS baseline") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
 	std::vector<float> ref_open, ref_shadowed;
-	render_reference(true, ref_open, ref_shadowed);
+	render_reference(ref_open, ref_shadowed);
 	{
 		ShadowFixture f;
 		REQUIRE(f.init(true));
