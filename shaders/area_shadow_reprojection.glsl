@@ -3,10 +3,11 @@
 /**************************************************************************/
 /* Reprojection pass of adaptive area shadows (thesis 6.3, Schwarzler et  */
 /* al.): for each tested quad of an area light (z = query index) and each */
-/* pixel of a reduced-resolution grid over the camera depth buffer, the   */
+/* cell of its light's grid (GridData: the screen rectangle of the light's*/
+/* range box at a per-light step; x = cell index) over the camera depth,  */
 /* visibility of the receiver from the quad's four corner samples: the    */
 /* plain mean of four one-tap shadow-map tests (0, 1/4, ..., 1), written  */
-/* to values[query * width * height + pixel]; -1 where there is no        */
+/* to values[grid.offset + cell]; -1 where there is no                    */
 /* receiver (far plane) or it is behind the light. The banding detector   */
 /* (area_shadow_banding.glsl) reads it. Compiled only when a light uses   */
 /* ADAPTIVE (AreaShadowAdaptiveRD creates it on demand).                  */
@@ -19,7 +20,7 @@
 
 #include "area_shadow_octant_inc.glsl"
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 struct QueryData { // std430, 144 bytes.
 	mat4 light_from_view; // View space -> light space (emission along -Z).
@@ -48,14 +49,28 @@ layout(set = 0, binding = 4, std430) restrict writeonly buffer Values {
 }
 values;
 
+struct GridData { // std430, 32 bytes: one query's cells over the depth buffer.
+	uvec2 origin; // Depth pixels.
+	uvec2 size; // Cells.
+	uint step; // Depth pixels per cell.
+	uint offset; // First value of the query.
+	uvec2 extent; // Depth pixels covered.
+};
+
+layout(set = 0, binding = 5, std430) restrict readonly buffer Grids {
+	GridData data[];
+}
+grids;
+
 layout(push_constant, std430) uniform Params { // 96 bytes.
 	mat4 view_from_clip; // Inverse of the (Vulkan depth-corrected) camera projection.
-	uvec2 out_size; // Reduced grid.
 	uvec2 depth_size; // Camera depth buffer.
-	uint scale; // Depth pixels per grid pixel.
+	uint max_cells; // Largest grid (dispatch x).
 	uint query_count;
 	uint pad0;
 	uint pad1;
+	uint pad2;
+	uint pad3;
 }
 params;
 
@@ -91,11 +106,16 @@ float corner_visibility(const QueryData p_q, vec2 p_uv, uint p_tile, vec3 p_pos,
 
 void main() {
 	uvec3 id = gl_GlobalInvocationID;
-	if (id.x >= params.out_size.x || id.y >= params.out_size.y || id.z >= params.query_count) {
+	if (id.z >= params.query_count) {
 		return;
 	}
-	uint index = (id.z * params.out_size.y + id.y) * params.out_size.x + id.x;
-	ivec2 pixel = ivec2(id.xy * params.scale + params.scale / 2u);
+	GridData g = grids.data[id.z];
+	if (id.x >= g.size.x * g.size.y) {
+		return;
+	}
+	uint index = g.offset + id.x;
+	uvec2 cell = uvec2(id.x % g.size.x, id.x / g.size.x);
+	ivec2 pixel = ivec2(g.origin + min(cell * g.step + g.step / 2u, g.extent - 1u));
 	pixel = min(pixel, ivec2(params.depth_size) - 1);
 	float depth = texelFetch(sampler2D(camera_depth, nearest_sampler), pixel, 0).r;
 	if (depth >= 1.0) {

@@ -350,3 +350,48 @@ TEST_CASE("[AreaShadowAdaptive] light_prepare lists each map once and redraws on
 }
 
 } // namespace TestAreaShadowAdaptive
+
+TEST_CASE("[AreaShadowAdaptive] per-light reprojection grid: the light's screen rectangle within the view's budget") {
+	const uint32_t W = 288, H = 162, DIVISOR = 8;
+	const uint32_t budget = ((W + DIVISOR - 1) / DIVISOR) * ((H + DIVISOR - 1) / DIVISOR);
+	const Projection clip_from_view = Projection::create_depth_correction(true) * Projection::create_perspective(60.0f, float(W) / float(H), 0.05f, 100.0f);
+	AreaShadowAdaptiveRD::LightInput light;
+	light.size = Vector2(1.0f, 1.0f);
+	AreaShadowAdaptiveRD::GridData grid;
+
+	// No box: the whole view at 1/divisor, as before.
+	REQUIRE(AreaShadowAdaptiveRD::compute_light_grid(light, W, H, clip_from_view, DIVISOR, grid));
+	CHECK(grid.step == DIVISOR);
+	CHECK(grid.origin[0] == 0);
+	CHECK(grid.origin[1] == 0);
+	CHECK(grid.size[0] * grid.size[1] <= budget);
+
+	// A small box far in front of the camera (light space = view space shifted 20 m ahead): a small
+	// rectangle around the view centre, tested finer than 1/divisor but never finer than full resolution.
+	light.box = AABB(Vector3(-0.5f, -0.5f, -0.5f), Vector3(1.0f, 1.0f, 0.5f));
+	light.light_from_view = Transform3D(Basis(), Vector3(0.0f, 0.0f, 20.0f));
+	REQUIRE(AreaShadowAdaptiveRD::compute_light_grid(light, W, H, clip_from_view, DIVISOR, grid));
+	CHECK(grid.step >= 1);
+	CHECK(grid.step < DIVISOR);
+	CHECK(grid.size[0] * grid.size[1] <= budget);
+	CHECK(grid.origin[0] > 0);
+	CHECK(grid.origin[0] + grid.extent[0] < W);
+	CHECK(grid.origin[1] > 0);
+	CHECK(grid.origin[1] + grid.extent[1] < H);
+	CHECK(grid.origin[0] < W / 2);
+	CHECK(grid.origin[0] + grid.extent[0] > W / 2);
+
+	// A box filling the view: the budget at the divisor's step (or coarser), never more cells.
+	light.box = AABB(Vector3(-50.0f, -50.0f, -1.0f), Vector3(100.0f, 100.0f, 0.9f));
+	light.light_from_view = Transform3D(Basis(), Vector3(0.0f, 0.0f, 2.0f));
+	REQUIRE(AreaShadowAdaptiveRD::compute_light_grid(light, W, H, clip_from_view, DIVISOR, grid));
+	CHECK(grid.step >= DIVISOR);
+	CHECK(grid.size[0] * grid.size[1] <= budget);
+
+	// Behind the camera or off to the side: not tested.
+	light.box = AABB(Vector3(-0.5f, -0.5f, -0.5f), Vector3(1.0f, 1.0f, 0.5f));
+	light.light_from_view = Transform3D(Basis(), Vector3(0.0f, 0.0f, -5.0f));
+	CHECK_FALSE(AreaShadowAdaptiveRD::compute_light_grid(light, W, H, clip_from_view, DIVISOR, grid));
+	light.light_from_view = Transform3D(Basis(), Vector3(-200.0f, 0.0f, 5.0f));
+	CHECK_FALSE(AreaShadowAdaptiveRD::compute_light_grid(light, W, H, clip_from_view, DIVISOR, grid));
+}

@@ -8,6 +8,7 @@
 #include "core/error/error_macros.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 /* Settings and heuristic */
@@ -65,6 +66,8 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 	sampler = rd->sampler_create(ss);
 	query_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(QueryData));
 	rd->set_resource_name(query_buffer, "AreaShadowAdaptiveRD queries");
+	grid_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(GridData));
+	rd->set_resource_name(grid_buffer, "AreaShadowAdaptiveRD reprojection grids");
 	flag_buffers.clear();
 	for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
 		RID b = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(uint32_t));
@@ -82,7 +85,7 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 		}
 		return true;
 	});
-	ERR_FAIL_COND_V_MSG(!sampler.is_valid() || !query_buffer.is_valid(), false, "AreaShadowAdaptiveRD: GPU resources could not be created.");
+	ERR_FAIL_COND_V_MSG(!sampler.is_valid() || !query_buffer.is_valid() || !grid_buffer.is_valid(), false, "AreaShadowAdaptiveRD: GPU resources could not be created.");
 	initialized = true;
 	return true;
 }
@@ -93,7 +96,7 @@ void AreaShadowAdaptiveRD::finalize() {
 	settled.clear();
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	if (rd && rd->is_initialized()) {
-		RID all[] = { reprojection_pipeline, banding_pipeline, sampler, query_buffer, values_buffer };
+		RID all[] = { reprojection_pipeline, banding_pipeline, sampler, query_buffer, grid_buffer, values_buffer };
 		for (RID r : all) {
 			if (r.is_valid()) {
 				rd->free(r);
@@ -109,6 +112,7 @@ void AreaShadowAdaptiveRD::finalize() {
 	banding_pipeline = RID();
 	sampler = RID();
 	query_buffer = RID();
+	grid_buffer = RID();
 	values_buffer = RID();
 	values_capacity = 0;
 	flag_buffers.clear();
@@ -334,51 +338,124 @@ static void _fill_query(AreaShadowAdaptiveRD::QueryData &r_d, const AreaShadowAd
 	r_d.quadrant_size = std::max(r_d.tile_size / 2, 1u);
 }
 
-static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_reproj_shader, RID p_banding_shader, RID p_sampler, RID p_depth, uint32_t p_width, uint32_t p_height, uint32_t p_divisor, const Projection &p_clip_from_view, RID p_atlas, RID p_queries, RID p_values, RID p_flags, uint32_t p_count, const String &p_timestamp_prefix) {
+bool AreaShadowAdaptiveRD::compute_light_grid(const LightInput &p_light, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, uint32_t p_divisor, GridData &r_grid) {
+	memset(&r_grid, 0, sizeof(r_grid));
+	ERR_FAIL_COND_V_MSG(p_width == 0 || p_height == 0 || p_divisor == 0, false, vformat("Area shadow reprojection grid: bad view %u x %u or divisor %u.", p_width, p_height, p_divisor));
+	const uint32_t budget = std::max((p_width + p_divisor - 1) / p_divisor, 1u) * std::max((p_height + p_divisor - 1) / p_divisor, 1u);
+	uint32_t x0 = 0, y0 = 0, x1 = p_width, y1 = p_height;
+	uint32_t step = p_divisor;
+	const AABB &box = p_light.box;
+	if (box.size.x > 0.0f || box.size.y > 0.0f || box.size.z > 0.0f) {
+		// The 8 corners in view space; the parts behind the camera plane are clipped off (edges cut at z = -eps).
+		const Transform3D view_from_light = p_light.light_from_view.affine_inverse();
+		Vector3 c[8];
+		for (int i = 0; i < 8; i++) {
+			c[i] = view_from_light.xform(box.position + Vector3(box.size.x * real_t(i & 1), box.size.y * real_t((i >> 1) & 1), box.size.z * real_t((i >> 2) & 1)));
+		}
+		const real_t z_clip = -1e-4f;
+		std::vector<Vector3> pts;
+		for (int i = 0; i < 8; i++) {
+			if (c[i].z <= z_clip) {
+				pts.push_back(c[i]);
+			}
+			for (int bit = 1; bit < 8; bit <<= 1) {
+				int j = i | bit;
+				if (j == i) {
+					continue; // Each edge once: from the corner without the bit.
+				}
+				if ((c[i].z - z_clip) * (c[j].z - z_clip) < 0.0f) {
+					real_t t = (z_clip - c[i].z) / (c[j].z - c[i].z);
+					pts.push_back(c[i] + (c[j] - c[i]) * t);
+				}
+			}
+		}
+		if (pts.empty()) {
+			return false; // Wholly behind the camera.
+		}
+		real_t lo_x = 1e30f, lo_y = 1e30f, hi_x = -1e30f, hi_y = -1e30f;
+		for (const Vector3 &p : pts) {
+			Vector3 n = p_clip_from_view.xform(p);
+			if (!Math::is_finite(n.x) || !Math::is_finite(n.y)) {
+				lo_x = lo_y = -1e30f; // Degenerate: take the whole view.
+				hi_x = hi_y = 1e30f;
+				break;
+			}
+			lo_x = std::min(lo_x, n.x);
+			hi_x = std::max(hi_x, n.x);
+			lo_y = std::min(lo_y, n.y);
+			hi_y = std::max(hi_y, n.y);
+		}
+		auto to_pixel = [](real_t p_ndc, uint32_t p_size, bool p_up) {
+			double v = (double(p_ndc) * 0.5 + 0.5) * double(p_size);
+			v = p_up ? std::ceil(v) : std::floor(v);
+			return uint32_t(std::min(std::max(v, 0.0), double(p_size)));
+		};
+		x0 = to_pixel(lo_x, p_width, false);
+		x1 = to_pixel(hi_x, p_width, true);
+		y0 = to_pixel(lo_y, p_height, false);
+		y1 = to_pixel(hi_y, p_height, true);
+		if (x1 <= x0 || y1 <= y0) {
+			return false; // Off-screen.
+		}
+		// The finest step (>= 1: never finer than full resolution) that keeps the cells within the budget.
+		const uint32_t w = x1 - x0, h = y1 - y0;
+		step = std::max(uint32_t(std::floor(std::sqrt(double(w) * double(h) / double(budget)))), 1u);
+		while (((w + step - 1) / step) * ((h + step - 1) / step) > budget) {
+			step++;
+		}
+	}
+	r_grid.origin[0] = x0;
+	r_grid.origin[1] = y0;
+	r_grid.extent[0] = x1 - x0;
+	r_grid.extent[1] = y1 - y0;
+	r_grid.step = step;
+	r_grid.size[0] = std::max((r_grid.extent[0] + step - 1) / step, 1u);
+	r_grid.size[1] = std::max((r_grid.extent[1] + step - 1) / step, 1u);
+	return true;
+}
+
+static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_reproj_shader, RID p_banding_shader, RID p_sampler, RID p_depth, uint32_t p_width, uint32_t p_height, uint32_t p_max_cells, const Projection &p_clip_from_view, RID p_atlas, RID p_queries, RID p_grids, RID p_values, RID p_flags, uint32_t p_count, const String &p_timestamp_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
-	uint32_t ow = std::max((p_width + p_divisor - 1) / p_divisor, 1u);
-	uint32_t oh = std::max((p_height + p_divisor - 1) / p_divisor, 1u);
 	std::vector<RD::Uniform> u1 = {
 		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 0, p_depth),
 		RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 1, p_sampler),
 		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, p_atlas),
 		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, p_queries),
 		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 4, p_values),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, p_grids),
 	};
 	RID set1 = rd->uniform_set_create(u1, p_reproj_shader, 0);
 	std::vector<RD::Uniform> u2 = {
 		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, p_values),
 		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, p_flags),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, p_grids),
 	};
 	RID set2 = rd->uniform_set_create(u2, p_banding_shader, 0);
 	ERR_FAIL_COND_V_MSG(!set1.is_valid() || !set2.is_valid(), false, "Area shadow reprojection: uniform sets could not be created.");
 	AreaShadowAdaptiveRD::ReprojectionPushConstant rpc;
 	memset(&rpc, 0, sizeof(rpc));
 	p_clip_from_view.inverse().to_floats(rpc.view_from_clip);
-	rpc.out_size[0] = ow;
-	rpc.out_size[1] = oh;
 	rpc.depth_size[0] = p_width;
 	rpc.depth_size[1] = p_height;
-	rpc.scale = p_divisor;
+	rpc.max_cells = p_max_cells;
 	rpc.query_count = p_count;
 	AreaShadowAdaptiveRD::BandingPushConstant bpc;
-	bpc.size[0] = ow;
-	bpc.size[1] = oh;
+	memset(&bpc, 0, sizeof(bpc));
+	bpc.max_cells = p_max_cells;
 	bpc.query_count = p_count;
-	bpc.pad = 0;
 	rd->buffer_clear(p_flags, 0, p_count * sizeof(uint32_t));
 	RD::ComputeListID list = rd->compute_list_begin();
 	rd->compute_list_bind_compute_pipeline(list, p_reproj_pipeline);
 	rd->compute_list_bind_uniform_set(list, set1, 0);
 	rd->compute_list_set_push_constant(list, &rpc, sizeof(rpc));
-	rd->compute_list_dispatch_threads(list, ow, oh, p_count);
+	rd->compute_list_dispatch_threads(list, p_max_cells, 1, p_count);
 	if (!p_timestamp_prefix.empty()) {
 		rd->capture_timestamp(p_timestamp_prefix + "area_reprojection");
 	}
 	rd->compute_list_bind_compute_pipeline(list, p_banding_pipeline);
 	rd->compute_list_bind_uniform_set(list, set2, 0);
 	rd->compute_list_set_push_constant(list, &bpc, sizeof(bpc));
-	rd->compute_list_dispatch_threads(list, ow, oh, p_count);
+	rd->compute_list_dispatch_threads(list, p_max_cells, 1, p_count);
 	if (!p_timestamp_prefix.empty()) {
 		rd->capture_timestamp(p_timestamp_prefix + "area_banding");
 	}
@@ -400,7 +477,11 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 	}
 	std::vector<IssuedQuery> issued;
 	std::vector<QueryData> data;
+	std::vector<GridData> grids;
+	uint32_t cells = 0, max_cells = 0;
 	last_skipped_count = 0;
+	last_offscreen_count = 0;
+	last_cell_count = 0;
 	for (const LightInput &l : p_lights) {
 		auto it = trees.find(l.key);
 		if (it == trees.end()) {
@@ -410,6 +491,12 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 			last_skipped_count++; // Same view, same scene, and its last full round changed nothing.
 			continue;
 		}
+		GridData grid;
+		if (!compute_light_grid(l, p_width, p_height, p_clip_from_view, divisor, grid)) {
+			last_offscreen_count++; // Its range box is not on screen: nothing to see, nothing to test.
+			continue;
+		}
+		const uint32_t grid_cells = grid.size[0] * grid.size[1];
 		for (const AreaShadowQuadtree::Query &q : it->second->build_queries(l.can_grow)) {
 			if (issued.size() >= MAX_QUERIES_PER_FRAME) {
 				break; // The rest is tested on a later frame (the trees re-issue every frame).
@@ -422,6 +509,10 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 			issued.push_back(iq);
 			data.emplace_back();
 			_fill_query(data.back(), l, p_atlas, q);
+			grid.offset = cells;
+			grids.push_back(grid);
+			cells += grid_cells;
+			max_cells = std::max(max_cells, grid_cells);
 		}
 	}
 	if (issued.empty()) {
@@ -436,9 +527,7 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		return 0;
 	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
-	uint32_t ow = std::max((p_width + divisor - 1) / divisor, 1u);
-	uint32_t oh = std::max((p_height + divisor - 1) / divisor, 1u);
-	uint32_t need = ow * oh * uint32_t(issued.size());
+	uint32_t need = std::max(cells, 1u);
 	if (need > values_capacity) {
 		if (values_buffer.is_valid()) {
 			rd->free(values_buffer);
@@ -448,9 +537,11 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		rd->set_resource_name(values_buffer, "AreaShadowAdaptiveRD reprojection values");
 	}
 	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
-	if (!_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values_buffer, flag_buffers[slot], uint32_t(issued.size()), p_timestamp_prefix)) {
+	rd->buffer_update(grid_buffer, 0, uint32_t(grids.size() * sizeof(GridData)), grids.data());
+	if (!_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, max_cells, p_clip_from_view, p_atlas.texture, query_buffer, grid_buffer, values_buffer, flag_buffers[slot], uint32_t(issued.size()), p_timestamp_prefix)) {
 		return 0;
 	}
+	last_cell_count = cells;
 	slot_queries[slot] = issued;
 	slot_submissions[slot] = rd->get_frames_submitted();
 	last_query_count = uint32_t(issued.size());
@@ -462,18 +553,24 @@ std::vector<uint32_t> AreaShadowAdaptiveRD::test_queries_blocking(RID p_depth, u
 	ERR_FAIL_COND_V_MSG(p_queries.empty() || p_queries.size() > MAX_QUERIES_PER_FRAME, std::vector<uint32_t>(), vformat("AreaShadowAdaptiveRD::test_queries_blocking: %u queries (expected 1..%u).", uint32_t(p_queries.size()), MAX_QUERIES_PER_FRAME));
 	ERR_FAIL_COND_V(!_ensure_pipelines(), std::vector<uint32_t>());
 	RenderingDevice *rd = RenderingDevice::get_singleton();
+	GridData grid;
+	if (!compute_light_grid(p_light, p_width, p_height, p_clip_from_view, divisor, grid)) {
+		return std::vector<uint32_t>(p_queries.size(), 0u); // Off-screen: nothing can band.
+	}
+	const uint32_t grid_cells = grid.size[0] * grid.size[1];
 	std::vector<QueryData> data(p_queries.size());
+	std::vector<GridData> grids(p_queries.size(), grid);
 	for (size_t i = 0; i < p_queries.size(); i++) {
 		_fill_query(data[i], p_light, p_atlas, p_queries[i]);
+		grids[i].offset = uint32_t(i) * grid_cells;
 	}
-	uint32_t ow = std::max((p_width + divisor - 1) / divisor, 1u);
-	uint32_t oh = std::max((p_height + divisor - 1) / divisor, 1u);
 	uint32_t n = uint32_t(p_queries.size());
-	RID values = rd->storage_buffer_create(ow * oh * n * sizeof(float));
+	RID values = rd->storage_buffer_create(grid_cells * n * sizeof(float));
 	RID flags = rd->storage_buffer_create(n * sizeof(uint32_t));
 	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
+	rd->buffer_update(grid_buffer, 0, uint32_t(grids.size() * sizeof(GridData)), grids.data());
 	std::vector<uint32_t> out;
-	if (_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, divisor, p_clip_from_view, p_atlas.texture, query_buffer, values, flags, n, String())) {
+	if (_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, grid_cells, p_clip_from_view, p_atlas.texture, query_buffer, grid_buffer, values, flags, n, String())) {
 		std::vector<uint8_t> fb = rd->buffer_get_data(flags);
 		out.resize(n);
 		memcpy(out.data(), fb.data(), std::min(fb.size(), out.size() * sizeof(uint32_t)));

@@ -10,7 +10,9 @@
 /* (AreaShadowQuadtree: expand on banding, prune idle quads); the caller  */
 /* draws the tree's dirty points into the atlas and renders the scene;    */
 /* then dispatch() records the reprojection pass (the visibility of each  */
-/* tested quad's four corner maps at 1/divisor of the camera resolution,  */
+/* tested quad's four corner maps over the screen rectangle of the light's*/
+/* range box, at a per-light step that gives it at most the pixel budget  */
+/* of the whole view at 1/divisor, never finer than full resolution;      */
 /* shaders/area_shadow_reprojection.glsl) and the banding detector        */
 /* (shaders/area_shadow_banding.glsl) writing one flag per quad into this */
 /* frame's ring buffer. Nothing waits for the frame being built.          */
@@ -67,20 +69,32 @@ public:
 	};
 	static_assert(sizeof(QueryData) == 144, "QueryData must match shaders/area_shadow_reprojection.glsl.");
 
+	// Mirror of GridData in shaders/area_shadow_reprojection.glsl and area_shadow_banding.glsl (std430,
+	// 32 bytes): one query's reprojection grid. Cell (x, y) samples the depth pixel
+	// origin + (x, y) * step + step / 2 (clamped to origin + extent - 1); its value is
+	// values[offset + y * size.x + x].
+	struct GridData {
+		uint32_t origin[2]; // Depth pixels.
+		uint32_t size[2]; // Cells.
+		uint32_t step; // Depth pixels per cell (1 = full resolution).
+		uint32_t offset; // First value of the query.
+		uint32_t extent[2]; // Depth pixels covered (the rectangle).
+	};
+	static_assert(sizeof(GridData) == 32, "GridData must match shaders/area_shadow_reprojection.glsl.");
+
 	struct ReprojectionPushConstant {
 		float view_from_clip[16];
-		uint32_t out_size[2];
 		uint32_t depth_size[2];
-		uint32_t scale;
+		uint32_t max_cells; // Largest size.x * size.y of the queries (dispatch x).
 		uint32_t query_count;
-		uint32_t pad[2];
+		uint32_t pad[4];
 	};
 	static_assert(sizeof(ReprojectionPushConstant) == 96, "Push constant must match shaders/area_shadow_reprojection.glsl.");
 
 	struct BandingPushConstant {
-		uint32_t size[2];
+		uint32_t max_cells;
 		uint32_t query_count;
-		uint32_t pad;
+		uint32_t pad[2];
 	};
 
 	// What dispatch() needs of one ADAPTIVE light this frame.
@@ -91,6 +105,9 @@ public:
 		float depth_scale = 1.0f; // 1 / (range + diagonal), as the atlas.
 		float bias = 0.02f; // shadow_bias.
 		bool can_grow = true; // false: the atlas has no tile for a split (no expansion tests, prune tests only).
+		// The light's range box in light space (light_get_aabb()): its tests only cover the box's screen
+		// rectangle, at up to the whole view's pixel budget. Zero size: the whole view at 1/divisor.
+		AABB box;
 		// Everything the light's tests depend on (camera, light, casters and receivers, atlas); 0 = unknown.
 		// A light whose tests all came back without a change for this state is settled: it is not tested
 		// again until the state changes (set_skip_settled()).
@@ -136,6 +153,7 @@ private:
 	RID banding_pipeline;
 	RID sampler;
 	RID query_buffer; // QueryData[MAX_QUERIES_PER_FRAME].
+	RID grid_buffer; // GridData[MAX_QUERIES_PER_FRAME].
 	RID values_buffer; // float per (query, reduced pixel).
 	uint32_t values_capacity = 0; // Floats.
 	std::vector<RID> flag_buffers; // One per ring slot: uint per query.
@@ -151,6 +169,8 @@ private:
 	uint32_t max_depth = AreaShadowQuadtree::DEFAULT_MAX_DEPTH;
 	uint64_t frame = 0;
 	uint32_t last_query_count = 0;
+	uint32_t last_cell_count = 0;
+	uint32_t last_offscreen_count = 0;
 	uint32_t last_banding_count = 0;
 	uint64_t last_result_frame = 0;
 	// No-stall instrumentation (begin_frame()).
@@ -172,7 +192,8 @@ public:
 	void finalize();
 	bool is_initialized() const { return initialized; }
 
-	// Reprojection resolution = camera resolution / p_divisor (1..64, default 8).
+	// Reprojection budget: each light gets at most as many cells as the whole view at 1/p_divisor
+	// (1..64, default 8), spread over its range box's screen rectangle, never finer than full resolution.
 	bool set_reprojection_divisor(uint32_t p_divisor);
 	uint32_t get_reprojection_divisor() const { return divisor; }
 	// Deepest subdivision (1..3: the GPU map packing holds 9 x 9 points at most).
@@ -208,6 +229,12 @@ public:
 	// reprojection and + "area_banding" after the banding detector (the renderer's profiler passes).
 	uint32_t dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights, const String &p_timestamp_prefix = String());
 
+	// The reprojection grid of p_light in a p_width x p_height view (offset 0): the screen rectangle of
+	// its range box (the 8 corners, clipped at the camera plane, clamped to the viewport; the whole view
+	// when the box is empty) at the smallest step >= 1 whose cell count fits
+	// ceil(w / p_divisor) * ceil(h / p_divisor). false when the box is off-screen.
+	static bool compute_light_grid(const LightInput &p_light, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, uint32_t p_divisor, GridData &r_grid);
+
 	// Lower level, for tests: tests p_queries against the given atlas now and returns the flags
 	// (flushes: submit + sync).
 	std::vector<uint32_t> test_queries_blocking(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const LightInput &p_light, const std::vector<AreaShadowQuadtree::Query> &p_queries, std::vector<float> *r_values = nullptr);
@@ -226,6 +253,9 @@ public:
 	bool is_reprojection_compiled() const { return reprojection_shader.is_variant_created(0); }
 	const AreaShadowReadbackRing &get_ring() const { return ring; }
 	uint32_t get_last_query_count() const { return last_query_count; }
+	// Reprojection cells of the last dispatch() (all queries), and lights it skipped as off-screen.
+	uint32_t get_last_cell_count() const { return last_cell_count; }
+	uint32_t get_last_offscreen_count() const { return last_offscreen_count; }
 	uint32_t get_last_banding_count() const { return last_banding_count; }
 	uint64_t get_last_result_frame() const { return last_result_frame; }
 	// No stall: flag buffers read so far, and how many of those reads touched data of a submission that had

@@ -465,6 +465,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			in.depth_scale = 1.0f / (lf.range + lf.size.length());
 			in.bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BIAS);
 			in.can_grow = atlas.get_free_tile_count() >= 5; // A split needs up to five new points.
+			in.box = light_storage->light_get_aabb(li.light); // Its tests cover the box's screen rectangle.
 			uint64_t state = view_hash;
 			_hash_bytes(state, &al.hash, sizeof(al.hash));
 			_hash_bytes(state, &in.bias, sizeof(in.bias));

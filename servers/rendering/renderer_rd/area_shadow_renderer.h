@@ -194,8 +194,9 @@ public:
 	const AreaShadowAdaptiveRD *get_adaptive() const { return current ? current->adaptive.get() : nullptr; }
 	// True once any atlas compiled the reprojection shader (an ADAPTIVE light had a quad to test).
 	bool is_reprojection_compiled() const;
-	// Reprojection resolution = camera / p_divisor (1..64) for every atlas, now and later; 0 = the project
-	// setting (rendering/lights_and_shadows/area_shadow_reprojection_divisor).
+	// Reprojection budget = the cells of the whole view at camera / p_divisor (1..64), spent per light on its
+	// range box's screen rectangle (never finer than full resolution), for every atlas, now and later; 0 = the
+	// project setting (rendering/lights_and_shadows/area_shadow_reprojection_divisor).
 	bool set_adaptive_reprojection_divisor(uint32_t p_divisor);
 	// On (default): an ADAPTIVE light whose last full round of tests changed nothing is not tested again
 	// while its camera, light, casters, receivers and atlas stay the same (a static view costs no
