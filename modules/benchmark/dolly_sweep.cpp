@@ -314,10 +314,12 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 				row.subdivision = sub;
 				row.tile = p_options.atlas / sub;
 
-				// Converge: the map count unchanged for converge_stable frames in a row.
+				// Converge with the light at rest (a static view): the map count unchanged for converge_stable
+				// frames in a row. The 1 cm light jitter of the timed frames would move the shadow edge between
+				// two positions and make ADAPTIVE's banding answers alternate.
 				int last = -1, stable = 0;
 				while (row.converge_frames < p_options.converge_max) {
-					render_frame(true);
+					render_frame(false);
 					row.converge_frames++;
 					int maps = map_count();
 					stable = maps == last ? stable + 1 : 1;
