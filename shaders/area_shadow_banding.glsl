@@ -4,8 +4,9 @@
 /* Banding detector of adaptive area shadows (thesis 6.3): a tested quad  */
 /* bands when some penumbra pixel of its reprojection image (0 < v < 1)   */
 /* is surrounded by eight pixels of exactly the same value, i.e. its      */
-/* four samples leave visible steps wider than a pixel. One flag per      */
-/* query (flags[query] = 1); threads exit early once the flag is set.     */
+/* four samples leave visible steps wider than a pixel. One flag word per */
+/* query: bit 0 banding, bit 1 some cell is in the quad's penumbra (the   */
+/* quadtree's same-depth rule); threads exit early once both are set.     */
 /* Each query has its own grid (GridData, x = cell index).                */
 /* Input: area_shadow_reprojection.glsl's values. C++: AreaShadowAdaptiveRD*/
 /* (servers/rendering/renderer_rd/area_shadow_adaptive.h).                */
@@ -61,16 +62,22 @@ void main() {
 		return;
 	}
 	uvec2 cell = uvec2(id.x % g.size.x, id.x / g.size.x);
-	if (cell.x < 1u || cell.y < 1u || cell.x + 1u >= g.size.x || cell.y + 1u >= g.size.y) {
-		return; // Border cells have no full neighbourhood.
-	}
-	if (flags.data[id.z] != 0u) {
-		return; // Early exit: this quad already bands.
+	if (flags.data[id.z] == 3u) {
+		return; // Early exit: this quad already bands and has a penumbra.
 	}
 	ivec2 p = ivec2(cell);
 	float v = value_at(g, p);
 	if (!(v > 0.0 && v < 1.0)) {
 		return; // Lit, umbra or no receiver.
+	}
+	if ((flags.data[id.z] & 2u) == 0u) {
+		atomicOr(flags.data[id.z], 2u); // The quad's penumbra is on screen.
+	}
+	if (cell.x < 1u || cell.y < 1u || cell.x + 1u >= g.size.x || cell.y + 1u >= g.size.y) {
+		return; // Border cells have no full neighbourhood.
+	}
+	if ((flags.data[id.z] & 1u) != 0u) {
+		return;
 	}
 	for (int y = -1; y <= 1; y++) {
 		for (int x = -1; x <= 1; x++) {

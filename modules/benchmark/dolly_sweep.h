@@ -9,25 +9,27 @@
 /* spaced geometrically). For each shadow mode (ADAPTIVE, HEURISTIC,      */
 /* FIXED 5 x 5, FIXED 9 x 9 by default) the camera dollies in once:       */
 /*                                                                        */
-/*  converge  at each position, frames until the light's map count is   */
-/*            unchanged for `converge_stable` frames (cap                */
-/*            `converge_max`; ADAPTIVE's tree changes over frames and    */
-/*            carries over from the previous position, as in a dolly);   */
-/*  timing    `frames` frames with the light moving by 1 cm every other  */
-/*            frame, so every map is redrawn each frame (the thesis'     */
-/*            animated light): median GPU ms per profiler pass           */
-/*            ("area_shadows" = shadow maps; passes whose name contains  */
-/*            "reproj" / "band" = the adaptive reprojection / banding    */
-/*            passes; total = every pass of the frame);                  */
-/*  error     one frame with the light at rest: visibility (shadowed /   */
-/*            unshadowed) RMSE against the Embree reference with shadow  */
-/*            rays at ref_width x ref_height, the engine rendering at    */
-/*            supersample times that (odd: pixel centres coincide).      */
+/*  converge  at each position, frames until the light's map count is     */
+/*            unchanged for `converge_stable` frames (cap                 */
+/*            `converge_max`; ADAPTIVE's tree changes over frames and     */
+/*            carries over from the previous position, as in a dolly);    */
+/*  timing    `frames` frames with the light moving by 1 cm every other   */
+/*            frame, so every map is redrawn each frame (the thesis'      */
+/*            animated light): median GPU ms per profiler pass            */
+/*            ("area_shadows" = shadow maps; passes whose name contains   */
+/*            "reproj" / "band" = the adaptive reprojection / banding     */
+/*            passes; total = every pass of the frame);                   */
+/*  error     one frame with the light at rest: visibility (shadowed /    */
+/*            unshadowed) RMSE against the Embree reference with shadow   */
+/*            rays at ref_width x ref_height, the engine rendering at     */
+/*            supersample times that (odd: pixel centres coincide).       */
 /*                                                                        */
-/* Atlas (thesis 6.4): `atlas` px split in `subdivision` tiles per side   */
-/* (2048 / 8 = 256 px tiles, at most 64 maps) for ADAPTIVE, HEURISTIC and */
-/* fixed grids that fit; a fixed grid that does not (81 maps) gets the    */
-/* next power of two (16: 128 px tiles, the thesis' "slightly smaller"). */
+/* Atlas: `atlas` px split in `subdivision` tiles per side (default       */
+/* 4096 / 16: 256 tiles of 256 px), so every mode, FIXED 9 x 9 and a      */
+/* fully refined ADAPTIVE tree included, draws maps of one resolution     */
+/* and no mode is limited by the tile count (the thesis gave its 81-map   */
+/* grid smaller tiles; that mixes tile size into the comparison). A       */
+/* fixed grid that does not fit gets the next power-of-two subdivision.   */
 /* RenderForwardClustered is driven directly (no RenderingServer); a      */
 /* RenderingDevice is created when none exists.                           */
 
@@ -55,8 +57,8 @@ public:
 		int ref_width = 96; // Reference (error) image.
 		int ref_height = 54;
 		int supersample = 3; // Engine image = reference x this (odd).
-		int atlas = 2048;
-		int subdivision = 8;
+		int atlas = 4096;
+		int subdivision = 16;
 		int frames = 7; // Timed frames per position.
 		int converge_max = 40;
 		int converge_stable = 4;

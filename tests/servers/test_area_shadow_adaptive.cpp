@@ -141,10 +141,11 @@ TEST_CASE("[AreaShadowAdaptive] reprojection and banding detector on a synthetic
 		std::vector<uint32_t> flags = adaptive.test_queries_blocking(scene.depth, W, H, scene.clip_from_view, scene.atlas_info, scene.light, queries, &values);
 		CHECK(adaptive.is_reprojection_compiled());
 		REQUIRE(flags.size() == 4);
-		CHECK(flags[0] != 0);
-		CHECK(flags[1] == 0);
-		CHECK(flags[2] == 0);
-		CHECK(flags[3] != 0);
+		const uint32_t both = AreaShadowAdaptiveRD::FLAG_BANDING | AreaShadowAdaptiveRD::FLAG_PENUMBRA;
+		CHECK(flags[0] == both);
+		CHECK(flags[1] == 0); // Lit: neither banding nor penumbra.
+		CHECK(flags[2] == 0); // Umbra.
+		CHECK(flags[3] == both);
 		const uint32_t g = W / AreaShadowAdaptiveRD::DEFAULT_REPROJECTION_DIVISOR; // 8 x 8 grid.
 		REQUIRE(values.size() >= 4 * g * g);
 		const float expected[4] = { 0.5f, 1.0f, 0.0f, 0.75f };

@@ -240,6 +240,85 @@ TEST_CASE("[AreaShadowQuadtree] idle leaves, queries and stale answers") {
 	}
 }
 
+TEST_CASE("[AreaShadowQuadtree] same-depth rule: a banding quad refines the quads of its depth that see a penumbra") {
+	TilePool pool(81);
+	AreaShadowQuadtree tree;
+	REQUIRE(tree.reset(&pool));
+	REQUIRE(tree.expand(AreaShadowQuadtree::root_key()));
+	draw_all(tree);
+	std::vector<AreaShadowQuadtree::Query> q = tree.build_queries();
+	REQUIRE(q.size() == 4);
+	auto answer = [](const AreaShadowQuadtree::Query &p_q, bool p_banding, bool p_penumbra) {
+		AreaShadowQuadtree::Result r{ p_q.node, p_q.version, p_q.parent_test, p_banding };
+		r.penumbra = p_penumbra;
+		return r;
+	};
+	auto find = [](const std::vector<AreaShadowQuadtree::Query> &p_list, uint64_t p_node, bool p_parent) -> const AreaShadowQuadtree::Query * {
+		for (const AreaShadowQuadtree::Query &x : p_list) {
+			if (x.node == p_node && x.parent_test == p_parent) {
+				return &x;
+			}
+		}
+		return nullptr;
+	};
+	// (0,0) bands; (1,0) and (0,1) see a penumbra without a visible step; (1,1) sees none (lit or umbra).
+	std::vector<AreaShadowQuadtree::Result> r = {
+		answer(*find(q, key(1, 0, 0), false), true, true),
+		answer(*find(q, key(1, 1, 0), false), false, true),
+		answer(*find(q, key(1, 0, 1), false), false, true),
+		answer(*find(q, key(1, 1, 1), false), false, false),
+	};
+	tree.begin_frame();
+	CHECK(tree.apply_results(r) == 3);
+	CHECK_FALSE(tree.node_is_leaf(key(1, 0, 0)));
+	CHECK_FALSE(tree.node_is_leaf(key(1, 1, 0)));
+	CHECK_FALSE(tree.node_is_leaf(key(1, 0, 1)));
+	CHECK(tree.node_is_leaf(key(1, 1, 1)));
+	CHECK(tree.node_is_idle(key(1, 1, 1)));
+	check_accounting(tree, pool);
+	// Without any banding quad, a penumbra alone expands nothing.
+	{
+		TilePool pool2(81);
+		AreaShadowQuadtree t2;
+		REQUIRE(t2.reset(&pool2));
+		REQUIRE(t2.expand(AreaShadowQuadtree::root_key()));
+		draw_all(t2);
+		std::vector<AreaShadowQuadtree::Result> quiet;
+		for (const AreaShadowQuadtree::Query &x : t2.build_queries()) {
+			quiet.push_back(answer(x, false, true));
+		}
+		t2.begin_frame();
+		CHECK(t2.apply_results(quiet) == 0);
+		CHECK(t2.get_leaf_count() == 4);
+	}
+	// The depth-2 leaves come back clean: the three depth-1 parents are tested for pruning. One still bands:
+	// none of them is pruned (their steps are as wide). Then none bands: all three are pruned.
+	draw_all(tree);
+	q = tree.build_queries();
+	std::vector<AreaShadowQuadtree::Result> clean;
+	for (const AreaShadowQuadtree::Query &x : q) {
+		clean.push_back(answer(x, false, true));
+	}
+	tree.begin_frame();
+	CHECK(tree.apply_results(clean) == 0);
+	q = tree.build_queries();
+	const AreaShadowQuadtree::Query *p00 = find(q, key(1, 0, 0), true);
+	const AreaShadowQuadtree::Query *p10 = find(q, key(1, 1, 0), true);
+	const AreaShadowQuadtree::Query *p01 = find(q, key(1, 0, 1), true);
+	REQUIRE(p00);
+	REQUIRE(p10);
+	REQUIRE(p01);
+	std::vector<AreaShadowQuadtree::Result> one_bands = { answer(*p00, true, true), answer(*p10, false, true), answer(*p01, false, true) };
+	tree.begin_frame();
+	CHECK(tree.apply_results(one_bands) == 0);
+	CHECK(tree.get_point_count() == 9 + 5 + 5 + 5 - 2); // (1,0,0)'s children share edges with the other two.
+	std::vector<AreaShadowQuadtree::Result> none_bands = { answer(*p00, false, true), answer(*p10, false, true), answer(*p01, false, true) };
+	tree.begin_frame();
+	CHECK(tree.apply_results(none_bands) == 3);
+	CHECK(tree.get_point_count() == 9);
+	check_accounting(tree, pool);
+}
+
 TEST_CASE("[AreaShadowQuadtree] point weights sum to one") {
 	TilePool pool(81);
 	AreaShadowQuadtree tree;

@@ -262,8 +262,9 @@ void AreaShadowAdaptiveRD::begin_frame() {
 			const uint32_t *flags = reinterpret_cast<const uint32_t *>(bytes.data());
 			for (size_t i = 0; i < issued.size(); i++) {
 				const AreaShadowQuadtree::Query &q = issued[i].query;
-				results[issued[i].light].push_back({ q.node, q.version, q.parent_test, flags[i] != 0 });
-				last_banding_count += flags[i] != 0 ? 1 : 0;
+				const bool banding = (flags[i] & FLAG_BANDING) != 0;
+				results[issued[i].light].push_back({ q.node, q.version, q.parent_test, banding, (flags[i] & FLAG_PENUMBRA) != 0 });
+				last_banding_count += banding ? 1 : 0;
 			}
 		}
 		last_result_frame = data_frame;

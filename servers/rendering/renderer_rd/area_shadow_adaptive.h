@@ -53,6 +53,9 @@ public:
 	static constexpr const char *SETTING_REPROJECTION_DIVISOR = "rendering/lights_and_shadows/area_shadow_reprojection_divisor";
 	static constexpr const char *SETTING_MAX_DEPTH = "rendering/lights_and_shadows/area_shadow_adaptive_max_depth";
 	static constexpr uint32_t MAX_GPU_DEPTH = 3; // 9 x 9 maps: the AreaShadowData packing's limit.
+	// Bits of a query's flag word (shaders/area_shadow_banding.glsl).
+	static constexpr uint32_t FLAG_BANDING = 1;
+	static constexpr uint32_t FLAG_PENUMBRA = 2; // Some cell is in the quad's penumbra (0 < v < 1).
 
 	// Mirror of QueryData in shaders/area_shadow_reprojection.glsl (std430, 144 bytes).
 	struct QueryData {

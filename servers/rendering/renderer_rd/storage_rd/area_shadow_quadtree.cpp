@@ -220,7 +220,15 @@ uint32_t AreaShadowQuadtree::apply_results(const std::vector<Result> &p_results)
 			n.idle = true;
 		}
 	}
-	// Leaves first: expand on banding, otherwise idle.
+	// Depths where some current (not stale) answer bands: the same-depth rule.
+	uint32_t banding_depths = 0;
+	for (const Result &r : p_results) {
+		auto it = nodes.find(r.node);
+		if (r.banding && it != nodes.end() && it->second.version == r.version && it->second.depth < 32) {
+			banding_depths |= 1u << it->second.depth;
+		}
+	}
+	// Leaves first: expand on banding (or a penumbra at a banding depth), otherwise idle.
 	for (const Result &r : p_results) {
 		if (r.parent_test) {
 			continue;
@@ -229,7 +237,8 @@ uint32_t AreaShadowQuadtree::apply_results(const std::vector<Result> &p_results)
 		if (it == nodes.end() || it->second.version != r.version || it->second.has_children) {
 			continue; // Stale: the node changed since the test was issued.
 		}
-		if (r.banding) {
+		const bool depth_bands = (banding_depths >> it->second.depth) & 1u;
+		if (r.banding || (r.penumbra && depth_bands)) {
 			it->second.idle = false;
 			if (expand(r.node)) {
 				changed++;
@@ -238,7 +247,7 @@ uint32_t AreaShadowQuadtree::apply_results(const std::vector<Result> &p_results)
 			it->second.idle = true;
 		}
 	}
-	// Then the checked parents: no banding with their children merged back -> prune.
+	// Then the checked parents: no banding with their children merged back (and none at their depth) -> prune.
 	for (const Result &r : p_results) {
 		if (!r.parent_test || r.banding) {
 			continue;
@@ -246,6 +255,9 @@ uint32_t AreaShadowQuadtree::apply_results(const std::vector<Result> &p_results)
 		auto it = nodes.find(r.node);
 		if (it == nodes.end() || it->second.version != r.version || !_children_idle_leaves(it->second)) {
 			continue;
+		}
+		if ((banding_depths >> it->second.depth) & 1u) {
+			continue; // A quad of this depth bands: its steps are as wide here.
 		}
 		if (prune(r.node)) {
 			changed++;

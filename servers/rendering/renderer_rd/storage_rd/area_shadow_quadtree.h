@@ -78,6 +78,9 @@ public:
 		uint32_t version = 0;
 		bool parent_test = false;
 		bool banding = false;
+		// The test saw the quad's penumbra (a receiver cell with 0 < v < 1). Same-depth rule of
+		// apply_results(): a leaf that sees its penumbra expands when a quad of its depth bands.
+		bool penumbra = false;
 	};
 
 	// Inputs of the analytic heuristic (thesis 6.5). Distances in metres, angles in radians.
@@ -157,6 +160,12 @@ public:
 	uint64_t get_frame() const { return frame; }
 	// Applies banding answers (Algorithm 1): leaves with banding expand, leaves without become idle,
 	// parents without banding are pruned. Stale answers are ignored. Returns how many nodes changed.
+	// Same-depth rule (ours, beyond the thesis): quads of one depth have one size, so under one occluder
+	// and receiver they throw penumbrae of one width and steps of one size; when any quad of depth d
+	// bands in p_results, every depth-d leaf whose test saw its penumbra expands too, and no depth-d
+	// parent is pruned. A detector that misses a step on one quad (its penumbra off-screen, between
+	// reprojection cells) then no longer leaves a coarse quad beside fine ones, whose steps dominate the
+	// error; trees stay uniform where the whole light throws the penumbra.
 	uint32_t apply_results(const std::vector<Result> &p_results);
 	// Tests to run this frame: expansion tests of leaves above the maximum depth whose corners are drawn
 	// (p_expansion_tests false skips them, e.g. when the atlas has no free tile), then prune tests of
