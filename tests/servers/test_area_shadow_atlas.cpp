@@ -238,6 +238,17 @@ TEST_CASE("[AreaShadowAtlas] fair sharing follows importance with hysteresis and
 	CHECK(atlas.light_get_tile_count(5) >= 4);
 }
 
+TEST_CASE("[AreaShadowAtlas] a light gets the grid it asks for when the tiles are free") {
+	AreaShadowAtlas atlas;
+	REQUIRE(atlas.configure(1024, 16)); // 256 tiles.
+	for (uint32_t grid : { 5u, 6u, 7u, 9u, 6u, 3u }) {
+		for (int f = 0; f < 4; f++) {
+			frame(atlas, { { 1, 1.0f } }, grid);
+		}
+		CHECK_MESSAGE(atlas.light_get_maps(1).size() == grid * grid, "area_shadow_grid ", grid);
+	}
+}
+
 TEST_CASE("[AreaShadowAtlas] importance grows with screen coverage and light size") {
 	Projection proj = Projection::create_perspective(60.0f, 1.0f, 0.1f, 100.0f);
 	Transform3D cam; // At the origin looking down -Z.
