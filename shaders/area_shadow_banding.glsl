@@ -4,41 +4,42 @@
 /* Banding detector of adaptive area shadows (thesis 6.3): a tested quad  */
 /* bands when some penumbra pixel of its reprojection image (0 < v < 1)   */
 /* is surrounded by eight pixels of exactly the same value, i.e. its      */
-/* four samples leave visible steps wider than a pixel. One flag word per */
+/* four samples leave visible steps wider than a pixel. A quad's value at */
+/* a cell is the plain mean of its four corners' visibility bits written  */
+/* by area_shadow_reprojection.glsl (-1: no receiver). One flag word per  */
 /* query: bit 0 banding, bit 1 some cell is in the quad's penumbra (the   */
 /* quadtree's same-depth rule); threads exit early once both are set.     */
-/* Each query has its own grid (GridData, x = cell index).                */
-/* Input: area_shadow_reprojection.glsl's values. C++: AreaShadowAdaptiveRD*/
-/* (servers/rendering/renderer_rd/area_shadow_adaptive.h).                */
+/* x = cell index of the quad's light grid, z = query. C++:               */
+/* AreaShadowAdaptiveRD (servers/rendering/renderer_rd/                   */
+/* area_shadow_adaptive.h).                                               */
 
 #[compute]
 
 #version 450
 
+#include "area_shadow_adaptive_inc.glsl"
+
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
-layout(set = 0, binding = 0, std430) restrict readonly buffer Values {
-	float data[];
+layout(set = 0, binding = 0, std430) restrict readonly buffer Visibility {
+	uint data[];
 }
-values;
+visibility;
 
 layout(set = 0, binding = 1, std430) restrict coherent buffer Flags {
 	uint data[];
 }
 flags;
 
-struct GridData { // std430, 32 bytes: as in area_shadow_reprojection.glsl.
-	uvec2 origin;
-	uvec2 size; // Cells.
-	uint step;
-	uint offset; // First value of the query.
-	uvec2 extent;
-};
-
-layout(set = 0, binding = 2, std430) restrict readonly buffer Grids {
-	GridData data[];
+layout(set = 0, binding = 2, std430) restrict readonly buffer Lights {
+	LightData data[];
 }
-grids;
+lights;
+
+layout(set = 0, binding = 3, std430) restrict readonly buffer Queries {
+	QueryData data[];
+}
+queries;
 
 layout(push_constant, std430) uniform Params { // 16 bytes.
 	uint max_cells; // Largest grid (dispatch x).
@@ -48,8 +49,21 @@ layout(push_constant, std430) uniform Params { // 16 bytes.
 }
 params;
 
-float value_at(GridData p_grid, ivec2 p_cell) {
-	return values.data[p_grid.offset + uint(p_cell.y) * p_grid.size.x + uint(p_cell.x)];
+bool bit_at(uint p_base, uint p_bit) {
+	return ((visibility.data[p_base + (p_bit >> 5u)] >> (p_bit & 31u)) & 1u) != 0u;
+}
+
+// The quad's value at a cell: the mean of its corners' bits, -1 without a receiver.
+float value_at(GridData p_grid, uint p_words, uvec4 p_corners, ivec2 p_cell) {
+	uint base = p_grid.offset + (uint(p_cell.y) * p_grid.size.x + uint(p_cell.x)) * p_words;
+	if ((visibility.data[base] & 1u) == 0u) {
+		return -1.0;
+	}
+	uint n = 0u;
+	for (uint c = 0u; c < 4u; c++) {
+		n += bit_at(base, p_corners[c] + 1u) ? 1u : 0u;
+	}
+	return float(n) * 0.25;
 }
 
 void main() {
@@ -57,7 +71,9 @@ void main() {
 	if (id.z >= params.query_count) {
 		return;
 	}
-	GridData g = grids.data[id.z];
+	QueryData q = queries.data[id.z];
+	LightData l = lights.data[q.light];
+	GridData g = l.grid;
 	if (id.x >= g.size.x * g.size.y) {
 		return;
 	}
@@ -66,7 +82,7 @@ void main() {
 		return; // Early exit: this quad already bands and has a penumbra.
 	}
 	ivec2 p = ivec2(cell);
-	float v = value_at(g, p);
+	float v = value_at(g, l.words, q.corners, p);
 	if (!(v > 0.0 && v < 1.0)) {
 		return; // Lit, umbra or no receiver.
 	}
@@ -81,7 +97,7 @@ void main() {
 	}
 	for (int y = -1; y <= 1; y++) {
 		for (int x = -1; x <= 1; x++) {
-			if (value_at(g, p + ivec2(x, y)) != v) {
+			if (value_at(g, l.words, q.corners, p + ivec2(x, y)) != v) {
 				return;
 			}
 		}

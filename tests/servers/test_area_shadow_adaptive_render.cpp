@@ -310,6 +310,10 @@ TEST_CASE("[AreaShadowAdaptive][Render] a static view converges within a bounded
 		CHECK(tree->get_point_count() == points);
 		CHECK(draws == 0); // Static: no map is redrawn.
 		CHECK(a->get_last_query_count() > 0); // Still testing every frame (idle leaves and parents).
+		// Neighbouring quads share corners: each corner map is read once per cell, not once per quad.
+		MESSAGE("last round: ", a->get_last_query_count(), " quads, ", a->get_last_point_count(), " distinct corner points");
+		CHECK(a->get_last_point_count() < 4 * a->get_last_query_count());
+		CHECK(a->get_last_point_count() <= points);
 		CHECK(older_only);
 		CHECK(decisions >= 300);
 		CHECK(a->get_current_frame_read_count() == 0);

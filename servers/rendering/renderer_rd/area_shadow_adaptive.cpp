@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 
 /* Settings and heuristic */
 
@@ -66,8 +67,10 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 	sampler = rd->sampler_create(ss);
 	query_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(QueryData));
 	rd->set_resource_name(query_buffer, "AreaShadowAdaptiveRD queries");
-	grid_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(GridData));
-	rd->set_resource_name(grid_buffer, "AreaShadowAdaptiveRD reprojection grids");
+	light_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(LightData));
+	rd->set_resource_name(light_buffer, "AreaShadowAdaptiveRD lights");
+	point_buffer = rd->storage_buffer_create(4 * MAX_QUERIES_PER_FRAME * sizeof(PointData));
+	rd->set_resource_name(point_buffer, "AreaShadowAdaptiveRD sample points");
 	flag_buffers.clear();
 	for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
 		RID b = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(uint32_t));
@@ -85,7 +88,7 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 		}
 		return true;
 	});
-	ERR_FAIL_COND_V_MSG(!sampler.is_valid() || !query_buffer.is_valid() || !grid_buffer.is_valid(), false, "AreaShadowAdaptiveRD: GPU resources could not be created.");
+	ERR_FAIL_COND_V_MSG(!sampler.is_valid() || !query_buffer.is_valid() || !light_buffer.is_valid() || !point_buffer.is_valid(), false, "AreaShadowAdaptiveRD: GPU resources could not be created.");
 	initialized = true;
 	return true;
 }
@@ -96,7 +99,7 @@ void AreaShadowAdaptiveRD::finalize() {
 	settled.clear();
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	if (rd && rd->is_initialized()) {
-		RID all[] = { reprojection_pipeline, banding_pipeline, sampler, query_buffer, grid_buffer, values_buffer };
+		RID all[] = { reprojection_pipeline, banding_pipeline, sampler, query_buffer, light_buffer, point_buffer, values_buffer };
 		for (RID r : all) {
 			if (r.is_valid()) {
 				rd->free(r);
@@ -112,7 +115,8 @@ void AreaShadowAdaptiveRD::finalize() {
 	banding_pipeline = RID();
 	sampler = RID();
 	query_buffer = RID();
-	grid_buffer = RID();
+	light_buffer = RID();
+	point_buffer = RID();
 	values_buffer = RID();
 	values_capacity = 0;
 	flag_buffers.clear();
@@ -321,23 +325,62 @@ bool AreaShadowAdaptiveRD::is_light_settled(uint64_t p_light, uint64_t p_state_h
 	return it != settled.end() && p_state_hash != 0 && it->second == p_state_hash;
 }
 
-static void _fill_query(AreaShadowAdaptiveRD::QueryData &r_d, const AreaShadowAdaptiveRD::LightInput &p_light, const AreaShadowAdaptiveRD::AtlasInfo &p_atlas, const AreaShadowQuadtree::Query &p_q) {
-	memset(&r_d, 0, sizeof(r_d));
-	Projection::from_transform(p_light.light_from_view).to_floats(r_d.light_from_view);
-	r_d.half_size[0] = p_light.size.x * 0.5f;
-	r_d.half_size[1] = p_light.size.y * 0.5f;
-	r_d.depth_scale = p_light.depth_scale;
-	r_d.bias = p_light.bias;
-	for (uint32_t c = 0; c < 4; c++) {
-		r_d.corner_uv[c * 2 + 0] = p_q.corner_uv[c].x;
-		r_d.corner_uv[c * 2 + 1] = p_q.corner_uv[c].y;
-		r_d.corner_tile[c] = p_q.corner_tile[c];
+// One frame's input of the passes: the lights under test (grid, sample points), the corner points of their
+// tested quads (each point once per light: neighbouring quads share corners), and the quads.
+struct AreaShadowAdaptiveRD::PassData {
+	std::vector<AreaShadowAdaptiveRD::LightData> lights;
+	std::vector<AreaShadowAdaptiveRD::PointData> points;
+	std::vector<AreaShadowAdaptiveRD::QueryData> queries;
+	uint32_t words = 0; // Visibility words of all lights.
+	uint32_t cells = 0;
+	uint32_t max_cells = 0;
+
+	void add_light(const AreaShadowAdaptiveRD::LightInput &p_light, const AreaShadowAdaptiveRD::AtlasInfo &p_atlas, const AreaShadowAdaptiveRD::GridData &p_grid, const std::vector<AreaShadowQuadtree::Query> &p_queries) {
+		AreaShadowAdaptiveRD::LightData l;
+		memset(&l, 0, sizeof(l));
+		Projection::from_transform(p_light.light_from_view).to_floats(l.light_from_view);
+		l.half_size[0] = p_light.size.x * 0.5f;
+		l.half_size[1] = p_light.size.y * 0.5f;
+		l.depth_scale = p_light.depth_scale;
+		l.bias = p_light.bias;
+		const uint32_t sub = std::max(p_atlas.subdivision, 1u);
+		l.atlas_subdivision = sub;
+		l.tile_size = p_atlas.size / sub;
+		l.quadrant_size = std::max(l.tile_size / 2, 1u);
+		l.point_offset = uint32_t(points.size());
+		const uint32_t light_index = uint32_t(lights.size());
+		std::map<std::tuple<uint32_t, real_t, real_t>, uint32_t> by_tile; // A point: its map and its place.
+		for (const AreaShadowQuadtree::Query &q : p_queries) {
+			AreaShadowAdaptiveRD::QueryData d;
+			memset(&d, 0, sizeof(d));
+			d.light = light_index;
+			for (uint32_t c = 0; c < 4; c++) {
+				const std::tuple<uint32_t, real_t, real_t> point_key(q.corner_tile[c], q.corner_uv[c].x, q.corner_uv[c].y);
+				auto it = by_tile.find(point_key);
+				if (it == by_tile.end()) {
+					AreaShadowAdaptiveRD::PointData pt;
+					pt.uv[0] = q.corner_uv[c].x;
+					pt.uv[1] = q.corner_uv[c].y;
+					pt.tile = q.corner_tile[c];
+					pt.pad = 0;
+					points.push_back(pt);
+					it = by_tile.emplace(point_key, uint32_t(by_tile.size())).first;
+				}
+				d.corners[c] = it->second;
+			}
+			queries.push_back(d);
+		}
+		l.point_count = uint32_t(by_tile.size());
+		l.words = (l.point_count + 1 + 31) / 32;
+		l.grid = p_grid;
+		l.grid.offset = words;
+		const uint32_t grid_cells = p_grid.size[0] * p_grid.size[1];
+		words += grid_cells * l.words;
+		cells += grid_cells;
+		max_cells = std::max(max_cells, grid_cells);
+		lights.push_back(l);
 	}
-	uint32_t sub = std::max(p_atlas.subdivision, 1u);
-	r_d.atlas_subdivision = sub;
-	r_d.tile_size = p_atlas.size / sub;
-	r_d.quadrant_size = std::max(r_d.tile_size / 2, 1u);
-}
+};
 
 bool AreaShadowAdaptiveRD::compute_light_grid(const LightInput &p_light, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, uint32_t p_divisor, GridData &r_grid) {
 	memset(&r_grid, 0, sizeof(r_grid));
@@ -415,48 +458,59 @@ bool AreaShadowAdaptiveRD::compute_light_grid(const LightInput &p_light, uint32_
 	return true;
 }
 
-static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_reproj_shader, RID p_banding_shader, RID p_sampler, RID p_depth, uint32_t p_width, uint32_t p_height, uint32_t p_max_cells, const Projection &p_clip_from_view, RID p_atlas, RID p_queries, RID p_grids, RID p_values, RID p_flags, uint32_t p_count, const String &p_timestamp_prefix) {
+struct AreaShadowAdaptiveRD::PassResources {
+	RID reprojection_pipeline, banding_pipeline, reprojection_shader, banding_shader, sampler;
+	RID depth, atlas, lights, points, queries, values, flags;
+	uint32_t width = 0;
+	uint32_t height = 0;
+};
+
+bool AreaShadowAdaptiveRD::_record_passes(const PassResources &p_res, const PassData &p_pass, const Projection &p_clip_from_view, const String &p_timestamp_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
+	rd->buffer_update(p_res.lights, 0, uint32_t(p_pass.lights.size() * sizeof(AreaShadowAdaptiveRD::LightData)), p_pass.lights.data());
+	rd->buffer_update(p_res.points, 0, uint32_t(p_pass.points.size() * sizeof(AreaShadowAdaptiveRD::PointData)), p_pass.points.data());
+	rd->buffer_update(p_res.queries, 0, uint32_t(p_pass.queries.size() * sizeof(AreaShadowAdaptiveRD::QueryData)), p_pass.queries.data());
 	std::vector<RD::Uniform> u1 = {
-		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 0, p_depth),
-		RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 1, p_sampler),
-		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, p_atlas),
-		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, p_queries),
-		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 4, p_values),
-		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, p_grids),
+		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 0, p_res.depth),
+		RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 1, p_res.sampler),
+		RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, p_res.atlas),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, p_res.lights),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 4, p_res.values),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, p_res.points),
 	};
-	RID set1 = rd->uniform_set_create(u1, p_reproj_shader, 0);
+	RID set1 = rd->uniform_set_create(u1, p_res.reprojection_shader, 0);
 	std::vector<RD::Uniform> u2 = {
-		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, p_values),
-		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, p_flags),
-		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, p_grids),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, p_res.values),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, p_res.flags),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, p_res.lights),
+		RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, p_res.queries),
 	};
-	RID set2 = rd->uniform_set_create(u2, p_banding_shader, 0);
+	RID set2 = rd->uniform_set_create(u2, p_res.banding_shader, 0);
 	ERR_FAIL_COND_V_MSG(!set1.is_valid() || !set2.is_valid(), false, "Area shadow reprojection: uniform sets could not be created.");
 	AreaShadowAdaptiveRD::ReprojectionPushConstant rpc;
 	memset(&rpc, 0, sizeof(rpc));
 	p_clip_from_view.inverse().to_floats(rpc.view_from_clip);
-	rpc.depth_size[0] = p_width;
-	rpc.depth_size[1] = p_height;
-	rpc.max_cells = p_max_cells;
-	rpc.query_count = p_count;
+	rpc.depth_size[0] = p_res.width;
+	rpc.depth_size[1] = p_res.height;
+	rpc.max_cells = p_pass.max_cells;
+	rpc.light_count = uint32_t(p_pass.lights.size());
 	AreaShadowAdaptiveRD::BandingPushConstant bpc;
 	memset(&bpc, 0, sizeof(bpc));
-	bpc.max_cells = p_max_cells;
-	bpc.query_count = p_count;
-	rd->buffer_clear(p_flags, 0, p_count * sizeof(uint32_t));
+	bpc.max_cells = p_pass.max_cells;
+	bpc.query_count = uint32_t(p_pass.queries.size());
+	rd->buffer_clear(p_res.flags, 0, bpc.query_count * sizeof(uint32_t));
 	RD::ComputeListID list = rd->compute_list_begin();
-	rd->compute_list_bind_compute_pipeline(list, p_reproj_pipeline);
+	rd->compute_list_bind_compute_pipeline(list, p_res.reprojection_pipeline);
 	rd->compute_list_bind_uniform_set(list, set1, 0);
 	rd->compute_list_set_push_constant(list, &rpc, sizeof(rpc));
-	rd->compute_list_dispatch_threads(list, p_max_cells, 1, p_count);
+	rd->compute_list_dispatch_threads(list, p_pass.max_cells, 1, rpc.light_count);
 	if (!p_timestamp_prefix.empty()) {
 		rd->capture_timestamp(p_timestamp_prefix + "area_reprojection");
 	}
-	rd->compute_list_bind_compute_pipeline(list, p_banding_pipeline);
+	rd->compute_list_bind_compute_pipeline(list, p_res.banding_pipeline);
 	rd->compute_list_bind_uniform_set(list, set2, 0);
 	rd->compute_list_set_push_constant(list, &bpc, sizeof(bpc));
-	rd->compute_list_dispatch_threads(list, p_max_cells, 1, p_count);
+	rd->compute_list_dispatch_threads(list, p_pass.max_cells, 1, bpc.query_count);
 	if (!p_timestamp_prefix.empty()) {
 		rd->capture_timestamp(p_timestamp_prefix + "area_banding");
 	}
@@ -464,6 +518,25 @@ static bool _record_passes(RID p_reproj_pipeline, RID p_banding_pipeline, RID p_
 	rd->free(set1); // Deferred until the frame completes.
 	rd->free(set2);
 	return true;
+}
+
+AreaShadowAdaptiveRD::PassResources AreaShadowAdaptiveRD::_pass_resources(RID p_depth, uint32_t p_width, uint32_t p_height, RID p_atlas, RID p_values, RID p_flags) {
+	PassResources r;
+	r.reprojection_pipeline = reprojection_pipeline;
+	r.banding_pipeline = banding_pipeline;
+	r.reprojection_shader = reprojection_shader.version_get_shader(0);
+	r.banding_shader = banding_shader.version_get_shader(0);
+	r.sampler = sampler;
+	r.depth = p_depth;
+	r.atlas = p_atlas;
+	r.lights = light_buffer;
+	r.points = point_buffer;
+	r.queries = query_buffer;
+	r.values = p_values;
+	r.flags = p_flags;
+	r.width = p_width;
+	r.height = p_height;
+	return r;
 }
 
 uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t p_height, const Projection &p_clip_from_view, const AtlasInfo &p_atlas, const std::vector<LightInput> &p_lights, const String &p_timestamp_prefix) {
@@ -477,12 +550,11 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		return 0;
 	}
 	std::vector<IssuedQuery> issued;
-	std::vector<QueryData> data;
-	std::vector<GridData> grids;
-	uint32_t cells = 0, max_cells = 0;
+	PassData pass;
 	last_skipped_count = 0;
 	last_offscreen_count = 0;
 	last_cell_count = 0;
+	last_point_count = 0;
 	for (const LightInput &l : p_lights) {
 		auto it = trees.find(l.key);
 		if (it == trees.end()) {
@@ -497,24 +569,22 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 			last_offscreen_count++; // Its range box is not on screen: nothing to see, nothing to test.
 			continue;
 		}
-		const uint32_t grid_cells = grid.size[0] * grid.size[1];
-		for (const AreaShadowQuadtree::Query &q : it->second->build_queries(l.can_grow)) {
-			if (issued.size() >= MAX_QUERIES_PER_FRAME) {
-				break; // The rest is tested on a later frame (the trees re-issue every frame).
-			}
+		std::vector<AreaShadowQuadtree::Query> queries = it->second->build_queries(l.can_grow);
+		if (queries.size() > MAX_QUERIES_PER_FRAME - issued.size()) {
+			queries.resize(MAX_QUERIES_PER_FRAME - issued.size()); // The rest is tested on a later frame.
+		}
+		if (queries.empty()) {
+			continue;
+		}
+		for (const AreaShadowQuadtree::Query &q : queries) {
 			IssuedQuery iq;
 			iq.light = l.key;
 			iq.state_hash = l.state_hash;
 			iq.can_grow = l.can_grow;
 			iq.query = q;
 			issued.push_back(iq);
-			data.emplace_back();
-			_fill_query(data.back(), l, p_atlas, q);
-			grid.offset = cells;
-			grids.push_back(grid);
-			cells += grid_cells;
-			max_cells = std::max(max_cells, grid_cells);
 		}
+		pass.add_light(l, p_atlas, grid, queries);
 	}
 	if (issued.empty()) {
 		return 0; // Nothing to test: no shader is compiled for it.
@@ -528,21 +598,20 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		return 0;
 	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
-	uint32_t need = std::max(cells, 1u);
+	uint32_t need = std::max(pass.words, 1u);
 	if (need > values_capacity) {
 		if (values_buffer.is_valid()) {
 			rd->free(values_buffer);
 		}
 		values_capacity = std::max(need, values_capacity * 2);
-		values_buffer = rd->storage_buffer_create(values_capacity * sizeof(float));
-		rd->set_resource_name(values_buffer, "AreaShadowAdaptiveRD reprojection values");
+		values_buffer = rd->storage_buffer_create(values_capacity * sizeof(uint32_t));
+		rd->set_resource_name(values_buffer, "AreaShadowAdaptiveRD reprojection visibility");
 	}
-	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
-	rd->buffer_update(grid_buffer, 0, uint32_t(grids.size() * sizeof(GridData)), grids.data());
-	if (!_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, max_cells, p_clip_from_view, p_atlas.texture, query_buffer, grid_buffer, values_buffer, flag_buffers[slot], uint32_t(issued.size()), p_timestamp_prefix)) {
+	if (!_record_passes(_pass_resources(p_depth, p_width, p_height, p_atlas.texture, values_buffer, flag_buffers[slot]), pass, p_clip_from_view, p_timestamp_prefix)) {
 		return 0;
 	}
-	last_cell_count = cells;
+	last_cell_count = pass.cells;
+	last_point_count = uint32_t(pass.points.size());
 	slot_queries[slot] = issued;
 	slot_submissions[slot] = rd->get_frames_submitted();
 	last_query_count = uint32_t(issued.size());
@@ -558,27 +627,38 @@ std::vector<uint32_t> AreaShadowAdaptiveRD::test_queries_blocking(RID p_depth, u
 	if (!compute_light_grid(p_light, p_width, p_height, p_clip_from_view, divisor, grid)) {
 		return std::vector<uint32_t>(p_queries.size(), 0u); // Off-screen: nothing can band.
 	}
-	const uint32_t grid_cells = grid.size[0] * grid.size[1];
-	std::vector<QueryData> data(p_queries.size());
-	std::vector<GridData> grids(p_queries.size(), grid);
-	for (size_t i = 0; i < p_queries.size(); i++) {
-		_fill_query(data[i], p_light, p_atlas, p_queries[i]);
-		grids[i].offset = uint32_t(i) * grid_cells;
-	}
-	uint32_t n = uint32_t(p_queries.size());
-	RID values = rd->storage_buffer_create(grid_cells * n * sizeof(float));
+	PassData pass;
+	pass.add_light(p_light, p_atlas, grid, p_queries);
+	const uint32_t n = uint32_t(p_queries.size());
+	RID values = rd->storage_buffer_create(pass.words * sizeof(uint32_t));
 	RID flags = rd->storage_buffer_create(n * sizeof(uint32_t));
-	rd->buffer_update(query_buffer, 0, uint32_t(data.size() * sizeof(QueryData)), data.data());
-	rd->buffer_update(grid_buffer, 0, uint32_t(grids.size() * sizeof(GridData)), grids.data());
 	std::vector<uint32_t> out;
-	if (_record_passes(reprojection_pipeline, banding_pipeline, reprojection_shader.version_get_shader(0), banding_shader.version_get_shader(0), sampler, p_depth, p_width, p_height, grid_cells, p_clip_from_view, p_atlas.texture, query_buffer, grid_buffer, values, flags, n, String())) {
+	if (_record_passes(_pass_resources(p_depth, p_width, p_height, p_atlas.texture, values, flags), pass, p_clip_from_view, String())) {
 		std::vector<uint8_t> fb = rd->buffer_get_data(flags);
 		out.resize(n);
 		memcpy(out.data(), fb.data(), std::min(fb.size(), out.size() * sizeof(uint32_t)));
 		if (r_values) {
+			// Each quad's value per cell, as the banding detector forms it: the mean of its corners' bits.
 			std::vector<uint8_t> vb = rd->buffer_get_data(values);
-			r_values->resize(vb.size() / sizeof(float));
-			memcpy(r_values->data(), vb.data(), r_values->size() * sizeof(float));
+			std::vector<uint32_t> words(vb.size() / sizeof(uint32_t));
+			memcpy(words.data(), vb.data(), words.size() * sizeof(uint32_t));
+			const LightData &l = pass.lights[0];
+			const uint32_t cells = grid.size[0] * grid.size[1];
+			r_values->assign(size_t(n) * cells, -1.0f);
+			for (uint32_t q = 0; q < n && words.size() >= size_t(cells) * l.words; q++) {
+				for (uint32_t c = 0; c < cells; c++) {
+					const uint32_t *w = &words[size_t(c) * l.words];
+					if ((w[0] & 1u) == 0) {
+						continue;
+					}
+					uint32_t seen = 0;
+					for (uint32_t k = 0; k < 4; k++) {
+						const uint32_t bit = pass.queries[q].corners[k] + 1;
+						seen += (w[bit >> 5] >> (bit & 31)) & 1u;
+					}
+					(*r_values)[size_t(q) * cells + c] = float(seen) * 0.25f;
+				}
+			}
 		}
 	}
 	rd->free(values);

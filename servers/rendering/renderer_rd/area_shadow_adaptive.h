@@ -9,13 +9,16 @@
 /* (AreaShadowReadbackRing) and applies them to the light's quadtree      */
 /* (AreaShadowQuadtree: expand on banding, prune idle quads); the caller  */
 /* draws the tree's dirty points into the atlas and renders the scene;    */
-/* then dispatch() records the reprojection pass (the visibility of each  */
-/* tested quad's four corner maps over the screen rectangle of the light's*/
-/* range box, at a per-light step that gives it at most the pixel budget  */
-/* of the whole view at 1/divisor, never finer than full resolution;      */
-/* shaders/area_shadow_reprojection.glsl) and the banding detector        */
-/* (shaders/area_shadow_banding.glsl) writing one flag per quad into this */
-/* frame's ring buffer. Nothing waits for the frame being built.          */
+/* then dispatch() records the reprojection pass (per light and cell of   */
+/* the screen rectangle of its range box, at a per-light step that gives  */
+/* it at most the pixel budget of the whole view at 1/divisor, never      */
+/* finer than full resolution: one visibility bit per distinct corner     */
+/* point of the light's tested quads; neighbouring quads share corners,   */
+/* so each map is read once per cell; shaders/                            */
+/* area_shadow_reprojection.glsl) and the banding detector (each quad's   */
+/* value = mean of its corners' bits; shaders/area_shadow_banding.glsl)   */
+/* writing one flag word per quad into this frame's ring buffer. Nothing  */
+/* waits for the frame being built.                                       */
 /*                                                                        */
 /* The two compute shaders are compiled on the first dispatch with work,  */
 /* so a scene without an ADAPTIVE light never compiles them.              */
@@ -25,9 +28,9 @@
 /* light is not tested again until that hash changes (set_skip_settled).  */
 /*                                                                        */
 /* Readback: RenderingDevice here runs one frame at a time (sync() after  */
-/* submit()), so a frame older than the current one is always complete;  */
+/* submit()), so a frame older than the current one is always complete;   */
 /* buffer_get_data() still flushes the frame being recorded, which is why */
-/* begin_frame() must run before anything else is recorded in the frame  */
+/* begin_frame() must run before anything else is recorded in the frame   */
 /* (the flush then submits an empty command buffer, no GPU work waits).   */
 
 #pragma once
@@ -57,39 +60,53 @@ public:
 	static constexpr uint32_t FLAG_BANDING = 1;
 	static constexpr uint32_t FLAG_PENUMBRA = 2; // Some cell is in the quad's penumbra (0 < v < 1).
 
-	// Mirror of QueryData in shaders/area_shadow_reprojection.glsl (std430, 144 bytes).
-	struct QueryData {
+	// Mirrors of shaders/area_shadow_adaptive_inc.glsl (std430).
+	// One light's reprojection grid. Cell (x, y) samples the depth pixel origin + (x, y) * step + step / 2
+	// (clamped to origin + extent - 1); its visibility words start at offset + (y * size.x + x) * words.
+	struct GridData { // 32 bytes.
+		uint32_t origin[2]; // Depth pixels.
+		uint32_t size[2]; // Cells.
+		uint32_t step; // Depth pixels per cell (1 = full resolution).
+		uint32_t offset; // First visibility word of the light.
+		uint32_t extent[2]; // Depth pixels covered (the rectangle).
+	};
+	static_assert(sizeof(GridData) == 32, "GridData must match shaders/area_shadow_adaptive_inc.glsl.");
+
+	struct LightData { // 144 bytes: one light under test.
 		float light_from_view[16];
 		float half_size[2];
 		float depth_scale;
 		float bias;
-		float corner_uv[8]; // u0 v0 u1 v1 u2 v2 u3 v3.
-		uint32_t corner_tile[4];
 		uint32_t atlas_subdivision;
 		uint32_t quadrant_size;
 		uint32_t tile_size;
+		uint32_t point_offset; // First PointData.
+		uint32_t point_count; // The corners of its tested quads, each once.
+		uint32_t words; // Visibility words per cell: bit 0 receiver, bit p + 1 point p.
+		uint32_t pad[2];
+		GridData grid;
+	};
+	static_assert(sizeof(LightData) == 144, "LightData must match shaders/area_shadow_adaptive_inc.glsl.");
+
+	struct PointData { // 16 bytes.
+		float uv[2];
+		uint32_t tile;
 		uint32_t pad;
 	};
-	static_assert(sizeof(QueryData) == 144, "QueryData must match shaders/area_shadow_reprojection.glsl.");
+	static_assert(sizeof(PointData) == 16, "PointData must match shaders/area_shadow_adaptive_inc.glsl.");
 
-	// Mirror of GridData in shaders/area_shadow_reprojection.glsl and area_shadow_banding.glsl (std430,
-	// 32 bytes): one query's reprojection grid. Cell (x, y) samples the depth pixel
-	// origin + (x, y) * step + step / 2 (clamped to origin + extent - 1); its value is
-	// values[offset + y * size.x + x].
-	struct GridData {
-		uint32_t origin[2]; // Depth pixels.
-		uint32_t size[2]; // Cells.
-		uint32_t step; // Depth pixels per cell (1 = full resolution).
-		uint32_t offset; // First value of the query.
-		uint32_t extent[2]; // Depth pixels covered (the rectangle).
+	struct QueryData { // 32 bytes: one tested quad.
+		uint32_t corners[4]; // Indices into its light's points.
+		uint32_t light; // Index into the frame's LightData.
+		uint32_t pad[3];
 	};
-	static_assert(sizeof(GridData) == 32, "GridData must match shaders/area_shadow_reprojection.glsl.");
+	static_assert(sizeof(QueryData) == 32, "QueryData must match shaders/area_shadow_adaptive_inc.glsl.");
 
 	struct ReprojectionPushConstant {
 		float view_from_clip[16];
 		uint32_t depth_size[2];
-		uint32_t max_cells; // Largest size.x * size.y of the queries (dispatch x).
-		uint32_t query_count;
+		uint32_t max_cells; // Largest size.x * size.y of the lights (dispatch x).
+		uint32_t light_count;
 		uint32_t pad[4];
 	};
 	static_assert(sizeof(ReprojectionPushConstant) == 96, "Push constant must match shaders/area_shadow_reprojection.glsl.");
@@ -156,9 +173,10 @@ private:
 	RID banding_pipeline;
 	RID sampler;
 	RID query_buffer; // QueryData[MAX_QUERIES_PER_FRAME].
-	RID grid_buffer; // GridData[MAX_QUERIES_PER_FRAME].
-	RID values_buffer; // float per (query, reduced pixel).
-	uint32_t values_capacity = 0; // Floats.
+	RID light_buffer; // LightData[MAX_QUERIES_PER_FRAME] (a light has at least one query).
+	RID point_buffer; // PointData[4 * MAX_QUERIES_PER_FRAME].
+	RID values_buffer; // Visibility words per (light, cell).
+	uint32_t values_capacity = 0; // Words.
 	std::vector<RID> flag_buffers; // One per ring slot: uint per query.
 	std::vector<std::vector<IssuedQuery>> slot_queries;
 	std::vector<uint64_t> slot_submissions; // RenderingDevice::get_frames_submitted() when recorded.
@@ -173,6 +191,7 @@ private:
 	uint64_t frame = 0;
 	uint32_t last_query_count = 0;
 	uint32_t last_cell_count = 0;
+	uint32_t last_point_count = 0;
 	uint32_t last_offscreen_count = 0;
 	uint32_t last_banding_count = 0;
 	uint64_t last_result_frame = 0;
@@ -185,6 +204,10 @@ private:
 	uint64_t extra_dispatch_count = 0; // dispatch() twice without begin_frame() in between.
 	bool initialized = false;
 
+	struct PassData; // One frame's lights, points and quads (area_shadow_adaptive.cpp).
+	struct PassResources; // The GPU objects the two passes bind.
+	PassResources _pass_resources(RID p_depth, uint32_t p_width, uint32_t p_height, RID p_atlas, RID p_values, RID p_flags);
+	static bool _record_passes(const PassResources &p_res, const PassData &p_pass, const Projection &p_clip_from_view, const String &p_timestamp_prefix);
 	bool _ensure_pipelines();
 	void _update_settled(uint64_t p_light, const AreaShadowQuadtree &p_tree, const std::vector<const IssuedQuery *> &p_answered, uint32_t p_changes);
 
@@ -258,6 +281,8 @@ public:
 	uint32_t get_last_query_count() const { return last_query_count; }
 	// Reprojection cells of the last dispatch() (all queries), and lights it skipped as off-screen.
 	uint32_t get_last_cell_count() const { return last_cell_count; }
+	// Sample points the last dispatch() read per cell, over all lights: each corner shared by tested quads once.
+	uint32_t get_last_point_count() const { return last_point_count; }
 	uint32_t get_last_offscreen_count() const { return last_offscreen_count; }
 	uint32_t get_last_banding_count() const { return last_banding_count; }
 	uint64_t get_last_result_frame() const { return last_result_frame; }
