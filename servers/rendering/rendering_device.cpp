@@ -309,6 +309,10 @@ void RDImpl::submit_frame() {
 	VkResult res = vkQueueSubmit(queue, 1, &si, fence);
 	if (res != VK_SUCCESS) {
 		ERR_PRINT(vformat("vkQueueSubmit failed (VkResult %d); the frame's commands are lost.", res));
+		for (Readback &r : frame_readbacks) {
+			destroy_staging(device, r.staging); // Never written: dropped without a callback.
+		}
+		frame_readbacks.clear();
 		begin_frame();
 		return;
 	}
@@ -330,6 +334,15 @@ void RDImpl::sync_frame() {
 	}
 	vkResetFences(device, 1, &fence);
 	submitted = false;
+	// The frame is complete: its async readbacks hold their data.
+	std::vector<std::pair<std::vector<uint8_t>, std::function<void(const std::vector<uint8_t> &)>>> delivered;
+	for (Readback &r : frame_readbacks) {
+		std::vector<uint8_t> bytes(r.size);
+		memcpy(bytes.data(), r.staging.mapped, r.size);
+		destroy_staging(device, r.staging);
+		delivered.emplace_back(std::move(bytes), std::move(r.callback));
+	}
+	frame_readbacks.clear();
 
 	uint32_t count = (uint32_t)frame_timestamp_names.size();
 	if (count > 0 && query_pool) {
@@ -344,6 +357,9 @@ void RDImpl::sync_frame() {
 	}
 	destroy_pending();
 	begin_frame();
+	for (auto &d : delivered) {
+		d.second(d.first); // The next frame is open: callbacks may record.
+	}
 }
 
 void RDImpl::ensure_recording() {

@@ -18,6 +18,8 @@
 /*   layout tracking. Texture slices share the parent's image.            */
 /* - buffer_get_data()/texture_get_data() flush: they submit the frame,   */
 /*   wait for it, read back and leave a fresh frame open.                 */
+/*   buffer_get_data_async() does not: its callback runs in the sync()    */
+/*   that completes the frame which recorded the copy.                    */
 /* - free() is deferred: Vulkan objects are destroyed after the next      */
 /*   sync(), so freeing something used in the current frame is safe.     */
 /*   Freeing a texture or buffer also frees the uniform sets and          */
@@ -42,6 +44,7 @@
 #include "core/templates/rid.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 class RenderingDevice {
@@ -152,6 +155,11 @@ public:
 	bool buffer_copy(RID p_src, RID p_dst, uint32_t p_src_offset, uint32_t p_dst_offset, uint32_t p_size);
 	// Flushes (submit + sync) and returns the contents; p_size 0 = to the end.
 	std::vector<uint8_t> buffer_get_data(RID p_buffer, uint32_t p_offset = 0, uint32_t p_size = 0);
+	// No flush (Godot 4.4's buffer_get_data_async): records a copy of the range into this frame, after
+	// everything recorded so far; p_callback gets the bytes once the frame's fence has signalled, from the
+	// sync() that waited for it (after the next frame opened: it may record). Dropped with the device or a
+	// failed submit. Returns false (and never calls back) on bad arguments.
+	bool buffer_get_data_async(RID p_buffer, const std::function<void(const std::vector<uint8_t> &)> &p_callback, uint32_t p_offset = 0, uint32_t p_size = 0);
 	uint32_t buffer_get_size(RID p_buffer) const;
 
 	/******************/

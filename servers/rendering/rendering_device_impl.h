@@ -196,6 +196,13 @@ struct RenderingDevice::Impl {
 	// Deferred work, run after the next fence wait.
 	std::vector<std::function<void()>> pending_destroy;
 	std::vector<Staging> frame_staging;
+	// buffer_get_data_async(): copies recorded into the current frame, delivered after its fence wait.
+	struct Readback {
+		Staging staging;
+		uint32_t size = 0;
+		std::function<void(const std::vector<uint8_t> &)> callback;
+	};
+	std::vector<Readback> frame_readbacks;
 
 	// Timestamps.
 	static constexpr uint32_t MAX_TIMESTAMPS = 256;

@@ -135,6 +135,29 @@ std::vector<uint8_t> RenderingDevice::buffer_get_data(RID p_buffer, uint32_t p_o
 	return out;
 }
 
+bool RenderingDevice::buffer_get_data_async(RID p_buffer, const std::function<void(const std::vector<uint8_t> &)> &p_callback, uint32_t p_offset, uint32_t p_size) {
+	Impl *s = impl;
+	ERR_FAIL_COND_V_MSG(!p_callback, false, "buffer_get_data_async: no callback.");
+	ERR_FAIL_COND_V_MSG(s->list.active, false, "buffer_get_data_async is not allowed while a draw or compute list is open.");
+	Impl::Buffer *b = s->buffer_owner.get_or_null(p_buffer);
+	ERR_FAIL_NULL_V_MSG(b, false, "buffer_get_data_async: invalid buffer RID.");
+	ERR_FAIL_COND_V_MSG(p_offset >= b->size, false, "buffer_get_data_async: offset out of bounds.");
+	uint32_t size = p_size == 0 ? b->size - p_offset : p_size;
+	ERR_FAIL_COND_V_MSG((uint64_t)p_offset + size > b->size, false, "buffer_get_data_async: range out of bounds.");
+	s->ensure_recording();
+	Impl::Readback r;
+	r.staging = s->create_staging(size);
+	ERR_FAIL_COND_V(!r.staging.buffer, false);
+	r.size = size;
+	r.callback = p_callback;
+	s->full_barrier();
+	VkBufferCopy region = { p_offset, 0, size };
+	vkCmdCopyBuffer(s->command_buffer, b->buffer, r.staging.buffer, 1, &region);
+	host_read_barrier(s->command_buffer);
+	s->frame_readbacks.push_back(std::move(r));
+	return true;
+}
+
 uint32_t RenderingDevice::buffer_get_size(RID p_buffer) const {
 	Impl::Buffer *b = impl->buffer_owner.get_or_null(p_buffer);
 	ERR_FAIL_NULL_V_MSG(b, 0, "buffer_get_size: invalid buffer RID.");

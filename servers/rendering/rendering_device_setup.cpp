@@ -412,6 +412,10 @@ void RenderingDevice::finalize() {
 			destroy_staging(s->device, st);
 		}
 		s->frame_staging.clear();
+		for (Impl::Readback &r : s->frame_readbacks) {
+			destroy_staging(s->device, r.staging); // Never delivered.
+		}
+		s->frame_readbacks.clear();
 
 		// Destroy what the user did not free; the RIDs stay in their owners and are reported as leaks.
 		VkDevice dev = s->device;

@@ -489,6 +489,47 @@ TEST_CASE("[RenderingDevice] many buffer updates in one frame apply in order") {
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
+TEST_CASE("[RenderingDevice] buffer_get_data_async delivers after the frame completes, without a flush") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE(rd != nullptr);
+	const uint32_t values[4] = { 11, 22, 33, 44 };
+	RID buf = rd->storage_buffer_create(sizeof(values), values);
+	REQUIRE(buf.is_valid());
+	rd->submit();
+	rd->sync();
+	const uint64_t submitted = rd->get_frames_submitted();
+	std::vector<uint32_t> got;
+	int calls = 0;
+	CHECK(rd->buffer_get_data_async(buf, [&](const std::vector<uint8_t> &p_bytes) {
+		calls++;
+		got.resize(p_bytes.size() / 4);
+		memcpy(got.data(), p_bytes.data(), got.size() * 4);
+	}, 4, 8));
+	// Written after the copy was recorded: the readback holds the old values.
+	const uint32_t later = 99;
+	rd->buffer_update(buf, 4, 4, &later);
+	CHECK(calls == 0);
+	CHECK(rd->get_frames_submitted() == submitted); // Nothing was flushed.
+	rd->submit();
+	CHECK(calls == 0); // Submitted, not yet waited for.
+	rd->sync();
+	CHECK(calls == 1);
+	CHECK(rd->get_frames_submitted() == submitted + 1);
+	REQUIRE(got.size() == 2);
+	CHECK(got[0] == 22);
+	CHECK(got[1] == 33);
+	rd->submit();
+	rd->sync();
+	CHECK(calls == 1); // Delivered once.
+	set_error_print_silenced(true);
+	CHECK_FALSE(rd->buffer_get_data_async(RID(), [](const std::vector<uint8_t> &) {}));
+	CHECK_FALSE(rd->buffer_get_data_async(buf, [](const std::vector<uint8_t> &) {}, 16, 4));
+	CHECK_FALSE(rd->buffer_get_data_async(buf, nullptr));
+	set_error_print_silenced(false);
+	rd->free(buf);
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
 TEST_CASE("[RenderingDevice] the debug messenger counts validation errors") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE(rd != nullptr);

@@ -79,11 +79,16 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 	}
 	slot_queries.assign(ring.get_slot_count(), std::vector<IssuedQuery>());
 	slot_submissions.assign(ring.get_slot_count(), 0);
+	slot_flags.assign(ring.get_slot_count(), std::vector<uint32_t>());
+	slot_arrived.assign(ring.get_slot_count(), false);
+	slot_tokens.assign(ring.get_slot_count(), 0);
+	alive = std::make_shared<bool>(true);
 	ring.set_frame_complete_predicate([this](uint64_t p_frame) {
-		// One frame in flight at a time: the frame is complete once a later submission started.
+		// A frame is complete when its flags arrived (RenderingDevice::buffer_get_data_async() delivers them
+		// after the frame's fence wait); polling never waits.
 		for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
 			if (ring.get_slot_state(i) == AreaShadowReadbackRing::SLOT_IN_FLIGHT && ring.get_slot_frame(i) == p_frame) {
-				return RenderingDevice::get_singleton()->get_frames_submitted() > slot_submissions[i];
+				return bool(slot_arrived[i]);
 			}
 		}
 		return true;
@@ -94,6 +99,10 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 }
 
 void AreaShadowAdaptiveRD::finalize() {
+	if (alive) {
+		*alive = false; // Readbacks still in flight are dropped on arrival.
+		alive.reset();
+	}
 	trees.clear(); // Tiles back to their sources.
 	content_hashes.clear();
 	settled.clear();
@@ -121,6 +130,9 @@ void AreaShadowAdaptiveRD::finalize() {
 	values_capacity = 0;
 	flag_buffers.clear();
 	slot_queries.clear();
+	slot_flags.clear();
+	slot_arrived.clear();
+	slot_tokens.clear();
 	reprojection_shader.clear();
 	banding_shader.clear();
 	initialized = false;
@@ -254,16 +266,15 @@ void AreaShadowAdaptiveRD::begin_frame() {
 	last_banding_count = 0;
 	if (slot >= 0 && !slot_queries[slot].empty()) {
 		const std::vector<IssuedQuery> &issued = slot_queries[slot];
-		// The slot's frame is complete: the read does not wait for GPU work of this frame (begin_frame()
-		// runs before the frame records anything, so the flush only carries the copy).
+		// The slot's flags arrived when its frame's fence signalled (buffer_get_data_async()): reading them
+		// neither submits nor waits.
 		readback_count++;
 		last_read_submission = slot_submissions[slot];
-		if (slot_submissions[slot] >= last_begin_submission || data_frame >= frame) {
+		if (slot_submissions[slot] >= last_begin_submission || data_frame >= frame || !slot_arrived[slot]) {
 			current_frame_read_count++; // Would wait for the frame being built (never expected).
 		}
-		std::vector<uint8_t> bytes = RenderingDevice::get_singleton()->buffer_get_data(flag_buffers[slot], 0, uint32_t(issued.size() * sizeof(uint32_t)));
-		if (bytes.size() == issued.size() * sizeof(uint32_t)) {
-			const uint32_t *flags = reinterpret_cast<const uint32_t *>(bytes.data());
+		const std::vector<uint32_t> &flags = slot_flags[slot];
+		if (flags.size() == issued.size()) {
 			for (size_t i = 0; i < issued.size(); i++) {
 				const AreaShadowQuadtree::Query &q = issued[i].query;
 				const bool banding = (flags[i] & FLAG_BANDING) != 0;
@@ -610,6 +621,21 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 	if (!_record_passes(_pass_resources(p_depth, p_width, p_height, p_atlas.texture, values_buffer, flag_buffers[slot]), pass, p_clip_from_view, p_timestamp_prefix)) {
 		return 0;
 	}
+	// The flags come back without a flush once this frame completes.
+	const uint64_t token = ++slot_tokens[slot];
+	slot_arrived[slot] = false;
+	slot_flags[slot].clear();
+	std::shared_ptr<bool> alive_token = alive;
+	rd->buffer_get_data_async(
+			flag_buffers[slot], [this, alive_token, slot, token](const std::vector<uint8_t> &p_bytes) {
+				if (!*alive_token || slot_tokens[slot] != token) {
+					return; // Finalized, or the slot was reused.
+				}
+				slot_flags[slot].resize(p_bytes.size() / sizeof(uint32_t));
+				memcpy(slot_flags[slot].data(), p_bytes.data(), slot_flags[slot].size() * sizeof(uint32_t));
+				slot_arrived[slot] = true;
+			},
+			0, uint32_t(issued.size() * sizeof(uint32_t)));
 	last_cell_count = pass.cells;
 	last_point_count = uint32_t(pass.points.size());
 	slot_queries[slot] = issued;

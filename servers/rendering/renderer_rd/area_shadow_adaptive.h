@@ -27,11 +27,11 @@
 /* for one LightInput::state_hash (camera, scene, light, atlas), the      */
 /* light is not tested again until that hash changes (set_skip_settled).  */
 /*                                                                        */
-/* Readback: RenderingDevice here runs one frame at a time (sync() after  */
-/* submit()), so a frame older than the current one is always complete;   */
-/* buffer_get_data() still flushes the frame being recorded, which is why */
-/* begin_frame() must run before anything else is recorded in the frame   */
-/* (the flush then submits an empty command buffer, no GPU work waits).   */
+/* Readback: each frame's flags are copied back with                     */
+/* RenderingDevice::buffer_get_data_async() (no flush): they arrive when  */
+/* the frame's fence has signalled, and a ring slot counts as complete    */
+/* only then, so begin_frame() reads host memory and never submits or     */
+/* waits. With this engine's one frame in flight, that is one frame late. */
 
 #pragma once
 
@@ -180,6 +180,10 @@ private:
 	std::vector<RID> flag_buffers; // One per ring slot: uint per query.
 	std::vector<std::vector<IssuedQuery>> slot_queries;
 	std::vector<uint64_t> slot_submissions; // RenderingDevice::get_frames_submitted() when recorded.
+	std::vector<std::vector<uint32_t>> slot_flags; // Delivered by RenderingDevice::buffer_get_data_async().
+	std::vector<bool> slot_arrived;
+	std::vector<uint64_t> slot_tokens; // Bumped per write: a late delivery for a reused slot is ignored.
+	std::shared_ptr<bool> alive; // false after finalize(): deliveries still in flight are dropped.
 	AreaShadowReadbackRing ring;
 	std::map<uint64_t, std::unique_ptr<AreaShadowQuadtree>> trees;
 	std::map<uint64_t, uint64_t> content_hashes;
