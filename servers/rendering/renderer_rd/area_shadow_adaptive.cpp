@@ -88,7 +88,9 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 		// after the frame's fence wait); polling never waits.
 		for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
 			if (ring.get_slot_state(i) == AreaShadowReadbackRing::SLOT_IN_FLIGHT && ring.get_slot_frame(i) == p_frame) {
-				return bool(slot_arrived[i]);
+				// A submit that failed drops the readback: once a later frame was submitted too, the slot's
+				// frame has certainly been waited for, so it counts as complete (without flags: ignored).
+				return slot_arrived[i] || RenderingDevice::get_singleton()->get_frames_submitted() > slot_submissions[i] + 1;
 			}
 		}
 		return true;
@@ -270,7 +272,7 @@ void AreaShadowAdaptiveRD::begin_frame() {
 		// neither submits nor waits.
 		readback_count++;
 		last_read_submission = slot_submissions[slot];
-		if (slot_submissions[slot] >= last_begin_submission || data_frame >= frame || !slot_arrived[slot]) {
+		if (slot_submissions[slot] >= last_begin_submission || data_frame >= frame) {
 			current_frame_read_count++; // Would wait for the frame being built (never expected).
 		}
 		const std::vector<uint32_t> &flags = slot_flags[slot];
@@ -605,6 +607,8 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		return 0; // Every result buffer is still in flight: test again next frame rather than wait.
 	}
 	slot_queries[slot].clear();
+	slot_flags[slot].clear();
+	slot_arrived[slot] = true; // Nothing to wait for unless the passes and the readback are recorded below.
 	if (!_ensure_pipelines()) {
 		return 0;
 	}
@@ -623,10 +627,8 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 	}
 	// The flags come back without a flush once this frame completes.
 	const uint64_t token = ++slot_tokens[slot];
-	slot_arrived[slot] = false;
-	slot_flags[slot].clear();
 	std::shared_ptr<bool> alive_token = alive;
-	rd->buffer_get_data_async(
+	slot_arrived[slot] = !rd->buffer_get_data_async(
 			flag_buffers[slot], [this, alive_token, slot, token](const std::vector<uint8_t> &p_bytes) {
 				if (!*alive_token || slot_tokens[slot] != token) {
 					return; // Finalized, or the slot was reused.
