@@ -123,7 +123,7 @@ void _print_usage() {
 	fprintf(stderr,
 			"usage:\n"
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
-			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters]\n"
+			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
@@ -141,7 +141,7 @@ void _print_usage() {
 // Options that take a value, per command; anything else starting with "-" is an error.
 bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 	static const std::map<String, std::vector<String>> value_options = {
-		{ "render", { "-o", "--width", "--height", "--png", "--exposure" } },
+		{ "render", { "-o", "--width", "--height", "--png", "--exposure", "--settle-frames" } },
 		{ "bench", { "--frames", "--warmup", "--csv", "--width", "--height" } },
 		{ "compare", { "--heatmap" } },
 		{ "reference", { "-o", "--width", "--height", "--spp", "--error", "--shadows", "--seed", "--png", "--exposure" } },
@@ -268,7 +268,10 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 	String error;
 	int width = 0, height = 0;
 	float exposure = 0;
-	if (!_get_int(p_args, "--width", 640, 1, 16384, width, &error) || !_get_int(p_args, "--height", 360, 1, 16384, height, &error) || !_get_float(p_args, "--exposure", 0.0f, exposure, &error)) {
+	// ADAPTIVE area shadows refine over frames: a still render draws until they settle, at most this many frames.
+	int settle_frames = SceneTree::DEFAULT_SETTLE_FRAMES;
+	if (!_get_int(p_args, "--width", 640, 1, 16384, width, &error) || !_get_int(p_args, "--height", 360, 1, 16384, height, &error) || !_get_float(p_args, "--exposure", 0.0f, exposure, &error) ||
+			!_get_int(p_args, "--settle-frames", SceneTree::DEFAULT_SETTLE_FRAMES, 1, 1000, settle_frames, &error)) {
 		fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 		return 2;
 	}
@@ -293,7 +296,13 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 				// Writes the per-pixel number of area lights in each pixel's cluster instead of shading.
 				RenderingServer::get_singleton()->viewport_set_debug_draw(tree.get_viewport_rid(), RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS);
 			}
-			Image image = tree.render();
+			int frames = 0;
+			Image image = tree.render_settled(settle_frames, &frames);
+			if (RenderingServer::get_singleton()->get_frame_area_shadow_tests() > 0) {
+				printf("ADAPTIVE area shadows were still refining after %d frames (--settle-frames)\n", frames);
+			} else if (frames > 1) {
+				printf("ADAPTIVE area shadows settled after %d frames\n", frames);
+			}
 			if (!image.is_empty() && (_has_flag(p_args, "--gizmos") || _has_flag(p_args, "--gizmos-selected"))) {
 				// Editor gizmos (outlines, handles, icons) as an overlay; --gizmos-selected draws every light as selected.
 				if (GizmoOverlay::draw(image, tree, _has_flag(p_args, "--gizmos-selected")) < 0) {

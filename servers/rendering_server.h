@@ -448,6 +448,9 @@ public:
 	virtual void free(RID p_rid) = 0;
 	// GPU time of each pass of the last frame, as (pass name, milliseconds).
 	virtual std::vector<std::pair<String, double>> get_frame_profile() const = 0;
+	// ADAPTIVE area-shadow quads tested by the last draw(), all viewports: 0 once every AREA_SHADOW_ADAPTIVE
+	// light has settled (its subdivision refines over frames; a still render draws until this is 0).
+	virtual uint32_t get_frame_area_shadow_tests() const = 0;
 	// Renderer tests: when true the renderer shades every light per pixel (no clustering).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
 

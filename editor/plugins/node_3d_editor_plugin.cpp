@@ -321,10 +321,17 @@ bool Node3DEditorViewport::update() {
 		render_dirty = true;
 	}
 	bool changed = false;
-	if (render_dirty && drag_handle < 0) {
+	if ((render_dirty || settling) && drag_handle < 0) {
+		if (render_dirty) {
+			settle_frames = 0; // A change: ADAPTIVE lights get their settling frames again.
+		}
 		rendered = tree->render();
 		profile = RenderingServer::get_singleton()->get_frame_profile();
 		frames_rendered++;
+		// ADAPTIVE area shadows refine over frames: keep drawing while they are still tested (as a running
+		// game would), up to SceneTree::DEFAULT_SETTLE_FRAMES frames after the last change.
+		settle_frames = RenderingServer::get_singleton()->get_frame_area_shadow_tests() > 0 ? settle_frames + 1 : 0;
+		settling = settle_frames > 0 && settle_frames < SceneTree::DEFAULT_SETTLE_FRAMES;
 		render_dirty = false;
 		display_dirty = true;
 	}

@@ -86,6 +86,8 @@ private:
 	bool display_dirty = true;
 	std::vector<std::pair<String, double>> profile;
 	uint64_t frames_rendered = 0;
+	int settle_frames = 0; // Consecutive frames that still tested ADAPTIVE area-shadow quads.
+	bool settling = false; // Draw again: ADAPTIVE area shadows are still refining.
 
 	std::function<void(const String &)> event_callback;
 

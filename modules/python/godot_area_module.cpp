@@ -112,14 +112,14 @@ Image _array_to_image(py::handle p_array) {
 	return image;
 }
 
-py::array_t<float> _render(int p_width, int p_height) {
+py::array_t<float> _render(int p_width, int p_height, int p_settle_frames) {
 	SceneTree *tree = _tree();
 	Image image;
 	String error;
 	bool ok = false;
 	{
 		ErrorCapture capture;
-		ok = PythonSession::render(p_width, p_height, image, &error);
+		ok = PythonSession::render(p_width, p_height, image, &error, p_settle_frames);
 		if (!ok && !capture.errors.empty()) {
 			error += "\n" + capture.joined();
 		}
@@ -184,7 +184,7 @@ PYBIND11_MODULE(godot_area, m) {
 				}
 				_tree()->set_size(p_width, p_height);
 			}, py::arg("width"), py::arg("height"))
-			.def("render", [](TreeHandle &, int p_width, int p_height) { return _render(p_width, p_height); }, py::arg("width") = 0, py::arg("height") = 0)
+			.def("render", [](TreeHandle &, int p_width, int p_height, int p_settle_frames) { return _render(p_width, p_height, p_settle_frames); }, py::arg("width") = 0, py::arg("height") = 0, py::arg("settle_frames") = int(SceneTree::DEFAULT_SETTLE_FRAMES))
 			.def("run_frames", [](TreeHandle &, int p_count, py::object p_callback, int p_width, int p_height) { return _run_frames(p_count, p_callback, p_width, p_height); },
 					py::arg("count"), py::arg("callback") = py::none(), py::arg("width") = 0, py::arg("height") = 0);
 
@@ -265,7 +265,7 @@ PYBIND11_MODULE(godot_area, m) {
 		}
 	}, py::arg("node"), py::arg("path"), "Writes the node and its subtree as a .tscn text scene.");
 
-	m.def("render", &_render, py::arg("width") = 0, py::arg("height") = 0, "Draws one frame of the tree; returns linear HDR RGBA as numpy float32 (H, W, 4).");
+	m.def("render", &_render, py::arg("width") = 0, py::arg("height") = 0, py::arg("settle_frames") = int(SceneTree::DEFAULT_SETTLE_FRAMES), "Draws the tree (until ADAPTIVE area shadows settle, at most settle_frames frames; 1 = one frame) and returns linear HDR RGBA as numpy float32 (H, W, 4).");
 	m.def("run_frames", &_run_frames, py::arg("count"), py::arg("callback") = py::none(), py::arg("width") = 0, py::arg("height") = 0,
 			"Draws count frames, calling callback(frame_index, tree) before each; returns one {pass name: GPU ms} dict per frame.");
 	m.def("save_exr", [](py::object p_array, const String &p_path, bool p_half) {

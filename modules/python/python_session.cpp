@@ -55,7 +55,7 @@ bool PythonSession::setup(Backend p_backend, String *r_error) {
 	return true;
 }
 
-bool PythonSession::render(int p_width, int p_height, Image &r_image, String *r_error) {
+bool PythonSession::render(int p_width, int p_height, Image &r_image, String *r_error, int p_settle_frames) {
 	if (!tree) {
 		*r_error = "The engine is not initialized.";
 		return false;
@@ -79,7 +79,11 @@ bool PythonSession::render(int p_width, int p_height, Image &r_image, String *r_
 		*r_error = "The tree has no current Camera3D: add a scene with a Camera3D to the tree's root.";
 		return false;
 	}
-	r_image = tree->render();
+	if (p_settle_frames < 1 || p_settle_frames > 1000) {
+		*r_error = vformat("settle_frames %d is out of range (1..1000).", p_settle_frames);
+		return false;
+	}
+	r_image = tree->render_settled(p_settle_frames);
 	if (r_image.is_empty()) {
 		*r_error = "The renderer returned no image (see the engine errors above).";
 		return false;

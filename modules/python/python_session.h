@@ -43,7 +43,8 @@ public:
 
 	// Resizes the tree's viewport when p_width/p_height > 0, draws one frame and returns the image
 	// (linear HDR RGBA). Fails with a message without a camera, without pixels or on the dummy backend.
-	static bool render(int p_width, int p_height, Image &r_image, String *r_error);
+	// Draws until ADAPTIVE area shadows settle, at most p_settle_frames frames (1: exactly one), as the CLI.
+	static bool render(int p_width, int p_height, Image &r_image, String *r_error, int p_settle_frames = 1);
 	// Draws one frame (no read-back) and returns the per-pass times of that frame (ms).
 	static bool draw_frame(FrameProfile &r_profile, String *r_error);
 	// Vulkan validation errors seen so far (0 without the layer).

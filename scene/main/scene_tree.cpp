@@ -35,6 +35,20 @@ Image SceneTree::render() {
 	return rs->viewport_get_texture_data(viewport);
 }
 
+Image SceneTree::render_settled(int p_max_frames, int *r_frames) {
+	RS *rs = RS::get_singleton();
+	ERR_FAIL_NULL_V_MSG(rs, Image(), "SceneTree::render_settled() needs a RenderingServer.");
+	int frames = 0;
+	do {
+		rs->draw();
+		frames++;
+	} while (frames < p_max_frames && rs->get_frame_area_shadow_tests() > 0);
+	if (r_frames) {
+		*r_frames = frames;
+	}
+	return rs->viewport_get_texture_data(viewport);
+}
+
 SceneTree::SceneTree() {
 	world_3d.instantiate();
 	RS *rs = RS::get_singleton();

@@ -44,6 +44,11 @@ public:
 	int get_height() const { return height; }
 	// Draws every active viewport (RS::draw) and returns this tree's image (linear HDR float RGBA).
 	Image render();
+	// A still image: draws until every AREA_SHADOW_ADAPTIVE light has settled (its subdivision refines over
+	// frames; RS::get_frame_area_shadow_tests() == 0) or p_max_frames draws, then reads back. Without
+	// adaptive lights this is one draw, like render(). r_frames (optional): the draws made.
+	Image render_settled(int p_max_frames = DEFAULT_SETTLE_FRAMES, int *r_frames = nullptr);
+	static constexpr int DEFAULT_SETTLE_FRAMES = 32;
 
 	SceneTree();
 	~SceneTree();

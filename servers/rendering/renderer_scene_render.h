@@ -86,6 +86,8 @@ public:
 	virtual std::vector<float> render_target_get_data(RID p_render_target) = 0;
 	// GPU time per pass of the last rendered frame, as (pass name, milliseconds).
 	virtual std::vector<std::pair<String, double>> get_last_frame_profile() const = 0;
+	// ADAPTIVE area-shadow quads the last render_scene() tested (0: every adaptive light has settled, or none).
+	virtual uint32_t get_last_frame_area_shadow_tests() const { return 0; }
 	// When true, shade every light for every pixel instead of using clusters (test reference).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
 

@@ -440,6 +440,7 @@ Color RenderingServerDefault::get_default_clear_color() const {
 
 void RenderingServerDefault::draw() {
 	compositor->begin_frame();
+	frame_area_shadow_tests = 0;
 	for (const RID &rid : viewport_order) {
 		const Viewport *viewport = viewport_owner.get_or_null(rid);
 		if (!viewport || !viewport->active || viewport->render_target.is_null()) {
@@ -449,6 +450,7 @@ void RenderingServerDefault::draw() {
 			continue;
 		}
 		scene_cull->render_camera(viewport->camera, viewport->scenario, viewport->width, viewport->height, default_clear_color, viewport->debug_draw, viewport->render_target, viewport->area_shadow_atlas_size, viewport->area_shadow_atlas_subdivision);
+		frame_area_shadow_tests += RSG::scene_render->get_last_frame_area_shadow_tests();
 	}
 	compositor->end_frame();
 }

@@ -36,6 +36,7 @@ class RenderingServerDefault : public RenderingServer {
 	RID_Owner<Viewport, true> viewport_owner{ "Viewport" };
 	std::vector<RID> viewport_order; // Creation order: draw() renders in this order.
 	Color default_clear_color = Color(0.3f, 0.3f, 0.3f, 1.0f); // Godot's default_clear_color.
+	uint32_t frame_area_shadow_tests = 0; // ADAPTIVE quads tested by the last draw().
 
 	RID _light_create(LightType p_type);
 
@@ -132,6 +133,7 @@ public:
 	void draw() override;
 	void free(RID p_rid) override;
 	std::vector<std::pair<String, double>> get_frame_profile() const override;
+	uint32_t get_frame_area_shadow_tests() const override { return frame_area_shadow_tests; }
 	void set_debug_force_all_lights(bool p_enable) override;
 
 	// The scene cull of this server (tests read its counters).

@@ -12,6 +12,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <sys/wait.h>
 #include <initializer_list>
 
@@ -37,6 +39,7 @@ TEST_CASE("[CLI] bad arguments and files give exit code 2, not a crash") {
 	CHECK(run_cli({ "render" }) == 2); // Missing -o.
 	CHECK(run_cli({ "render", "--width", "0", "-o", "x.exr" }) == 2);
 	CHECK(run_cli({ "render", "--width", "12abc", "-o", "x.exr" }) == 2);
+	CHECK(run_cli({ "render", "--settle-frames", "0", "-o", "x.exr" }) == 2);
 	CHECK(run_cli({ "bench", "--frames", "-3" }) == 2);
 	CHECK(run_cli({ "reference", "--shadows", "maybe", "-o", "x.exr" }) == 2);
 	CHECK(run_cli({ "reference", "--error", "nan", "-o", "x.exr" }) == 2);
@@ -75,6 +78,49 @@ TEST_CASE("[CLI][Render] render and reference of the embedded demo write finite,
 	CHECK_MESSAGE(metrics.rmse < 0.005, "RMSE(GPU, reference) = " << metrics.rmse);
 	CHECK_MESSAGE(metrics.flip < 0.03, "LDR-FLIP(GPU, reference) = " << metrics.flip);
 	CHECK(run_cli_process("compare '" + gpu + "' '" + ref + "'") == 0);
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[CLI][Render] render draws until ADAPTIVE area shadows settle (--settle-frames)") {
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_settle";
+	std::filesystem::create_directories(dir);
+	// The demo with its three area lights shadowed in ADAPTIVE mode.
+	std::ifstream in(String(GODOT_AREA_ROOT) + "/demo/demo.tscn");
+	REQUIRE(in.good());
+	std::stringstream text;
+	text << in.rdbuf();
+	String scene = text.str();
+	for (const char *name : { "TVPanel", "CeilingPanelLeft", "CeilingPanelRight" }) {
+		const String anchor = String("[node name=\"") + name + "\" type=\"AreaLight3D\" parent=\".\"]\n";
+		size_t at = scene.find(anchor);
+		REQUIRE(at != String::npos);
+		scene.insert(at + anchor.size(), "shadow_enabled = true\narea_shadow_mode = 2\n");
+	}
+	const String scene_path = (dir / "adaptive.tscn").string();
+	{
+		std::ofstream out(scene_path);
+		out << scene;
+	}
+	const String one = (dir / "one.exr").string(), settled = (dir / "settled.exr").string(), again = (dir / "again.exr").string();
+	const String common = "render '" + scene_path + "' --width 160 --height 90 --setting rendering/lights_and_shadows/area_shadow_reprojection_divisor=2 ";
+	CHECK(run_cli_process(common + "--settle-frames 1 -o '" + one + "'") == 0);
+	CHECK(run_cli_process(common + "-o '" + settled + "'") == 0);
+	CHECK(run_cli_process(common + "--settle-frames 1000 -o '" + again + "'") == 0);
+	Image a, b, c;
+	String error;
+	REQUIRE_MESSAGE(ImageLoaderEXR::load(one, a, &error), error);
+	REQUIRE_MESSAGE(ImageLoaderEXR::load(settled, b, &error), error);
+	REQUIRE_MESSAGE(ImageLoaderEXR::load(again, c, &error), error);
+	CHECK(a.is_finite());
+	CHECK(b.is_finite());
+	// One frame shades with the root quad's four maps; the settled render with the refined tree.
+	ImageMetrics::Result first_vs_settled, settled_vs_more;
+	REQUIRE_MESSAGE(ImageMetrics::compare(a, b, &first_vs_settled, &error), error);
+	REQUIRE_MESSAGE(ImageMetrics::compare(c, b, &settled_vs_more, &error), error);
+	MESSAGE("RMSE one frame vs settled: ", first_vs_settled.rmse, "; settled (32-frame cap) vs a 1000-frame cap: ", settled_vs_more.rmse);
+	CHECK(first_vs_settled.rmse > 0.0);
+	CHECK(settled_vs_more.rmse == 0.0); // It had settled: more allowed frames change nothing.
 	std::filesystem::remove_all(dir);
 }
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import godot_area as ga
-from ga_helpers import build_scene, exr_channel_types
+from ga_helpers import build_scene, exr_channel_types, look_at
 
 WIDTH, HEIGHT = 48, 32  # Tiny: lavapipe on 2 CPU cores.
 
@@ -143,3 +143,20 @@ def test_mesh_resource_changes_after_assignment_are_rendered(tree):
 	expected_scene.free()
 	tree.root.add_child(_floor_scene(size_after_assignment=True))
 	assert np.array_equal(ga.render(WIDTH, HEIGHT), expected)
+
+
+def test_render_settles_adaptive_shadows(tree):
+	"""An AREA_SHADOW_ADAPTIVE light refines over frames: render() draws until it settles (the key light's
+	penumbra seen from close by refines beyond the root quad), render(settle_frames=1) draws one frame."""
+	scene = tree.root.add_child(build_scene())
+	scene.get_node("Key").area_shadow_mode = 2  # AREA_SHADOW_ADAPTIVE.
+	# Close above the box's shadow edge, so the penumbra spans many reprojection cells.
+	scene.get_node("Camera").transform = look_at((0.45, 0.6, 0.5), (0.45, 0.0, 0.5), up=(0.0, 0.0, -1.0))
+	one = ga.render(96, 64, settle_frames=1)
+	settled = ga.render(96, 64)
+	again = ga.render(96, 64)
+	assert np.isfinite(settled).all()
+	assert np.abs(settled - one).max() > 1e-4, "the settled render must use the refined tree"
+	assert np.array_equal(settled, again), "a settled tree renders the same image again"
+	with pytest.raises(RuntimeError, match="settle_frames 0 is out of range"):
+		ga.render(96, 64, settle_frames=0)

@@ -172,6 +172,43 @@ TEST_CASE("[AreaLight3D][Shadows] an off-screen occluder between the light and a
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
+TEST_CASE("[AreaLight3D][Shadows] RenderingServer reports ADAPTIVE tests until the subdivision settles") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		ServerScene s;
+		REQUIRE(s.init());
+		s.rs->light_set_shadow(s.light, true);
+		s.centre();
+		CHECK(s.rs->get_frame_area_shadow_tests() == 0); // FIXED: nothing to refine.
+		s.rs->light_area_set_shadow_mode(s.light, RS::LIGHT_AREA_SHADOW_ADAPTIVE);
+		// Look at the penumbra beside the occluder, tested at full resolution.
+		s.rs->camera_set_transform(s.camera, Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0.6f, 0.6f, 0)));
+		REQUIRE(s.shadows().set_adaptive_reprojection_divisor(1));
+		s.centre();
+		s.centre();
+		CHECK(s.rs->get_frame_area_shadow_tests() > 0); // The root quad's first answers are being tested.
+		int frames = 0;
+		while (s.rs->get_frame_area_shadow_tests() > 0 && frames < 32) {
+			s.centre();
+			frames++;
+		}
+		MESSAGE("ADAPTIVE settled after ", frames, " more frames with ", s.shadows().light_get_shadow_map_count(s.light_instance), " maps");
+		CHECK(frames < 32);
+		CHECK(s.shadows().light_get_shadow_map_count(s.light_instance) > 4); // It refined before settling.
+		for (int i = 0; i < 3; i++) {
+			s.centre();
+			CHECK(s.rs->get_frame_area_shadow_tests() == 0); // Settled lights are not tested again.
+		}
+		// The camera moves: the light is tested again (with the 16-tile atlas full, prune tests only: its
+		// leaves are tested until idle so that their parents can be).
+		s.rs->camera_set_transform(s.camera, Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0.7f, 0.6f, 0)));
+		s.centre();
+		CHECK(s.rs->get_frame_area_shadow_tests() > 0);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
 TEST_CASE("[AreaLight3D][Shadows] area_shadow_atlas_set_size sizes each viewport's atlas and rejects bad values") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");

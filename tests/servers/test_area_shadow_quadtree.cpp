@@ -319,6 +319,35 @@ TEST_CASE("[AreaShadowQuadtree] same-depth rule: a banding quad refines the quad
 	check_accounting(tree, pool);
 }
 
+TEST_CASE("[AreaShadowQuadtree] without tiles to grow, leaves are tested until idle so their parents can be pruned") {
+	TilePool pool(81);
+	AreaShadowQuadtree tree;
+	REQUIRE(tree.reset(&pool));
+	REQUIRE(tree.expand(AreaShadowQuadtree::root_key()));
+	draw_all(tree);
+	// Fresh leaves are not idle: tested even without expansion tests; no parent test yet.
+	std::vector<AreaShadowQuadtree::Query> q = tree.build_queries(false);
+	CHECK(q.size() == 4);
+	for (const AreaShadowQuadtree::Query &x : q) {
+		CHECK_FALSE(x.parent_test);
+	}
+	std::vector<AreaShadowQuadtree::Result> clean;
+	for (const AreaShadowQuadtree::Query &x : q) {
+		clean.push_back({ x.node, x.version, x.parent_test, false });
+	}
+	tree.begin_frame();
+	CHECK(tree.apply_results(clean) == 0);
+	// Idle now: only the root's prune test remains, and a clean answer prunes it.
+	q = tree.build_queries(false);
+	REQUIRE(q.size() == 1);
+	CHECK(q[0].parent_test);
+	CHECK(q[0].node == AreaShadowQuadtree::root_key());
+	tree.begin_frame();
+	CHECK(tree.apply_results({ { q[0].node, q[0].version, true, false } }) == 1);
+	CHECK(tree.get_point_count() == 4);
+	check_accounting(tree, pool);
+}
+
 TEST_CASE("[AreaShadowQuadtree] point weights sum to one") {
 	TilePool pool(81);
 	AreaShadowQuadtree tree;

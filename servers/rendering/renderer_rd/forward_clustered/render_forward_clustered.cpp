@@ -345,6 +345,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	// ADAPTIVE area shadows: apply the newest completed frame's banding flags before this frame records
 	// anything (the readback then waits for no work of this frame).
+	last_area_shadow_tests = 0;
 	area_shadows.begin_frame(p_render_target);
 
 	ERR_FAIL_COND_MSG(!cluster_builder.setup(rt->width, rt->height), "render_scene: cluster setup failed.");
@@ -480,7 +481,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "depth_prepass");
 	// 1b. ADAPTIVE area shadows: reprojection + banding of this frame's quad tests against the pre-pass depth
 	// (timestamps "area_reprojection", "area_banding"; nothing without ADAPTIVE lights).
-	area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
+	last_area_shadow_tests = area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
 
 	// 2. Cluster build.
 	cluster_builder.bake_cluster();

@@ -163,6 +163,7 @@ private:
 	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
+	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
 	uint64_t frame_counter = 0;
 
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
@@ -192,6 +193,7 @@ public:
 	bool owns_render_target(RID p_rid) const override { return render_target_owner.owns(p_rid); }
 	std::vector<float> render_target_get_data(RID p_render_target) override;
 	std::vector<std::pair<String, double>> get_last_frame_profile() const override { return last_profile; }
+	uint32_t get_last_frame_area_shadow_tests() const override { return last_area_shadow_tests; }
 	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
 	bool is_debug_force_all_lights() const { return force_all_lights; }
 	// Test/debug: off compiles the scene shader with AREA_LTC_NO_PRECISION_FIX (Heitz's original acos

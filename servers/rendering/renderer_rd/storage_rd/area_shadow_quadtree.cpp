@@ -297,12 +297,12 @@ std::vector<AreaShadowQuadtree::Query> AreaShadowQuadtree::build_queries(bool p_
 		}
 		return true;
 	};
-	if (p_expansion_tests) {
-		for (const auto &kv : nodes) {
-			const Node &n = kv.second;
-			if (!n.has_children && n.depth < max_depth && corners_drawn(n)) {
-				out.push_back(_make_query(kv.first, n, false));
-			}
+	for (const auto &kv : nodes) {
+		const Node &n = kv.second;
+		// Without tiles to grow, an idle leaf's retest could not change anything; a leaf that is not idle yet
+		// is still tested, or its parent could never be tested for pruning (which is what frees tiles).
+		if (!n.has_children && n.depth < max_depth && corners_drawn(n) && (p_expansion_tests || !n.idle)) {
+			out.push_back(_make_query(kv.first, n, false));
 		}
 	}
 	for (const auto &kv : nodes) {

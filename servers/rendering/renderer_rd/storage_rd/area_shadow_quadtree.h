@@ -168,8 +168,9 @@ public:
 	// error; trees stay uniform where the whole light throws the penumbra.
 	uint32_t apply_results(const std::vector<Result> &p_results);
 	// Tests to run this frame: expansion tests of leaves above the maximum depth whose corners are drawn
-	// (p_expansion_tests false skips them, e.g. when the atlas has no free tile), then prune tests of
-	// parents whose four children are idle leaves.
+	// (p_expansion_tests false, e.g. when the atlas has no free tile: only leaves not idle yet, so that
+	// they can become idle and their parents be tested for pruning), then prune tests of parents whose
+	// four children are idle leaves.
 	std::vector<Query> build_queries(bool p_expansion_tests = true) const;
 
 	// Marks every point for redraw (scene changed).
