@@ -6,6 +6,8 @@
 /* mirrors: AreaShadowAdaptiveRD::GridData / LightData / PointData /      */
 /* QueryData (servers/rendering/renderer_rd/area_shadow_adaptive.h).      */
 
+#define AREA_SHADOW_ADAPTIVE_MAX_WORDS 3 // 95 points per light: a 9 x 9 tree has 81.
+
 struct GridData { // std430, 32 bytes: one light's cells over the depth buffer.
 	uvec2 origin; // Depth pixels.
 	uvec2 size; // Cells.
@@ -24,9 +26,9 @@ struct LightData { // std430, 144 bytes.
 	uint tile_size;
 	uint point_offset; // First PointData of the light.
 	uint point_count;
-	uint words; // Visibility words per cell: (point_count + 1 + 31) / 32.
-	uint pad0;
-	uint pad1;
+	uint words; // Visibility words per cell: (point_count + 1 + 31) / 32 (at most MAX_WORDS).
+	uint query_offset; // First QueryData of the light.
+	uint query_count;
 	GridData grid;
 };
 

@@ -8,8 +8,9 @@
 /* a cell is the plain mean of its four corners' visibility bits written  */
 /* by area_shadow_reprojection.glsl (-1: no receiver). One flag word per  */
 /* query: bit 0 banding, bit 1 some cell is in the quad's penumbra (the   */
-/* quadtree's same-depth rule); threads exit early once both are set.     */
-/* x = cell index of the quad's light grid, z = query. C++:               */
+/* quadtree's same-depth rule). One thread per light and cell (x = cell,  */
+/* z = light) loads the 3 x 3 cells' bits once and tests every quad of    */
+/* the light there. C++:                                                  */
 /* AreaShadowAdaptiveRD (servers/rendering/renderer_rd/                   */
 /* area_shadow_adaptive.h).                                               */
 
@@ -43,64 +44,76 @@ queries;
 
 layout(push_constant, std430) uniform Params { // 16 bytes.
 	uint max_cells; // Largest grid (dispatch x).
-	uint query_count;
+	uint light_count;
 	uint pad0;
 	uint pad1;
 }
 params;
 
-bool bit_at(uint p_base, uint p_bit) {
-	return ((visibility.data[p_base + (p_bit >> 5u)] >> (p_bit & 31u)) & 1u) != 0u;
+// The visibility words of the 3 x 3 cells around this thread's cell (index (dy + 1) * 3 + dx + 1), loaded
+// once and shared by all the light's quads.
+uint nb[9][AREA_SHADOW_ADAPTIVE_MAX_WORDS];
+
+bool bit_at(uint p_cell, uint p_bit) {
+	return ((nb[p_cell][p_bit >> 5u] >> (p_bit & 31u)) & 1u) != 0u;
 }
 
-// The quad's value at a cell: the mean of its corners' bits, -1 without a receiver.
-float value_at(GridData p_grid, uint p_words, uvec4 p_corners, ivec2 p_cell) {
-	uint base = p_grid.offset + (uint(p_cell.y) * p_grid.size.x + uint(p_cell.x)) * p_words;
-	if ((visibility.data[base] & 1u) == 0u) {
+// A quad's value at one of the 3 x 3 cells: the mean of its corners' bits, -1 without a receiver.
+float value_at(uint p_cell, uvec4 p_corners) {
+	if ((nb[p_cell][0] & 1u) == 0u) {
 		return -1.0;
 	}
 	uint n = 0u;
 	for (uint c = 0u; c < 4u; c++) {
-		n += bit_at(base, p_corners[c] + 1u) ? 1u : 0u;
+		n += bit_at(p_cell, p_corners[c] + 1u) ? 1u : 0u;
 	}
 	return float(n) * 0.25;
 }
 
 void main() {
 	uvec3 id = gl_GlobalInvocationID;
-	if (id.z >= params.query_count) {
+	if (id.z >= params.light_count) {
 		return;
 	}
-	QueryData q = queries.data[id.z];
-	LightData l = lights.data[q.light];
+	LightData l = lights.data[id.z];
 	GridData g = l.grid;
 	if (id.x >= g.size.x * g.size.y) {
 		return;
 	}
-	uvec2 cell = uvec2(id.x % g.size.x, id.x / g.size.x);
-	if (flags.data[id.z] == 3u) {
-		return; // Early exit: this quad already bands and has a penumbra.
+	ivec2 cell = ivec2(id.x % g.size.x, id.x / g.size.x);
+	uint base = g.offset + id.x * l.words;
+	if ((visibility.data[base] & 1u) == 0u) {
+		return; // No receiver here: no quad has a penumbra at this cell.
 	}
-	ivec2 p = ivec2(cell);
-	float v = value_at(g, l.words, q.corners, p);
-	if (!(v > 0.0 && v < 1.0)) {
-		return; // Lit, umbra or no receiver.
-	}
-	if ((flags.data[id.z] & 2u) == 0u) {
-		atomicOr(flags.data[id.z], 2u); // The quad's penumbra is on screen.
-	}
-	if (cell.x < 1u || cell.y < 1u || cell.x + 1u >= g.size.x || cell.y + 1u >= g.size.y) {
-		return; // Border cells have no full neighbourhood.
-	}
-	if ((flags.data[id.z] & 1u) != 0u) {
-		return;
-	}
-	for (int y = -1; y <= 1; y++) {
-		for (int x = -1; x <= 1; x++) {
-			if (value_at(g, l.words, q.corners, p + ivec2(x, y)) != v) {
-				return;
-			}
+	bool interior = cell.x >= 1 && cell.y >= 1 && cell.x + 1 < int(g.size.x) && cell.y + 1 < int(g.size.y);
+	for (int k = 0; k < 9; k++) {
+		ivec2 c = cell + ivec2(k % 3 - 1, k / 3 - 1);
+		bool inside = c.x >= 0 && c.y >= 0 && c.x < int(g.size.x) && c.y < int(g.size.y);
+		uint b = g.offset + (uint(c.y) * g.size.x + uint(c.x)) * l.words;
+		for (uint w = 0u; w < uint(AREA_SHADOW_ADAPTIVE_MAX_WORDS); w++) {
+			nb[k][w] = inside && w < l.words ? visibility.data[b + w] : 0u;
 		}
 	}
-	atomicOr(flags.data[id.z], 1u);
+	for (uint i = 0u; i < l.query_count; i++) {
+		uint q = l.query_offset + i;
+		uvec4 corners = queries.data[q].corners;
+		float v = value_at(4u, corners);
+		if (!(v > 0.0 && v < 1.0)) {
+			continue; // Lit or umbra for this quad.
+		}
+		uint f = flags.data[q];
+		if ((f & 2u) == 0u) {
+			atomicOr(flags.data[q], 2u); // The quad's penumbra is on screen.
+		}
+		if (!interior || (f & 1u) != 0u) {
+			continue; // Border cells have no full neighbourhood; or it already bands.
+		}
+		bool plateau = true;
+		for (uint k = 0u; k < 9u && plateau; k++) {
+			plateau = value_at(k, corners) == v;
+		}
+		if (plateau) {
+			atomicOr(flags.data[q], 1u);
+		}
+	}
 }

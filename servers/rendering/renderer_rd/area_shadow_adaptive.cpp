@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <tuple>
 
 /* Settings and heuristic */
@@ -348,6 +349,17 @@ struct AreaShadowAdaptiveRD::PassData {
 	uint32_t cells = 0;
 	uint32_t max_cells = 0;
 
+	// Distinct corners of p_queries (at most MAX_VISIBILITY_WORDS * 32 - 1 fit a cell's words).
+	static uint32_t count_points(const std::vector<AreaShadowQuadtree::Query> &p_queries) {
+		std::set<std::tuple<uint32_t, real_t, real_t>> seen;
+		for (const AreaShadowQuadtree::Query &q : p_queries) {
+			for (uint32_t c = 0; c < 4; c++) {
+				seen.insert(std::make_tuple(q.corner_tile[c], q.corner_uv[c].x, q.corner_uv[c].y));
+			}
+		}
+		return uint32_t(seen.size());
+	}
+
 	void add_light(const AreaShadowAdaptiveRD::LightInput &p_light, const AreaShadowAdaptiveRD::AtlasInfo &p_atlas, const AreaShadowAdaptiveRD::GridData &p_grid, const std::vector<AreaShadowQuadtree::Query> &p_queries) {
 		AreaShadowAdaptiveRD::LightData l;
 		memset(&l, 0, sizeof(l));
@@ -361,6 +373,8 @@ struct AreaShadowAdaptiveRD::PassData {
 		l.tile_size = p_atlas.size / sub;
 		l.quadrant_size = std::max(l.tile_size / 2, 1u);
 		l.point_offset = uint32_t(points.size());
+		l.query_offset = uint32_t(queries.size());
+		l.query_count = uint32_t(p_queries.size());
 		const uint32_t light_index = uint32_t(lights.size());
 		std::map<std::tuple<uint32_t, real_t, real_t>, uint32_t> by_tile; // A point: its map and its place.
 		for (const AreaShadowQuadtree::Query &q : p_queries) {
@@ -384,7 +398,7 @@ struct AreaShadowAdaptiveRD::PassData {
 			queries.push_back(d);
 		}
 		l.point_count = uint32_t(by_tile.size());
-		l.words = (l.point_count + 1 + 31) / 32;
+		l.words = (l.point_count + 1 + 31) / 32; // A tree has at most 81 points: 3 words (the caller checks).
 		l.grid = p_grid;
 		l.grid.offset = words;
 		const uint32_t grid_cells = p_grid.size[0] * p_grid.size[1];
@@ -510,8 +524,8 @@ bool AreaShadowAdaptiveRD::_record_passes(const PassResources &p_res, const Pass
 	AreaShadowAdaptiveRD::BandingPushConstant bpc;
 	memset(&bpc, 0, sizeof(bpc));
 	bpc.max_cells = p_pass.max_cells;
-	bpc.query_count = uint32_t(p_pass.queries.size());
-	rd->buffer_clear(p_res.flags, 0, bpc.query_count * sizeof(uint32_t));
+	bpc.light_count = uint32_t(p_pass.lights.size());
+	rd->buffer_clear(p_res.flags, 0, uint32_t(p_pass.queries.size() * sizeof(uint32_t)));
 	RD::ComputeListID list = rd->compute_list_begin();
 	rd->compute_list_bind_compute_pipeline(list, p_res.reprojection_pipeline);
 	rd->compute_list_bind_uniform_set(list, set1, 0);
@@ -523,7 +537,7 @@ bool AreaShadowAdaptiveRD::_record_passes(const PassResources &p_res, const Pass
 	rd->compute_list_bind_compute_pipeline(list, p_res.banding_pipeline);
 	rd->compute_list_bind_uniform_set(list, set2, 0);
 	rd->compute_list_set_push_constant(list, &bpc, sizeof(bpc));
-	rd->compute_list_dispatch_threads(list, p_pass.max_cells, 1, bpc.query_count);
+	rd->compute_list_dispatch_threads(list, p_pass.max_cells, 1, bpc.light_count);
 	if (!p_timestamp_prefix.empty()) {
 		rd->capture_timestamp(p_timestamp_prefix + "area_banding");
 	}
@@ -589,6 +603,7 @@ uint32_t AreaShadowAdaptiveRD::dispatch(RID p_depth, uint32_t p_width, uint32_t 
 		if (queries.empty()) {
 			continue;
 		}
+		ERR_CONTINUE_MSG(PassData::count_points(queries) >= MAX_VISIBILITY_WORDS * 32, "AreaShadowAdaptiveRD: a light's tested quads have more distinct corners than a cell's visibility words hold.");
 		for (const AreaShadowQuadtree::Query &q : queries) {
 			IssuedQuery iq;
 			iq.light = l.key;
@@ -655,6 +670,7 @@ std::vector<uint32_t> AreaShadowAdaptiveRD::test_queries_blocking(RID p_depth, u
 	if (!compute_light_grid(p_light, p_width, p_height, p_clip_from_view, divisor, grid)) {
 		return std::vector<uint32_t>(p_queries.size(), 0u); // Off-screen: nothing can band.
 	}
+	ERR_FAIL_COND_V_MSG(PassData::count_points(p_queries) >= MAX_VISIBILITY_WORDS * 32, std::vector<uint32_t>(), vformat("AreaShadowAdaptiveRD::test_queries_blocking: the quads have more than %u distinct corners.", MAX_VISIBILITY_WORDS * 32 - 1));
 	PassData pass;
 	pass.add_light(p_light, p_atlas, grid, p_queries);
 	const uint32_t n = uint32_t(p_queries.size());

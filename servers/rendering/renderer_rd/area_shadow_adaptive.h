@@ -56,6 +56,7 @@ public:
 	static constexpr const char *SETTING_REPROJECTION_DIVISOR = "rendering/lights_and_shadows/area_shadow_reprojection_divisor";
 	static constexpr const char *SETTING_MAX_DEPTH = "rendering/lights_and_shadows/area_shadow_adaptive_max_depth";
 	static constexpr uint32_t MAX_GPU_DEPTH = 3; // 9 x 9 maps: the AreaShadowData packing's limit.
+	static constexpr uint32_t MAX_VISIBILITY_WORDS = 3; // AREA_SHADOW_ADAPTIVE_MAX_WORDS: 95 points per light.
 	// Bits of a query's flag word (shaders/area_shadow_banding.glsl).
 	static constexpr uint32_t FLAG_BANDING = 1;
 	static constexpr uint32_t FLAG_PENUMBRA = 2; // Some cell is in the quad's penumbra (0 < v < 1).
@@ -82,8 +83,9 @@ public:
 		uint32_t tile_size;
 		uint32_t point_offset; // First PointData.
 		uint32_t point_count; // The corners of its tested quads, each once.
-		uint32_t words; // Visibility words per cell: bit 0 receiver, bit p + 1 point p.
-		uint32_t pad[2];
+		uint32_t words; // Visibility words per cell: bit 0 receiver, bit p + 1 point p (<= MAX_VISIBILITY_WORDS).
+		uint32_t query_offset; // First QueryData.
+		uint32_t query_count;
 		GridData grid;
 	};
 	static_assert(sizeof(LightData) == 144, "LightData must match shaders/area_shadow_adaptive_inc.glsl.");
@@ -113,7 +115,7 @@ public:
 
 	struct BandingPushConstant {
 		uint32_t max_cells;
-		uint32_t query_count;
+		uint32_t light_count;
 		uint32_t pad[2];
 	};
 
