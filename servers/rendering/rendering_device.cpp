@@ -157,6 +157,30 @@ RDImpl::Staging RDImpl::create_staging(VkDeviceSize p_size) {
 	return s;
 }
 
+RDImpl::Staging RDImpl::acquire_readback_staging(VkDeviceSize p_size) {
+	int best = -1;
+	for (size_t i = 0; i < readback_pool.size(); i++) {
+		if (readback_pool[i].size >= p_size && (best < 0 || readback_pool[i].size < readback_pool[best].size)) {
+			best = int(i);
+		}
+	}
+	if (best >= 0) {
+		Staging s = readback_pool[best];
+		readback_pool.erase(readback_pool.begin() + best);
+		return s;
+	}
+	return create_staging(std::max<VkDeviceSize>(p_size, 256));
+}
+
+void RDImpl::release_readback_staging(Staging &p_staging) {
+	if (readback_pool.size() < READBACK_POOL_SIZE) {
+		readback_pool.push_back(p_staging);
+		p_staging = Staging();
+	} else {
+		destroy_staging(device, p_staging);
+	}
+}
+
 void destroy_staging(VkDevice p_device, RDImpl::Staging &p_s) {
 	if (p_s.buffer) {
 		vkDestroyBuffer(p_device, p_s.buffer, nullptr);
@@ -310,7 +334,7 @@ void RDImpl::submit_frame() {
 	if (res != VK_SUCCESS) {
 		ERR_PRINT(vformat("vkQueueSubmit failed (VkResult %d); the frame's commands are lost.", res));
 		for (Readback &r : frame_readbacks) {
-			destroy_staging(device, r.staging); // Never written: dropped without a callback.
+			release_readback_staging(r.staging); // Never written: dropped without a callback.
 		}
 		frame_readbacks.clear();
 		begin_frame();
@@ -339,7 +363,7 @@ void RDImpl::sync_frame() {
 	for (Readback &r : frame_readbacks) {
 		std::vector<uint8_t> bytes(r.size);
 		memcpy(bytes.data(), r.staging.mapped, r.size);
-		destroy_staging(device, r.staging);
+		release_readback_staging(r.staging);
 		delivered.emplace_back(std::move(bytes), std::move(r.callback));
 	}
 	frame_readbacks.clear();

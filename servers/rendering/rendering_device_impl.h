@@ -203,6 +203,11 @@ struct RenderingDevice::Impl {
 		std::function<void(const std::vector<uint8_t> &)> callback;
 	};
 	std::vector<Readback> frame_readbacks;
+	// Their staging buffers are reused (a readback per frame must not allocate device memory each time).
+	static constexpr size_t READBACK_POOL_SIZE = 8;
+	std::vector<Staging> readback_pool;
+	Staging acquire_readback_staging(VkDeviceSize p_size);
+	void release_readback_staging(Staging &p_staging);
 
 	// Timestamps.
 	static constexpr uint32_t MAX_TIMESTAMPS = 256;

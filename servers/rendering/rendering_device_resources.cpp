@@ -146,7 +146,7 @@ bool RenderingDevice::buffer_get_data_async(RID p_buffer, const std::function<vo
 	ERR_FAIL_COND_V_MSG((uint64_t)p_offset + size > b->size, false, "buffer_get_data_async: range out of bounds.");
 	s->ensure_recording();
 	Impl::Readback r;
-	r.staging = s->create_staging(size);
+	r.staging = s->acquire_readback_staging(size);
 	ERR_FAIL_COND_V(!r.staging.buffer, false);
 	r.size = size;
 	r.callback = p_callback;

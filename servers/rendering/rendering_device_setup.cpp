@@ -416,6 +416,10 @@ void RenderingDevice::finalize() {
 			destroy_staging(s->device, r.staging); // Never delivered.
 		}
 		s->frame_readbacks.clear();
+		for (Impl::Staging &st : s->readback_pool) {
+			destroy_staging(s->device, st);
+		}
+		s->readback_pool.clear();
 
 		// Destroy what the user did not free; the RIDs stay in their owners and are reported as leaks.
 		VkDevice dev = s->device;
