@@ -41,9 +41,9 @@ public:
 	// The process-wide tree (null before setup()).
 	static SceneTree *get_tree() { return tree; }
 
-	// Resizes the tree's viewport when p_width/p_height > 0, draws one frame and returns the image
-	// (linear HDR RGBA). Fails with a message without a camera, without pixels or on the dummy backend.
-	// Draws until ADAPTIVE area shadows settle, at most p_settle_frames frames (1: exactly one), as the CLI.
+	// Resizes the tree's viewport when p_width/p_height > 0, draws and returns the image (linear HDR RGBA):
+	// until ADAPTIVE area shadows settle, at most p_settle_frames frames (1: exactly one), as the CLI.
+	// Fails with a message without a camera, without pixels, on a bad frame count or on the dummy backend.
 	static bool render(int p_width, int p_height, Image &r_image, String *r_error, int p_settle_frames = 1);
 	// Draws one frame (no read-back) and returns the per-pass times of that frame (ms).
 	static bool draw_frame(FrameProfile &r_profile, String *r_error);
