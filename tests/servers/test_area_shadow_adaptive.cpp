@@ -284,6 +284,28 @@ TEST_CASE("[AreaShadowAdaptive] heuristic grid from the camera, with the project
 	ps->clear_override(AreaShadowAdaptiveRD::SETTING_REPROJECTION_DIVISOR);
 	CHECK(AreaShadowAdaptiveRD::get_project_max_depth() == 3);
 	CHECK(AreaShadowAdaptiveRD::get_project_reprojection_divisor() == 8);
+
+	// The artist's knob: occluders assumed nearer the receivers (a larger fraction of the range) mean
+	// narrower penumbrae and never more maps; at some distance strictly fewer.
+	CHECK(AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction() == doctest::Approx(0.25f));
+	bool fewer_somewhere = false;
+	for (float z = 1.0f; z < 3000.0f; z *= 2.0f) {
+		data.cam_transform.origin = Vector3(0.0f, 0.0f, -3.0f - z);
+		uint32_t conservative = AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 1), 3.0f, data);
+		REQUIRE(ps->set_setting(AreaShadowAdaptiveRD::SETTING_HEURISTIC_OCCLUDER_FRACTION, 0.75));
+		uint32_t tuned = AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 1), 3.0f, data);
+		ps->clear_override(AreaShadowAdaptiveRD::SETTING_HEURISTIC_OCCLUDER_FRACTION);
+		CHECK(tuned <= conservative);
+		fewer_somewhere = fewer_somewhere || tuned < conservative;
+	}
+	CHECK(fewer_somewhere);
+	{
+		SceneTest::ErrorCatcher errors;
+		ps->set_setting(AreaShadowAdaptiveRD::SETTING_HEURISTIC_OCCLUDER_FRACTION, 1.5);
+		CHECK(AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction() == doctest::Approx(0.25f));
+		CHECK(errors.contains(AreaShadowAdaptiveRD::SETTING_HEURISTIC_OCCLUDER_FRACTION));
+	}
+	ps->clear_override(AreaShadowAdaptiveRD::SETTING_HEURISTIC_OCCLUDER_FRACTION);
 }
 
 TEST_CASE("[AreaShadowAdaptive] AreaLight3D shadow modes ADAPTIVE and HEURISTIC reach the server") {

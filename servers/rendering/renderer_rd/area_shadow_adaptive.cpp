@@ -33,6 +33,15 @@ uint32_t AreaShadowAdaptiveRD::get_project_max_depth() {
 	return uint32_t(v);
 }
 
+float AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction() {
+	double v = GLOBAL_DEF(SETTING_HEURISTIC_OCCLUDER_FRACTION, double(DEFAULT_HEURISTIC_OCCLUDER_FRACTION)).to_float();
+	if (!(v >= 0.01 && v <= 0.99)) {
+		ERR_PRINT(vformat("%s must be 0.01..0.99; got %f. Using %.2f.", SETTING_HEURISTIC_OCCLUDER_FRACTION, v, double(DEFAULT_HEURISTIC_OCCLUDER_FRACTION)));
+		return DEFAULT_HEURISTIC_OCCLUDER_FRACTION;
+	}
+	return float(v);
+}
+
 uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data) {
 	AreaShadowQuadtree::HeuristicInput in;
 	in.light_size = p_size;
@@ -49,6 +58,7 @@ uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, c
 	in.fov_y = p_data.fovy_degrees * 0.017453293f;
 	in.viewport_height = p_data.viewport_height > 0 ? float(p_data.viewport_height) : 1080.0f;
 	in.max_depth = get_project_max_depth();
+	in.occluder_fraction = get_project_heuristic_occluder_fraction();
 	return AreaShadowQuadtree::estimate_heuristic(in).grid;
 }
 

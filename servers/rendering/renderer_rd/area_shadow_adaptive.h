@@ -55,6 +55,10 @@ public:
 	static constexpr uint32_t MAX_QUERIES_PER_FRAME = 256;
 	static constexpr const char *SETTING_REPROJECTION_DIVISOR = "rendering/lights_and_shadows/area_shadow_reprojection_divisor";
 	static constexpr const char *SETTING_MAX_DEPTH = "rendering/lights_and_shadows/area_shadow_adaptive_max_depth";
+	// HEURISTIC's assumed occluder distance as a fraction of the light's range (thesis 6.5: the estimate is
+	// for lighting artists to tune). Larger = occluders assumed nearer the receivers = narrower penumbrae.
+	static constexpr const char *SETTING_HEURISTIC_OCCLUDER_FRACTION = "rendering/lights_and_shadows/area_shadow_heuristic_occluder_fraction";
+	static constexpr float DEFAULT_HEURISTIC_OCCLUDER_FRACTION = 0.25f;
 	static constexpr uint32_t MAX_GPU_DEPTH = 3; // 9 x 9 maps: the AreaShadowData packing's limit.
 	static constexpr uint32_t MAX_VISIBILITY_WORDS = 3; // AREA_SHADOW_ADAPTIVE_MAX_WORDS: 95 points per light.
 	// Bits of a query's flag word (shaders/area_shadow_banding.glsl).
@@ -276,6 +280,8 @@ public:
 	// naming the setting and fall back to the default.
 	static uint32_t get_project_reprojection_divisor();
 	static uint32_t get_project_max_depth();
+	// SETTING_HEURISTIC_OCCLUDER_FRACTION (0.01..0.99, default 0.25; bad values print an error and use it).
+	static float get_project_heuristic_occluder_fraction();
 	// HEURISTIC (thesis 6.5): the grid (2, 3, 5 or 9) for an area light of p_size and p_range whose
 	// world range box is p_world_box, seen by p_data's camera (distance to the box, fovy, viewport
 	// height), up to get_project_max_depth().
