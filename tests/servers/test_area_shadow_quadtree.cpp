@@ -68,6 +68,21 @@ static void check_accounting(const AreaShadowQuadtree &p_tree, const TilePool &p
 	CHECK(p_pool.bad_releases == 0);
 }
 
+static AreaShadowQuadtree::Result answer(const AreaShadowQuadtree::Query &p_q, bool p_banding, bool p_penumbra) {
+	AreaShadowQuadtree::Result r{ p_q.node, p_q.version, p_q.parent_test, p_banding };
+	r.penumbra = p_penumbra;
+	return r;
+}
+
+// The same answer to every query.
+static std::vector<AreaShadowQuadtree::Result> answer_all(const std::vector<AreaShadowQuadtree::Query> &p_queries, bool p_banding, bool p_penumbra) {
+	std::vector<AreaShadowQuadtree::Result> out;
+	for (const AreaShadowQuadtree::Query &q : p_queries) {
+		out.push_back(answer(q, p_banding, p_penumbra));
+	}
+	return out;
+}
+
 static void draw_all(AreaShadowQuadtree &p_tree) {
 	p_tree.collect_draws();
 }
@@ -205,12 +220,8 @@ TEST_CASE("[AreaShadowQuadtree] idle leaves, queries and stale answers") {
 	draw_all(tree);
 	q = tree.build_queries();
 	CHECK(q.size() == 4); // Four leaves; the root is no prune candidate while its children are not idle.
-	std::vector<AreaShadowQuadtree::Result> none;
-	for (const AreaShadowQuadtree::Query &x : q) {
-		none.push_back({ x.node, x.version, x.parent_test, false });
-	}
 	tree.begin_frame();
-	CHECK(tree.apply_results(none) == 0);
+	CHECK(tree.apply_results(answer_all(q, false, false)) == 0);
 	CHECK(tree.node_is_idle(key(1, 0, 0)));
 	q = tree.build_queries();
 	REQUIRE(q.size() == 5); // Four leaves and the root's prune test.
@@ -248,11 +259,6 @@ TEST_CASE("[AreaShadowQuadtree] same-depth rule: a banding quad refines the quad
 	draw_all(tree);
 	std::vector<AreaShadowQuadtree::Query> q = tree.build_queries();
 	REQUIRE(q.size() == 4);
-	auto answer = [](const AreaShadowQuadtree::Query &p_q, bool p_banding, bool p_penumbra) {
-		AreaShadowQuadtree::Result r{ p_q.node, p_q.version, p_q.parent_test, p_banding };
-		r.penumbra = p_penumbra;
-		return r;
-	};
 	auto find = [](const std::vector<AreaShadowQuadtree::Query> &p_list, uint64_t p_node, bool p_parent) -> const AreaShadowQuadtree::Query * {
 		for (const AreaShadowQuadtree::Query &x : p_list) {
 			if (x.node == p_node && x.parent_test == p_parent) {
@@ -283,10 +289,7 @@ TEST_CASE("[AreaShadowQuadtree] same-depth rule: a banding quad refines the quad
 		REQUIRE(t2.reset(&pool2));
 		REQUIRE(t2.expand(AreaShadowQuadtree::root_key()));
 		draw_all(t2);
-		std::vector<AreaShadowQuadtree::Result> quiet;
-		for (const AreaShadowQuadtree::Query &x : t2.build_queries()) {
-			quiet.push_back(answer(x, false, true));
-		}
+		std::vector<AreaShadowQuadtree::Result> quiet = answer_all(t2.build_queries(), false, true);
 		t2.begin_frame();
 		CHECK(t2.apply_results(quiet) == 0);
 		CHECK(t2.get_leaf_count() == 4);
@@ -295,10 +298,7 @@ TEST_CASE("[AreaShadowQuadtree] same-depth rule: a banding quad refines the quad
 	// none of them is pruned (their steps are as wide). Then none bands: all three are pruned.
 	draw_all(tree);
 	q = tree.build_queries();
-	std::vector<AreaShadowQuadtree::Result> clean;
-	for (const AreaShadowQuadtree::Query &x : q) {
-		clean.push_back(answer(x, false, true));
-	}
+	std::vector<AreaShadowQuadtree::Result> clean = answer_all(q, false, true);
 	tree.begin_frame();
 	CHECK(tree.apply_results(clean) == 0);
 	q = tree.build_queries();
@@ -331,12 +331,8 @@ TEST_CASE("[AreaShadowQuadtree] without tiles to grow, leaves are tested until i
 	for (const AreaShadowQuadtree::Query &x : q) {
 		CHECK_FALSE(x.parent_test);
 	}
-	std::vector<AreaShadowQuadtree::Result> clean;
-	for (const AreaShadowQuadtree::Query &x : q) {
-		clean.push_back({ x.node, x.version, x.parent_test, false });
-	}
 	tree.begin_frame();
-	CHECK(tree.apply_results(clean) == 0);
+	CHECK(tree.apply_results(answer_all(q, false, false)) == 0);
 	// Idle now: only the root's prune test remains, and a clean answer prunes it.
 	q = tree.build_queries(false);
 	REQUIRE(q.size() == 1);
