@@ -421,7 +421,7 @@ bool MethodsSweep::write_shader_sources(const String &p_dir, String *r_error) {
 	ShaderRD shader;
 	const std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
 	if (!shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants)) {
-		return fail("Cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
+		return fail("Cannot load servers/rendering/renderer_rd/shaders/forward_clustered/scene_forward_clustered.glsl.");
 	}
 	std::error_code ec;
 	std::filesystem::create_directories(p_dir, ec);

@@ -6,7 +6,7 @@
 /* local shading frame (normal = +z).                                     */
 /*                                                                        */
 /* LTC_BRDF_ENGINE_GGX: the engine's lobe exactly as                      */
-/*   shaders/brdf_inc.glsl brdf_specular() computes it with F = 1:        */
+/*   servers/rendering/renderer_rd/shaders/brdf_inc.glsl brdf_specular() computes it with F = 1:        */
 /*   D_GGX (thesis eq. 2.6) * V_SmithGGXCorrelatedFast (Hammon 2017,      */
 /*   eq. 2.5), alpha = perceptual_roughness^2. The functions below have   */
 /*   the GLSL names and formulas; keep them in sync with brdf_inc.glsl.   */

@@ -20,7 +20,7 @@
 /*                                                                        */
 /* fits degree-5 polynomials to the built-in engine table (thesis 5.4.3,  */
 /* modules/ltc_fit/ltc_polynomial.h) and writes servers/rendering/        */
-/* renderer_rd/ltc_poly_data.inc (-o) and shaders/ltc_poly_coeffs_inc.glsl */
+/* renderer_rd/ltc_poly_data.inc (-o) and servers/rendering/renderer_rd/shaders/ltc_poly_coeffs_inc.glsl */
 /* (--glsl).                                                              */
 
 #pragma once

@@ -22,7 +22,7 @@ static_assert(sizeof(LTC_POLY_COEFFS) / sizeof(LTC_POLY_COEFFS[0]) == LTCPolynom
 
 const char *LTCPolynomial::COMPONENT_NAMES[LTCPolynomial::COMPONENTS] = { "a", "b", "c", "d", "e", "fn", "fg" };
 const char *LTCPolynomial::DEFAULT_INC_PATH = "servers/rendering/renderer_rd/ltc_poly_data.inc";
-const char *LTCPolynomial::DEFAULT_GLSL_PATH = "shaders/ltc_poly_coeffs_inc.glsl";
+const char *LTCPolynomial::DEFAULT_GLSL_PATH = "servers/rendering/renderer_rd/shaders/ltc_poly_coeffs_inc.glsl";
 
 static const double POLY_PI = 3.14159265358979323846;
 

@@ -25,7 +25,7 @@
 /* on the column-scaled design matrix, no normal equations).              */
 /* `godot-area ltc-fit --polynomial` writes the coefficients to           */
 /* servers/rendering/renderer_rd/ltc_poly_data.inc (C++, double) and      */
-/* shaders/ltc_poly_coeffs_inc.glsl (one function per patch with the      */
+/* servers/rendering/renderer_rd/shaders/ltc_poly_coeffs_inc.glsl (one function per patch with the      */
 /* coefficients as literal vec4 constants, blended by                     */
 /* ltc_fetch_polynomial in area_light_ltc_inc.glsl; no binding).          */
 

@@ -69,7 +69,7 @@ String LTCTableIO::format_inc(int p_size, const std::vector<float> &p_engine, co
 		o << " *   " << line << "\n";
 	}
 	o << " *\n";
-	o << " * TABLES: LTC_LUT_ENGINE_GGX fits the engine's lobe (shaders/brdf_inc.glsl: D_GGX *\n";
+	o << " * TABLES: LTC_LUT_ENGINE_GGX fits the engine's lobe (servers/rendering/renderer_rd/shaders/brdf_inc.glsl: D_GGX *\n";
 	o << " * V_SmithGGXCorrelatedFast, F = 1); LTC_LUT_SMITH_GGX fits GGX with the exact\n";
 	o << " * height-correlated Smith G2 (Heitz 2014). Both: alpha = max(r^2, " << LTCFitter::MIN_ALPHA << ").\n";
 	o << " *\n";

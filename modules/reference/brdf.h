@@ -1,13 +1,13 @@
 /**************************************************************************/
 /*  brdf.h                                                                */
 /**************************************************************************/
-/* godot-area: the C++ twin of shaders/brdf_inc.glsl (the surface BRDF of */
+/* godot-area: the C++ twin of servers/rendering/renderer_rd/shaders/brdf_inc.glsl (the surface BRDF of */
 /* the Forward+ renderer), used by the CPU reference renderer. Same       */
 /* function names, same argument order, same float arithmetic, so the     */
 /* reference renderer shades with provably the same BRDF as the GPU       */
 /* (tests/modules/test_brdf_twin.cpp evaluates both and compares).        */
 /*                                                                        */
-/* Mirrors shaders/brdf_inc.glsl as committed in b2cf7ce (md5           */
+/* Mirrors servers/rendering/renderer_rd/shaders/brdf_inc.glsl as committed in b2cf7ce (md5           */
 /* 9739e369...). Any change there must be made here too; the twin test    */
 /* (tests/modules/test_brdf_twin.cpp) fails otherwise.                    */
 /*                                                                        */
@@ -24,7 +24,7 @@
 namespace ReferenceBRDF {
 
 /*************************************************************************/
-/* Configuration (must match shaders/brdf_inc.glsl)                      */
+/* Configuration (must match servers/rendering/renderer_rd/shaders/brdf_inc.glsl)                      */
 /*************************************************************************/
 
 // M_PI of brdf_inc.glsl, rounded to float as the GLSL constant is.

@@ -1,8 +1,8 @@
 /**************************************************************************/
 /*  forward_lights.h                                                      */
 /**************************************************************************/
-/* godot-area: the C++ twin of shaders/scene_forward_lights_inc.glsl and  */
-/* shaders/light_data_inc.glsl (punctual light evaluation of the Forward+ */
+/* godot-area: the C++ twin of servers/rendering/renderer_rd/shaders/scene_forward_lights_inc.glsl and  */
+/* servers/rendering/renderer_rd/shaders/light_data_inc.glsl (punctual light evaluation of the Forward+ */
 /* renderer): Godot 4's distance attenuation, the spot cone falloff and   */
 /* the per-light BRDF sum  L_o += f(l, v) L_i (n.l). Same function names  */
 /* and arithmetic as the GLSL; the reference renderer shades in world     */
@@ -18,7 +18,7 @@
 
 namespace ReferenceBRDF {
 
-// Mirror of struct LightData (shaders/light_data_inc.glsl), world space instead of view space.
+// Mirror of struct LightData (servers/rendering/renderer_rd/shaders/light_data_inc.glsl), world space instead of view space.
 struct LightData {
 	Vector3 position; // World space, metres.
 	float inv_radius = 1.0f; // 1 / range (1/m).

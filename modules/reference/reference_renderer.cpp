@@ -8,7 +8,7 @@
 /* _create_surface_gpu and the vertex shader; material units =            */
 /* RendererRD::MaterialStorage::_make_ubo; light units = RendererRD::     */
 /* LightStorage::fill_light_data; shading = the fragment shader of        */
-/* shaders/forward_clustered/scene_forward_clustered.glsl.                */
+/* servers/rendering/renderer_rd/shaders/forward_clustered/scene_forward_clustered.glsl.                */
 
 #include "modules/reference/reference_renderer.h"
 

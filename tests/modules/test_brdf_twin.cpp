@@ -3,7 +3,7 @@
 /**************************************************************************/
 /* godot-area: proves that the reference renderer's C++ BRDF and light    */
 /* functions (modules/reference/brdf.h, forward_lights.h) are the GPU's:  */
-/* a compute shader that includes the real shaders/brdf_inc.glsl,         */
+/* a compute shader that includes the real servers/rendering/renderer_rd/shaders/brdf_inc.glsl,         */
 /* light_data_inc.glsl and scene_forward_lights_inc.glsl (read from disk, */
 /* not copied) evaluates them at 12 288 random tuples on lavapipe, and    */
 /* the C++ twins must agree within 1e-4 relative (values above 1e-6).     */
@@ -27,7 +27,7 @@
 namespace TestBRDFTwin {
 
 static String read_shader(const String &p_name) {
-	std::ifstream f(String(GODOT_AREA_ROOT) + "/shaders/" + p_name);
+	std::ifstream f(String(GODOT_AREA_ROOT) + "/servers/rendering/renderer_rd/shaders/" + p_name);
 	std::stringstream ss;
 	ss << f.rdbuf();
 	return ss.str();
@@ -110,8 +110,8 @@ TEST_CASE("[BRDF] GLSL brdf_inc.glsl and scene_forward_lights_inc.glsl equal the
 	String brdf = read_shader("brdf_inc.glsl");
 	String light_data = read_shader("light_data_inc.glsl");
 	String lights = read_shader("scene_forward_lights_inc.glsl");
-	REQUIRE_MESSAGE(brdf.find("D_GGX") != String::npos, "shaders/brdf_inc.glsl is readable");
-	REQUIRE_MESSAGE(lights.find("light_compute") != String::npos, "shaders/scene_forward_lights_inc.glsl is readable");
+	REQUIRE_MESSAGE(brdf.find("D_GGX") != String::npos, "servers/rendering/renderer_rd/shaders/brdf_inc.glsl is readable");
+	REQUIRE_MESSAGE(lights.find("light_compute") != String::npos, "servers/rendering/renderer_rd/shaders/scene_forward_lights_inc.glsl is readable");
 	String source = String("#version 450\nlayout(local_size_x = 64) in;\n") + brdf + "\n" + light_data + "\n" + lights + "\n" + twin_main;
 
 	String err;

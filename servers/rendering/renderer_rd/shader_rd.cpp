@@ -85,7 +85,7 @@ String quote_label(const String &p_label) {
 } // namespace
 
 String ShaderRD::get_shaders_root() {
-	return String(GODOT_AREA_ROOT) + "/shaders";
+	return String(GODOT_AREA_ROOT) + "/servers/rendering/renderer_rd/shaders";
 }
 
 String ShaderRD::get_cache_dir() {

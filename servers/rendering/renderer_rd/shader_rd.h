@@ -7,7 +7,7 @@
 /* File format: each section starts with a `#[stage]` line and its first  */
 /* real line is `#version 450`. Lines before the first section are        */
 /* ignored. `#include "file.glsl"` is expanded textually, resolved        */
-/* relative to the including file, then to GODOT_AREA_ROOT "/shaders".    */
+/* relative to the including file, then to GODOT_AREA_ROOT "/servers/rendering/renderer_rd/shaders".    */
 /* The expanded source carries `#line N "file"` directives, so glslang    */
 /* reports errors against the original file and line.                     */
 /*                                                                        */
@@ -34,7 +34,7 @@ class ShaderRD {
 public:
 	// Loads and splits the file (includes are expanded here). Returns false (and prints the
 	// reason) when the file or an include cannot be read. p_path: absolute, or relative to
-	// GODOT_AREA_ROOT "/shaders". Nothing is compiled yet.
+	// GODOT_AREA_ROOT "/servers/rendering/renderer_rd/shaders". Nothing is compiled yet.
 	bool initialize(const String &p_path, const std::vector<String> &p_variant_defines, const String &p_general_defines = "");
 	// Same, from source text already in memory; p_name is used in error messages and includes
 	// are resolved relative to p_base_dir (default: the shaders root).
