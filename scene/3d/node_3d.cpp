@@ -249,7 +249,7 @@ void Node3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("set_visible", "visible"), &Node3D::set_visible);
 	ClassDB::bind_method(D_METHOD("is_visible"), &Node3D::is_visible);
 	ClassDB::bind_method(D_METHOD("is_visible_in_tree"), &Node3D::is_visible_in_tree);
-	ClassDB::bind_method(D_METHOD("look_at", "target", "up"), &Node3D::look_at);
+	ClassDB::bind_method(D_METHOD("look_at", "target", "up"), &Node3D::look_at, DEFVAL(Vector3(0, 1, 0)));
 	ClassDB::bind_method(D_METHOD("rotate", "axis", "angle"), &Node3D::rotate);
 	ClassDB::bind_method(D_METHOD("rotate_x", "angle"), &Node3D::rotate_x);
 	ClassDB::bind_method(D_METHOD("rotate_y", "angle"), &Node3D::rotate_y);
