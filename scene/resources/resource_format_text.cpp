@@ -3,6 +3,7 @@
 /**************************************************************************/
 
 #include "scene/resources/resource_format_text.h"
+#include "core/io/file_io.h"
 
 #include "core/error/error_macros.h"
 #include "core/object/class_db.h"
@@ -60,14 +61,7 @@ String _dir_of(const String &p_path) {
 }
 
 bool _read_file(const String &p_path, String &r_text) {
-	std::ifstream f(p_path, std::ios::binary);
-	if (!f) {
-		return false;
-	}
-	std::stringstream ss;
-	ss << f.rdbuf();
-	r_text = ss.str();
-	return true;
+	return file_read_bounded(p_path, r_text, nullptr); // Bounded: `load /dev/zero` stops (FILE_READ_MAX_BYTES).
 }
 
 struct ExtRes {
@@ -651,12 +645,9 @@ bool ResourceFormatText::save_scene(const Node *p_root, const String &p_path, St
 		return false;
 	}
 	String text = save_scene_to_string(p_root);
-	std::ofstream f(p_path, std::ios::binary);
-	if (f) {
-		f << text;
-	}
-	if (!f) {
-		String msg = vformat("%s: Cannot write the scene file.", p_path.c_str());
+	String write_error; // Atomic and checked through close (core/io/file_io.h).
+	if (!file_write_atomic(p_path, text, &write_error)) {
+		String msg = vformat("%s: Cannot write the scene file: %s", p_path.c_str(), write_error.c_str());
 		if (r_error) {
 			*r_error = msg;
 		}
