@@ -60,10 +60,6 @@ String _dir_of(const String &p_path) {
 	return slash == String::npos ? String() : p_path.substr(0, slash);
 }
 
-bool _read_file(const String &p_path, String &r_text) {
-	return file_read_bounded(p_path, r_text, nullptr); // Bounded: `load /dev/zero` stops (FILE_READ_MAX_BYTES).
-}
-
 struct ExtRes {
 	String type;
 	String path; // As written.
@@ -588,9 +584,9 @@ Node *ResourceFormatText::load_scene_from_string(const String &p_text, const Str
 }
 
 Node *ResourceFormatText::load_scene(const String &p_path, String *r_error) {
-	String text;
-	if (!_read_file(p_path, text)) {
-		String msg = vformat("%s:0: Cannot open the scene file.", p_path.c_str());
+	String text, read_error; // Bounded read (core/io/file_io.h): `render /dev/zero` stops with an error.
+	if (!file_read_bounded(p_path, text, &read_error)) {
+		String msg = vformat("%s:0: Cannot open the scene file: %s", p_path.c_str(), read_error.c_str());
 		if (r_error) {
 			*r_error = msg;
 		}
