@@ -6,6 +6,7 @@
 
 #include "core/error/error_macros.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -154,7 +155,7 @@ bool ClusterBuilderRD::add_area_light(const Vector3 &p_center, const Vector3 &p_
 	return true;
 }
 
-void ClusterBuilderRD::bake_cluster() {
+void ClusterBuilderRD::bake_cluster(uint32_t p_type_count) {
 	ERR_FAIL_COND_MSG(!cluster_buffer.is_valid(), "ClusterBuilderRD::bake_cluster() called before setup().");
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 
@@ -182,7 +183,7 @@ void ClusterBuilderRD::bake_cluster() {
 	rd->compute_list_bind_compute_pipeline(list, pipeline);
 	rd->compute_list_bind_uniform_set(list, uniform_set, 0);
 	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
-	rd->compute_list_dispatch_threads(list, tiles_x * tiles_y * Z_SLICES, get_words_per_type(), ELEMENT_TYPE_MAX);
+	rd->compute_list_dispatch_threads(list, tiles_x * tiles_y * Z_SLICES, get_words_per_type(), std::min(p_type_count, uint32_t(ELEMENT_TYPE_MAX)));
 	rd->compute_list_end();
 }
 

@@ -115,8 +115,9 @@ public:
 	// contains every point in front within distance r of the rectangle, intersected with the thesis'
 	// eq. 5.1 sphere (radius r + sqrt(a^2 + b^2) / 2 around the centre). Returns false when full.
 	bool add_area_light(const Vector3 &p_center, const Vector3 &p_half_axis_x, const Vector3 &p_half_axis_y, const Vector3 &p_normal, float p_range);
-	// Uploads the elements and records the build dispatch (outside any list).
-	void bake_cluster();
+	// Uploads the elements and records the build dispatch (outside any list). p_type_count < ELEMENT_TYPE_MAX
+	// builds only the first types (the benchmark's "no area code" baseline; the other masks are stale).
+	void bake_cluster(uint32_t p_type_count = ELEMENT_TYPE_MAX);
 
 	RID get_cluster_buffer() const { return cluster_buffer; }
 	uint32_t get_tiles_x() const { return tiles_x; }

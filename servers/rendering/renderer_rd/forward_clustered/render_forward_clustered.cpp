@@ -346,7 +346,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	// ADAPTIVE area shadows: apply the newest completed frame's banding flags before this frame records
 	// anything (the readback then waits for no work of this frame).
 	last_area_shadow_tests = 0;
-	area_shadows.begin_frame(p_render_target);
+	const bool area_code = !area_code_disabled;
+	if (area_code) {
+		area_shadows.begin_frame(p_render_target);
+	}
 
 	ERR_FAIL_COND_MSG(!cluster_builder.setup(rt->width, rt->height), "render_scene: cluster setup failed.");
 
@@ -357,10 +360,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	cluster_builder.begin(clip_from_view, z_far);
 	// AUTO area lights pick their method from the receivers inside their influence box (AreaMethodSelector).
-	light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
+	if (area_code) {
+		light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
+	}
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
 	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
-	area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
+	if (area_code) {
+		area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
+	}
 
 	SceneDataUBO ubo;
 	memset(&ubo, 0, sizeof(ubo));
@@ -383,7 +390,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.cluster_tiles_x = cluster_builder.get_tiles_x();
 	ubo.cluster_tile_count = cluster_builder.get_tiles_x() * cluster_builder.get_tiles_y();
 	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
-	ubo.area_light_count = light_storage->get_area_light_count();
+	ubo.area_light_count = area_code ? light_storage->get_area_light_count() : 0u;
 	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
 	int cluster_debug = debug_cluster_type;
 	if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS) {
@@ -456,8 +463,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "begin");
 
 	// 0. Area shadow maps (only the dirty ones; none in a static scene after the first frame).
-	area_shadows.render_shadows(p_data);
-	if (area_shadows.has_frame_shadows()) {
+	if (area_code) {
+		area_shadows.render_shadows(p_data);
+	}
+	if (area_code && area_shadows.has_frame_shadows()) {
 		rd->capture_timestamp(prefix + "area_shadows"); // Profiled only in frames with shadowed area lights.
 	}
 
@@ -481,10 +490,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "depth_prepass");
 	// 1b. ADAPTIVE area shadows: reprojection + banding of this frame's quad tests against the pre-pass depth
 	// (timestamps "area_reprojection", "area_banding"; nothing without ADAPTIVE lights).
-	last_area_shadow_tests = area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
+	last_area_shadow_tests = !area_code ? 0u : area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
 
 	// 2. Cluster build.
-	cluster_builder.bake_cluster();
+	cluster_builder.bake_cluster(area_code ? ClusterBuilderRD::ELEMENT_TYPE_MAX : ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT);
 	rd->capture_timestamp(prefix + "cluster_build");
 
 	// 3. Opaque pass.

@@ -159,6 +159,7 @@ private:
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
+	bool area_code_disabled = false; // Benchmark baseline (set_area_code_disabled).
 	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
 	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
@@ -202,6 +203,10 @@ public:
 	// Debug view: output the per-pixel cluster element count of p_type (a ClusterBuilderRD::ElementType)
 	// instead of shading; -1 turns it off. Overrides RenderSceneData::debug_draw.
 	void set_debug_cluster_element_type(int p_type) { debug_cluster_type = p_type; }
+	// Benchmark baseline (bench --targets, P4): true skips every area-light step of a frame (area shadow
+	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
+	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.
+	void set_area_code_disabled(bool p_disabled) { area_code_disabled = p_disabled; }
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }
 	// SCENE_SHADER_COLOR_AREA: true once any area-method version has compiled it.

@@ -106,7 +106,30 @@ void main() {
 		for (uint w = 0u; w < scene_data.cluster_words_per_type; w++) {
 			dcount += uint(bitCount(cluster_buffer.data[doffset + w]));
 		}
-		frag_color = vec4(vec3(float(dcount)), 1.0);
+		// Green, area lights only: how many of them light this fragment (unshadowed result > 0), so the
+		// clusters' overhead (listed / lit pairs, bench --targets P5) can be counted on the image.
+		float dlit = 0.0;
+#ifdef USE_AREA_LIGHTS
+		if (scene_data.debug_cluster_type == uint(CLUSTER_ELEMENT_TYPE_AREA)) {
+			vec3 dN = normalize(normal_interp) * (gl_FrontFacing ? 1.0 : -1.0);
+			vec3 dV = scene_data.clip_from_view[3][3] == 1.0 ? vec3(0.0, 0.0, 1.0) : normalize(-vertex_interp);
+			for (uint w = 0u; w < scene_data.cluster_words_per_type; w++) {
+				uint mask = cluster_buffer.data[doffset + w];
+				while (mask != 0u) {
+					uint bit = uint(findLSB(mask));
+					mask &= ~(1u << bit);
+					uint i = w * 32u + bit;
+					if (i >= scene_data.area_light_count) {
+						continue;
+					}
+					vec3 dd = vec3(0.0), ds = vec3(0.0);
+					light_process_area_method(area_lights.data[i], vertex_interp, dN, dV, material.diffuse_mode, clamp(material.roughness, 0.0, 1.0), vec3(0.04), 1.0, true, dd, ds);
+					dlit += (max(max(dd.r, dd.g), dd.b) + max(max(ds.r, ds.g), ds.b)) > 0.0 ? 1.0 : 0.0;
+				}
+			}
+		}
+#endif
+		frag_color = vec4(float(dcount), dlit, float(dcount), 1.0);
 		return;
 	}
 
