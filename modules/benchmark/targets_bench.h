@@ -48,7 +48,7 @@ public:
 	};
 
 	struct Result {
-		String id; // "P1", "P2", ...
+		String id; // "P1", "P2", ...; "ms": a configuration's median ms per frame (label = its name).
 		String label; // "LTC / spot, 64 lights".
 		double gpu = 0.0; // Median per-round ratio of GPU timestamps.
 		double cpu = 0.0; // Median per-round ratio of process CPU time (P5: the pair ratio; C1: same as gpu).

@@ -60,7 +60,10 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	if (initialized) {
 		return true;
 	}
-	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
+	// Indexed by SceneShaderVariant. The brute-force and debug variants are compiled on first use only.
+	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n", "#define MODE_FORCE_ALL_LIGHTS\n",
+		"#define USE_AREA_LIGHTS\n#define MODE_FORCE_ALL_LIGHTS\n", "#define MODE_DEBUG_CLUSTER\n", "#define USE_AREA_LIGHTS\n#define MODE_DEBUG_CLUSTER\n" };
+	static_assert(SCENE_SHADER_MAX == 7, "One variant define per SceneShaderVariant.");
 	const String general_defines = area_ltc_precision_fix ? "" : "#define AREA_LTC_NO_PRECISION_FIX\n";
 	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants, general_defines), false,
 			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
@@ -233,7 +236,7 @@ int RenderForwardClustered::get_area_shader_version_count() const {
 	return count;
 }
 
-RID RenderForwardClustered::_get_area_shader(uint32_t p_area_methods) {
+RID RenderForwardClustered::_get_area_shader(uint32_t p_area_methods, SceneShaderVariant p_variant) {
 	const uint32_t valid_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
 	ERR_FAIL_COND_V_MSG((p_area_methods & AREA_VERSION_METHOD_BITS) == 0 || (p_area_methods & ~valid_bits) != 0, RID(),
 			vformat("RenderForwardClustered: invalid area shader version key 0x%x (shading method mask | shadow bits).", p_area_methods));
@@ -241,8 +244,8 @@ RID RenderForwardClustered::_get_area_shader(uint32_t p_area_methods) {
 	if (!av.version.is_valid()) {
 		av.version = scene_shader.version_create(get_area_method_defines(p_area_methods));
 	}
-	RID shader = scene_shader.version_get_shader(av.version, SCENE_SHADER_COLOR_AREA);
-	if (shader.is_valid()) {
+	RID shader = scene_shader.version_get_shader(av.version, p_variant);
+	if (shader.is_valid() && p_variant == SCENE_SHADER_COLOR_AREA) {
 		compiled_area_method_mask |= p_area_methods & AREA_VERSION_METHOD_BITS;
 	}
 	return shader;
@@ -271,7 +274,7 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
 	}
 	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(p_variant == SCENE_SHADER_DEPTH ? 0 : 1);
-	RID shader = p_variant == SCENE_SHADER_COLOR_AREA ? _get_area_shader(p_area_methods) : scene_shader.version_get_shader(p_variant);
+	RID shader = _is_area_variant(p_variant) ? _get_area_shader(p_area_methods, p_variant) : scene_shader.version_get_shader(p_variant);
 	ERR_FAIL_COND_V_MSG(!shader.is_valid(), RID(), "RenderForwardClustered: the scene shader for this pipeline failed to compile: " + scene_shader.get_last_error());
 	RID pipeline = rd->render_pipeline_create(shader, p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
 	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), RID(), "RenderForwardClustered: render pipeline creation failed.");
@@ -411,7 +414,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	// area shadow lookups only when some of them have shadow maps this frame.
 	const bool use_area = ubo.area_light_count > 0;
 	const uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
-	const SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	// Brute force and the cluster debug view are variants of their own: the production ones carry no code
+	// for them. All colour variants declare the same bindings, so the sets are shared.
+	SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	if ((ubo.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
+		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_DEBUG : SCENE_SHADER_COLOR_DEBUG;
+	} else if ((ubo.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
+		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_FORCE_ALL : SCENE_SHADER_COLOR_FORCE_ALL;
+	}
 	ERR_FAIL_COND_MSG(!_ensure_scene_sets(area_methods), "render_scene: scene uniform sets could not be created.");
 	RID color_set = use_area ? area_versions[area_methods].scene_set : scene_set_color;
 

@@ -67,6 +67,10 @@ public:
 		SCENE_SHADER_COLOR,
 		SCENE_SHADER_DEPTH, // MODE_DEPTH
 		SCENE_SHADER_COLOR_AREA, // USE_AREA_LIGHTS: colour pass with area lights.
+		SCENE_SHADER_COLOR_FORCE_ALL, // MODE_FORCE_ALL_LIGHTS: brute-force reference (tests).
+		SCENE_SHADER_COLOR_AREA_FORCE_ALL, // USE_AREA_LIGHTS + MODE_FORCE_ALL_LIGHTS.
+		SCENE_SHADER_COLOR_DEBUG, // MODE_DEBUG_CLUSTER: cluster debug view.
+		SCENE_SHADER_COLOR_AREA_DEBUG, // USE_AREA_LIGHTS + MODE_DEBUG_CLUSTER.
 		SCENE_SHADER_MAX,
 	};
 
@@ -171,7 +175,8 @@ private:
 	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
 	// The SCENE_SHADER_COLOR_AREA shader of the version for p_area_methods (created and compiled on first use).
-	RID _get_area_shader(uint32_t p_area_methods);
+	RID _get_area_shader(uint32_t p_area_methods, SceneShaderVariant p_variant = SCENE_SHADER_COLOR_AREA);
+	static bool _is_area_variant(SceneShaderVariant p_variant) { return p_variant == SCENE_SHADER_COLOR_AREA || p_variant == SCENE_SHADER_COLOR_AREA_FORCE_ALL || p_variant == SCENE_SHADER_COLOR_AREA_DEBUG; }
 	// AREA_VERSION_SHADOWS_* bits for the area shadow data of this frame (area_shadows.prepare() ran).
 	uint32_t _get_area_shadow_version_bits() const;
 	void _free_render_target(RenderTarget *p_rt);

@@ -10,6 +10,10 @@
 /*     view has area lights; compiled per version with the AREA_METHOD_*  */
 /*     defines of the methods in use (area_light_inc.glsl dispatches) and */
 /*     AREA_SHADOWS_PCF / _PCSS only when some light has area shadows.    */
+/*   3, 4 MODE_FORCE_ALL_LIGHTS (without / with USE_AREA_LIGHTS): the     */
+/*     brute-force reference loops (RS::set_debug_force_all_lights);      */
+/*   5, 6 MODE_DEBUG_CLUSTER (same): the cluster debug views.             */
+/*   The production variants 0 and 2 carry neither.                       */
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -96,6 +100,9 @@ vec3 srgb_to_linear(vec3 p_c) {
 
 void main() {
 #ifndef MODE_DEPTH
+#ifdef MODE_DEBUG_CLUSTER
+	// Only in the debug variants (a software rasterizer runs untaken branches, so the production variants
+	// carry no debug code). The flag stays a run-time test so every variant uses the same bindings.
 	if ((scene_data.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
 		// Debug view (RS::VIEWPORT_DEBUG_DRAW_CLUSTER_*): how many elements of one type the cluster of
 		// this fragment lists, written to every colour channel.
@@ -132,6 +139,7 @@ void main() {
 		frag_color = vec4(float(dcount), dlit, float(dcount), 1.0);
 		return;
 	}
+#endif
 
 	vec3 albedo = material.albedo.rgb;
 	float alpha = material.albedo.a;
@@ -175,6 +183,7 @@ void main() {
 	vec3 diffuse_light = vec3(0.0);
 	vec3 specular_light = vec3(0.0);
 
+#ifdef MODE_FORCE_ALL_LIGHTS
 	if ((scene_data.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
 		// Brute force reference: every light, in index order (same order as the clustered walk, so the
 		// sums are bit-identical when clustering drops only lights that contribute exactly 0).
@@ -202,13 +211,19 @@ void main() {
 			specular_light += area_specular * area_shadow;
 		}
 #endif
-	} else {
+	} else
+#endif // MODE_FORCE_ALL_LIGHTS
+	{
 		uvec2 tile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
 		uint slice = cluster_get_slice(-vertex.z, scene_data.z_far);
 		uint words = scene_data.cluster_words_per_type;
+		// Each type's loop walks only the mask words that can hold a live light of that type: a SIMD
+		// rasterizer runs the loop body once per word for the whole pixel group, so walking all of the
+		// capacity's words (16 at 512 lights) costs every pixel even where no light of the type exists.
 
 		uint omni_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_OMNI, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
-		for (uint w = 0u; w < words; w++) {
+		uint omni_words = min(words, (scene_data.omni_light_count + 31u) / 32u);
+		for (uint w = 0u; w < omni_words; w++) {
 			uint mask = cluster_buffer.data[omni_offset + w];
 			while (mask != 0u) {
 				uint bit = uint(findLSB(mask));
@@ -222,7 +237,8 @@ void main() {
 		}
 
 		uint spot_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_SPOT, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
-		for (uint w = 0u; w < words; w++) {
+		uint spot_words = min(words, (scene_data.spot_light_count + 31u) / 32u);
+		for (uint w = 0u; w < spot_words; w++) {
 			uint mask = cluster_buffer.data[spot_offset + w];
 			while (mask != 0u) {
 				uint bit = uint(findLSB(mask));
@@ -238,7 +254,8 @@ void main() {
 #ifdef USE_AREA_LIGHTS
 		// Thesis Listing A.3: the area lights of this cluster.
 		uint area_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_AREA, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
-		for (uint w = 0u; w < words; w++) {
+		uint area_words = min(words, (scene_data.area_light_count + 31u) / 32u);
+		for (uint w = 0u; w < area_words; w++) {
 			uint mask = cluster_buffer.data[area_offset + w];
 			while (mask != 0u) {
 				uint bit = uint(findLSB(mask));
