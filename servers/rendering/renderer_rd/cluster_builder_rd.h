@@ -72,8 +72,9 @@ public:
 private:
 	/* Private Members */
 
-	ShaderRD shader;
-	RID pipeline;
+	ShaderRD shader; // One variant per ElementType (CLUSTER_TYPE).
+	RID pipelines[ELEMENT_TYPE_MAX];
+	uint32_t written_words[ELEMENT_TYPE_MAX] = {}; // Mask words per cluster the last bake wrote, per type.
 	uint32_t max_elements = 0; // Per type, multiple of 32.
 	RID element_buffer; // ElementData[ELEMENT_TYPE_MAX * max_elements]
 	std::vector<ElementData> elements; // Same layout, CPU side.
@@ -98,7 +99,7 @@ public:
 	bool initialize(uint32_t p_max_elements);
 	// Frees every GPU object (before RenderingDevice::finalize()).
 	void finalize();
-	bool is_initialized() const { return pipeline.is_valid(); }
+	bool is_initialized() const { return pipelines[0].is_valid(); }
 
 	// (Re)allocates the cluster buffer for a render size. Returns false for zero sizes.
 	bool setup(uint32_t p_width, uint32_t p_height);

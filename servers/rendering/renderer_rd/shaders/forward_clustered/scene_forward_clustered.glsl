@@ -109,8 +109,11 @@ void main() {
 		uvec2 dtile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
 		uint dslice = cluster_get_slice(-vertex_interp.z, scene_data.z_far);
 		uint doffset = cluster_get_offset(min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1)), dtile, dslice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, scene_data.cluster_words_per_type);
+		uint dtype = min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1));
+		uint dlive = dtype == uint(CLUSTER_ELEMENT_TYPE_OMNI) ? scene_data.omni_light_count : (dtype == uint(CLUSTER_ELEMENT_TYPE_SPOT) ? scene_data.spot_light_count : scene_data.area_light_count);
+		uint dwords = min(scene_data.cluster_words_per_type, (dlive + 31u) / 32u); // Only live words are built.
 		uint dcount = 0u;
-		for (uint w = 0u; w < scene_data.cluster_words_per_type; w++) {
+		for (uint w = 0u; w < dwords; w++) {
 			dcount += uint(bitCount(cluster_buffer.data[doffset + w]));
 		}
 		// Green, area lights only: how many of them light this fragment (unshadowed result > 0), so the
@@ -120,7 +123,7 @@ void main() {
 		if (scene_data.debug_cluster_type == uint(CLUSTER_ELEMENT_TYPE_AREA)) {
 			vec3 dN = normalize(normal_interp) * (gl_FrontFacing ? 1.0 : -1.0);
 			vec3 dV = scene_data.clip_from_view[3][3] == 1.0 ? vec3(0.0, 0.0, 1.0) : normalize(-vertex_interp);
-			for (uint w = 0u; w < scene_data.cluster_words_per_type; w++) {
+			for (uint w = 0u; w < dwords; w++) {
 				uint mask = cluster_buffer.data[doffset + w];
 				while (mask != 0u) {
 					uint bit = uint(findLSB(mask));
