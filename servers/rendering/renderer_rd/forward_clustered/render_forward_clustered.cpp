@@ -309,6 +309,7 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 12, area_shadows.get_data_buffer()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 13, area_shadows.get_atlas_texture()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 14, area_shadows.get_sampler()));
+			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 15, area_shadows.get_compare_sampler()));
 			av.scene_set = rd->uniform_set_create(u, shader, 0);
 			av.scene_set_cluster_buffer = cluster_buffer;
 			av.scene_set_shadow_atlas = area_shadows.get_atlas_texture();

@@ -269,6 +269,9 @@ void main() {
 				}
 				vec3 area_diffuse = vec3(0.0), area_specular = vec3(0.0);
 				light_process_area_method(area_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, area_diffuse, area_specular);
+				if (area_diffuse == vec3(0.0) && area_specular == vec3(0.0)) {
+					continue; // Unlit here: no shadow lookup (it could only scale 0).
+				}
 				float area_shadow = light_process_area_shadow(i, vertex, N); // Area soft shadows (area_light_shadow_inc.glsl).
 				diffuse_light += area_diffuse * area_shadow;
 				specular_light += area_specular * area_shadow;
