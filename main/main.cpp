@@ -104,7 +104,7 @@ void Main::cleanup() {
 
 Node *Main::load_scene(const String &p_path, String *r_error) {
 	if (p_path.empty()) {
-		return ResourceFormatText::load_scene_from_string(DEMO_SCENE_TSCN, String(GODOT_AREA_ROOT) + "/demo/demo.tscn", r_error);
+		return ResourceFormatText::load_scene_from_string(DEMO_SCENE_TSCN, "demo/demo.tscn (built in)", r_error);
 	}
 	return ResourceFormatText::load_scene(p_path, r_error);
 }
