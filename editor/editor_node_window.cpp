@@ -116,6 +116,9 @@ public:
 	bool window_captured = false;
 	bool window_capture_requested = false; // F11.
 	bool viewport_pressed[3] = { false, false, false };
+	// What the scene loader reported (one line per distinct problem: what was kept as a
+	// placeholder or as text, what could not be applied), shown in the Output dock.
+	std::vector<String> load_report;
 
 	void log_line(const String &p_text) {
 		if (log) {
@@ -307,6 +310,13 @@ public:
 	}
 
 	void draw_output() {
+		if (!load_report.empty()) {
+			ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Scene load report: %d line(s) (kept as placeholders or text, or not applied):", (int)load_report.size());
+			for (const String &line : load_report) {
+				ImGui::BulletText("%s", line.c_str());
+			}
+			ImGui::Separator();
+		}
 		ImGui::Text("GPU time per pass (last frame, ms):");
 		double total = 0;
 		for (const auto &p : viewport.get_profile()) {
@@ -395,7 +405,17 @@ int EditorNode::run(const Options &p_options) {
 	{
 		SceneTree tree;
 		s.tree = &tree;
-		s.scene = Main::load_scene(p_options.scene_path, &error);
+		{
+			// The loader's warnings are the load report (it counts each kind of problem once).
+			ErrorHandlerList report_handler;
+			report_handler.callback = [&s](ErrorHandlerType, const String &p_text) { s.load_report.push_back(p_text); };
+			add_error_handler(&report_handler);
+			s.scene = Main::load_scene(p_options.scene_path, &error);
+			remove_error_handler(&report_handler);
+		}
+		for (const String &line : s.load_report) {
+			s.log_line("load " + line);
+		}
 		if (!s.scene) {
 			fprintf(stderr, "godot-area editor: cannot load scene '%s': %s\n", p_options.scene_path.empty() ? "<embedded demo>" : p_options.scene_path.c_str(), error.c_str());
 			code = 2;

@@ -69,7 +69,9 @@ void _ensure_engine() {
 	try {
 		_start_engine("rd");
 	} catch (const std::runtime_error &e) {
-		PyErr_WarnEx(PyExc_RuntimeWarning, (String("godot_area: no Vulkan renderer, using the 'dummy' backend (no rendering): ") + e.what()).c_str(), 2);
+		if (PyErr_WarnEx(PyExc_RuntimeWarning, (String("godot_area: no Vulkan renderer, using the 'dummy' backend (no rendering): ") + e.what()).c_str(), 2) != 0) {
+			throw py::error_already_set();
+		}
 		_start_engine("dummy");
 	}
 }
@@ -291,10 +293,13 @@ PYBIND11_MODULE(godot_area, m) {
 		if (!scene) {
 			throw py::value_error(vformat("Cannot load scene '%s': %s", p_path.c_str(), error.c_str()));
 		}
+		py::object result = wrap_object(scene); // Owned by Python before a warning can raise.
 		for (const String &w : warnings) {
-			PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 2);
+			if (PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 2) != 0) {
+				throw py::error_already_set(); // The warnings filter made it an error.
+			}
 		}
-		return wrap_object(scene);
+		return result;
 	}, py::arg("path"), "Loads a .tscn (or glTF) scene; '' gives the embedded demo scene. Python owns the returned root.");
 	m.def("save_scene", [](py::object p_node, const String &p_path) {
 		if (!py::isinstance<EngineNode>(p_node)) {

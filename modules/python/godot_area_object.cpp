@@ -49,7 +49,9 @@ EngineObject *_wrapper_of(PyObject *p_object) {
 
 void _warn(const std::vector<String> &p_warnings) {
 	for (const String &w : p_warnings) {
-		PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 2);
+		if (PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 2) != 0) {
+			throw py::error_already_set(); // The warnings filter made it an error.
+		}
 	}
 }
 
