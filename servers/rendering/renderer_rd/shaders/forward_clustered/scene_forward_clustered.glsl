@@ -10,6 +10,9 @@
 /*     view has area lights; compiled per version with the AREA_METHOD_*  */
 /*     defines of the methods in use (area_light_inc.glsl dispatches) and */
 /*     AREA_SHADOWS_PCF / _PCSS only when some light has area shadows.    */
+/* Any colour variant may carry USE_DIRECTIONAL_LIGHTS (a version of a   */
+/* view with a DirectionalLight3D: binding 8 and the directional loop,   */
+/* scene_forward_directional_inc.glsl); without it there is no sun code.*/
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -66,6 +69,9 @@ void main() {
 
 #include "../brdf_inc.glsl"
 #include "../scene_forward_lights_inc.glsl"
+#ifdef USE_DIRECTIONAL_LIGHTS
+#include "../scene_forward_directional_inc.glsl"
+#endif
 #ifdef USE_AREA_LIGHTS
 #include "../area_light_inc.glsl"
 #if defined(AREA_SHADOWS_PCF) || defined(AREA_SHADOWS_PCSS)
@@ -233,6 +239,16 @@ void main() {
 		}
 #endif
 	}
+
+#ifdef USE_DIRECTIONAL_LIGHTS
+	// Directional lights: their own loop, outside the clustered walks (Godot's directional light list).
+	for (uint i = 0u; i < directional_lights.count; i++) {
+		if ((directional_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+			continue;
+		}
+		light_process_directional(directional_lights.data[i], N, V, diffuse_mode, roughness, f0, f90, specular_enabled, 1.0, diffuse_light, specular_light);
+	}
+#endif
 
 	vec3 ambient_light = scene_data.ambient_light.rgb;
 	vec3 color = material.emission.rgb + (ambient_light + diffuse_light) * albedo * (1.0 - metallic) + specular_light;
