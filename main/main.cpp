@@ -324,11 +324,14 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 				printf("wrote %s (%dx%d, scene-linear %s)\n", out_path.c_str(), width, height, _has_flag(p_args, "--half") ? "half" : "float");
 				auto png_it = p_args.options.find("--png");
 				if (png_it != p_args.options.end()) {
-					if (!PNGWriter::save(image, png_it->second, &error, exposure, Tonemap::MODE_ACES_FITTED)) {
+					// The scene's Environment tonemap (tonemap_mode/_exposure/_white), as Godot shows it; the EXR stays linear.
+					const Tonemap::Settings tonemap = Environment::get_preview_tonemap(tree.get_camera_3d()->get_environment(), tree.get_world_3d()->get_environment());
+					static const char *tonemap_names[Tonemap::MODE_MAX] = { "Linear", "ACES-fitted", "Reinhard", "Filmic", "ACES", "AgX" };
+					if (!PNGWriter::save(image, png_it->second, &error, exposure, tonemap)) {
 						fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 						code = 1;
 					} else {
-						printf("wrote %s (ACES-fitted preview, exposure %+.2f EV)\n", png_it->second.c_str(), exposure);
+						printf("wrote %s (%s preview, tonemap exposure %.2f, white %.2f, %+.2f EV)\n", png_it->second.c_str(), tonemap_names[tonemap.mode], tonemap.exposure, tonemap.white, exposure);
 					}
 				}
 				if (p_backend == Main::BACKEND_RD) {
