@@ -17,7 +17,7 @@
 
 #include "modules/python/godot_area_bindings.h"
 
-#include "main/main.h"
+#include "scene/main/godot_instance.h"
 #include "modules/openexr/image_loader_exr.h"
 #include "modules/openexr/image_saver_exr.h"
 #include "modules/python/python_session.h"
@@ -237,7 +237,7 @@ PYBIND11_MODULE(godot_area, m) {
 		std::vector<String> warnings;
 		{
 			ErrorCapture capture;
-			scene = Main::load_scene(p_path, &error);
+			scene = GodotInstance::load_scene(p_path, &error);
 			warnings = capture.warnings;
 		}
 		if (!scene) {
