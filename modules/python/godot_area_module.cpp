@@ -18,7 +18,7 @@
 #include "modules/python/godot_area_bindings.h"
 #include "modules/python/godot_area_embedded.gen.h"
 
-#include "main/main.h"
+#include "scene/main/godot_instance.h"
 #include "modules/openexr/image_loader_exr.h"
 #include "modules/openexr/image_saver_exr.h"
 #include "modules/python/python_session.h"
@@ -287,7 +287,7 @@ PYBIND11_MODULE(godot_area, m) {
 		std::vector<String> warnings;
 		{
 			ErrorCapture capture;
-			scene = Main::load_scene(p_path, &error);
+			scene = GodotInstance::load_scene(p_path, &error);
 			warnings = capture.warnings;
 		}
 		if (!scene) {
