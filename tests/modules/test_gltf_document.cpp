@@ -219,12 +219,16 @@ TEST_CASE("[GLTF][SceneTree] a .tscn instances a glTF file as MeshInstance3D nod
 	CHECK(Math::is_equal_approx(mat->get_roughness(), 0.4f));
 
 	delete root;
-	// A missing glTF file is a warning naming it; the rest of the scene still loads.
+	// A missing glTF file is a warning naming it; the rest of the scene still loads and the
+	// instance is kept as a placeholder (written back on save) with nothing under it.
 	set_error_print_silenced(true);
 	Node *partial = ResourceFormatText::load_scene_from_string(tscn, (dir / "missing" / "scene.tscn").string(), &error);
 	set_error_print_silenced(false);
 	REQUIRE(partial != nullptr);
-	CHECK(partial->get_node_or_null("Model") == nullptr);
+	REQUIRE(partial->get_node_or_null("Model") != nullptr);
+	CHECK(partial->get_node_or_null("Model")->get_class() == "MissingNode");
+	CHECK(partial->get_node_or_null("Model")->get_child_count() == 0);
+	CHECK(ResourceFormatText::save_scene_to_string(partial).find("instance=ExtResource(") != String::npos);
 	delete partial;
 	uninitialize_gltf_module();
 	std::filesystem::remove_all(dir);
