@@ -23,7 +23,8 @@
 #include "editor/plugins/node_3d_editor_plugin.h"
 #include "editor/scene_tree_dock.h"
 #include "editor/scene_tree_editor.h"
-#include "main/main.h"
+#include "modules/register_module_types.h"
+#include "scene/main/godot_instance.h"
 #include "scene/3d/node_3d.h"
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
@@ -386,16 +387,18 @@ int EditorNode::run(const Options &p_options) {
 		return 1;
 	}
 	RenderingDevice::set_extra_extensions(display.get_required_instance_extensions(), { VK_KHR_SWAPCHAIN_EXTENSION_NAME });
-	if (!Main::setup(Main::BACKEND_RD, &error)) {
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error)) {
 		fprintf(stderr, "godot-area editor: %s\n", error.c_str());
 		s.log_line("exit error " + error);
 		return 1;
 	}
+	initialize_modules();
 	int code = 0;
 	{
 		SceneTree tree;
 		s.tree = &tree;
-		s.scene = Main::load_scene(p_options.scene_path, &error);
+		s.scene = GodotInstance::load_scene(p_options.scene_path, &error);
 		if (!s.scene) {
 			fprintf(stderr, "godot-area editor: cannot load scene '%s': %s\n", p_options.scene_path.empty() ? "<embedded demo>" : p_options.scene_path.c_str(), error.c_str());
 			code = 2;
@@ -566,12 +569,13 @@ int EditorNode::run(const Options &p_options) {
 		}
 		s.scene = nullptr;
 	}
-	int validation_errors = Main::get_validation_error_count();
+	int validation_errors = engine.get_validation_error_count();
 	if (validation_errors > 0) {
 		fprintf(stderr, "godot-area: the Vulkan validation layer reported %d error(s) (see above)\n", validation_errors);
 		code = code ? code : 1;
 	}
-	Main::cleanup();
+	uninitialize_modules();
+	engine.stop();
 	display.finalize();
 	s.log_line(vformat("exit %d validation_errors %d", code, validation_errors));
 	if (s.log) {
