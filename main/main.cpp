@@ -41,6 +41,10 @@
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
 #include "scene/resources/resource_format_text.h"
+#include "servers/rendering/renderer_rd/area_method_selector.h"
+#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/rendering_device.h"
 #include "servers/rendering/rendering_profiler.h"
 
@@ -64,7 +68,9 @@ bool Main::setup(Backend p_backend, String *r_error, const void *p_reference_opt
 		}
 		ok = engine.start_with_compositor(new RendererCompositorReference(options), r_error);
 	} else {
-		ok = engine.start(p_backend == BACKEND_RD ? GodotInstance::BACKEND_RD : GodotInstance::BACKEND_DUMMY, r_error);
+		// RD: the light capacity per type is rendering/limits/cluster_builder/max_clustered_elements.
+		ok = engine.start(p_backend == BACKEND_RD ? GodotInstance::BACKEND_RD : GodotInstance::BACKEND_DUMMY, r_error,
+				p_backend == BACKEND_RD ? RendererRD::LightStorage::get_project_max_lights() : 0);
 	}
 	if (ok) {
 		initialize_modules();
@@ -112,7 +118,8 @@ void _print_usage() {
 			"  godot-area editor [SCENE.tscn] [--select NODE_PATH] [--save-as PATH] [--test-log FILE] [--screenshot PREFIX]\n"
 			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
 			"GODOT_AREA_VALIDATION=1 enables the validation layer. --setting name=value overrides a project setting\n"
-			"(e.g. rendering/lights_and_shadows/area_light_error_budget=0.02).\n");
+			"(e.g. rendering/lights_and_shadows/area_light_error_budget=0.02; unknown names are rejected). --strict makes\n"
+			"any warning or error (a scene property that does not apply, lights over capacity) exit with 1.\n");
 }
 
 // Options that take a value, per command; anything else starting with "-" is an error.
@@ -423,13 +430,105 @@ int _command_compare(const Args &p_args) {
 
 } // namespace
 
+namespace {
+
+/* --setting names, --strict (issue 20) */
+
+// Registers every project setting the engine reads, so that --setting can reject a name nobody reads. A
+// new GLOBAL_DEF must be added here (its getter registers it with its default).
+void _register_project_settings() {
+	set_error_print_silenced(true); // Getters complain about invalid values; there are none yet.
+	AreaMethodSelector::get_error_budget();
+	AreaMethodSelector::get_default_roughness();
+	AreaShadowAdaptiveRD::get_project_reprojection_divisor();
+	AreaShadowAdaptiveRD::get_project_max_depth();
+	AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction();
+	RendererRD::LightStorage::get_project_max_lights();
+	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_size", int(AreaShadowAtlas::DEFAULT_SIZE));
+	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_subdivision", int(AreaShadowAtlas::DEFAULT_SUBDIVISION));
+	set_error_print_silenced(false);
+}
+
+// Levenshtein distance, for the did-you-mean of an unknown setting.
+size_t _edit_distance(const String &p_a, const String &p_b) {
+	std::vector<size_t> row(p_b.size() + 1);
+	for (size_t j = 0; j <= p_b.size(); j++) {
+		row[j] = j;
+	}
+	for (size_t i = 1; i <= p_a.size(); i++) {
+		size_t diag = row[0];
+		row[0] = i;
+		for (size_t j = 1; j <= p_b.size(); j++) {
+			size_t up = row[j];
+			row[j] = std::min({ row[j] + 1, row[j - 1] + 1, diag + (p_a[i - 1] == p_b[j - 1] ? 0 : 1) });
+			diag = up;
+		}
+	}
+	return row[p_b.size()];
+}
+
+// False with r_error ("... did you mean ...?") when p_assignment names no registered setting.
+bool _check_setting_name(const String &p_assignment, String *r_error) {
+	const String name = string_strip_edges(p_assignment.substr(0, p_assignment.find('=')));
+	ProjectSettings *ps = ProjectSettings::get_singleton();
+	if (ps->is_registered(name)) {
+		return true;
+	}
+	String best;
+	size_t best_distance = String::npos;
+	for (const String &n : ps->get_setting_names()) {
+		size_t d = ps->is_registered(n) ? _edit_distance(name, n) : String::npos;
+		if (d < best_distance) {
+			best_distance = d;
+			best = n;
+		}
+	}
+	*r_error = vformat("unknown project setting \"%s\"", name.c_str());
+	if (!best.empty() && best_distance <= std::max<size_t>(3, name.size() / 4)) {
+		*r_error += vformat("; did you mean \"%s\"?", best.c_str());
+	}
+	return false;
+}
+
+int _run_command(int p_argc, char **p_argv);
+
+} // namespace
+
+// --strict: any warning or error printed while the command runs (a scene's unknown property, a value out of
+// range, lights over capacity) makes an otherwise successful run exit 1.
 int Main::run(int p_argc, char **p_argv) {
+	std::vector<char *> argv_rest;
+	bool strict = false;
+	for (int i = 0; i < p_argc; i++) {
+		if (String(p_argv[i]) == "--strict") {
+			strict = true;
+		} else {
+			argv_rest.push_back(p_argv[i]);
+		}
+	}
+	int reports = 0;
+	ErrorHandlerList counter;
+	counter.callback = [&reports](ErrorHandlerType, const String &) { reports++; };
+	add_error_handler(&counter);
+	int code = _run_command(int(argv_rest.size()), argv_rest.data());
+	remove_error_handler(&counter);
+	if (strict && code == 0 && reports > 0) {
+		fprintf(stderr, "godot-area: --strict: %d warning(s) or error(s) were reported (see above); exiting with 1\n", reports);
+		code = 1;
+	}
+	return code;
+}
+
+namespace {
+
+int _run_command(int p_argc, char **p_argv) {
 	// Project settings given as --setting name=value (anywhere on the line) apply to every command.
+	_register_project_settings();
 	std::vector<char *> argv_rest;
 	for (int i = 0; i < p_argc; i++) {
 		if (String(p_argv[i]) == "--setting") {
 			String error;
-			if (i + 1 >= p_argc || !ProjectSettings::get_singleton()->parse_override(p_argv[i + 1], &error)) {
+			if (i + 1 >= p_argc || !_check_setting_name(p_argv[i + 1], &error) || !ProjectSettings::get_singleton()->parse_override(p_argv[i + 1], &error)) {
 				fprintf(stderr, "godot-area: --setting needs name=value with a registered setting: %s\n", error.c_str());
 				return 2;
 			}
@@ -503,3 +602,5 @@ int Main::run(int p_argc, char **p_argv) {
 	}
 	return _command_bench(args);
 }
+
+} // namespace

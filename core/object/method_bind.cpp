@@ -61,6 +61,12 @@ String MethodBind::get_call_error_text(const CallError &p_error, const Variant *
 				got = p_args[p_error.argument]->stringify();
 			}
 			String arg_name = p_error.argument < (int)arg_names.size() ? arg_names[p_error.argument] : itos(p_error.argument);
+			if (p_args && p_error.argument < (int)arg_int_ranges.size() && p_error.expected == Variant::INT && Variant::can_convert(p_args[p_error.argument]->get_type(), Variant::INT)) {
+				// The type converts, so the value is outside the C++ integer type (VariantCaster::check).
+				const std::pair<int64_t, int64_t> &range = arg_int_ranges[p_error.argument];
+				return vformat("Value %s in argument '%s' of '%s' is out of range: the setter takes %lld..%lld.", p_args[p_error.argument]->stringify().c_str(), arg_name.c_str(), name.c_str(),
+						(long long)range.first, (long long)range.second);
+			}
 			return vformat("Invalid type in argument '%s' of '%s': expected %s, got %s.", arg_name.c_str(), name.c_str(), Variant::get_type_name(p_error.expected).c_str(), got.c_str());
 		}
 		case CallError::CALL_ERROR_TOO_MANY_ARGUMENTS:

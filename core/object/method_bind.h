@@ -52,6 +52,7 @@ protected:
 	String instance_class;
 	std::vector<String> arg_names;
 	std::vector<Variant::Type> arg_types; // NIL = any Variant.
+	std::vector<std::pair<int64_t, int64_t>> arg_int_ranges; // Integer arguments: the C++ type's range (else min > max).
 	std::vector<Variant> default_arguments; // Of the last arguments (Godot's DEFVAL), in order.
 	Variant::Type return_type = Variant::NIL;
 	bool returns = false;
@@ -122,6 +123,7 @@ public:
 			method(p_method) {
 		is_const = p_const;
 		arg_types = std::vector<Variant::Type>{ VariantCaster<typename std::decay<P>::type>::TYPE... };
+		arg_int_ranges = std::vector<std::pair<int64_t, int64_t>>{ { variant_int_min<typename std::decay<P>::type>(), variant_int_max<typename std::decay<P>::type>() }... };
 		if constexpr (!std::is_void<R>::value) {
 			returns = true;
 			return_type = VariantCaster<typename std::decay<R>::type>::TYPE;

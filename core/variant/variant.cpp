@@ -217,16 +217,21 @@ Variant::operator int64_t() const {
 	}
 }
 
+// Narrowing saturates instead of wrapping (2^31 must not read as -2^31); bound setters reject such
+// values before they get here (VariantCaster::check).
 Variant::operator int() const {
-	return (int)operator int64_t();
+	const int64_t v = operator int64_t();
+	return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : (int)v);
 }
 
 Variant::operator uint32_t() const {
-	return (uint32_t)operator int64_t();
+	const int64_t v = operator int64_t();
+	return v > int64_t(UINT32_MAX) ? UINT32_MAX : (v < 0 ? 0u : (uint32_t)v);
 }
 
 Variant::operator uint64_t() const {
-	return (uint64_t)operator int64_t();
+	const int64_t v = operator int64_t();
+	return v < 0 ? 0u : (uint64_t)v;
 }
 
 Variant::operator double() const {

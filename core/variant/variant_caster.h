@@ -10,6 +10,8 @@
 
 #include "core/variant/variant.h"
 
+#include <cstdint>
+#include <limits>
 #include <type_traits>
 
 class Object;
@@ -33,11 +35,41 @@ _VARIANT_CASTER_SIMPLE(Vector3, Variant::VECTOR3, operator Vector3)
 _VARIANT_CASTER_SIMPLE(Color, Variant::COLOR, operator Color)
 _VARIANT_CASTER_SIMPLE(Transform3D, Variant::TRANSFORM3D, operator Transform3D)
 
-// Integers (not bool) and enums go through INT.
+// The values of integer type T that an INT Variant (int64) may hold; enums are bound as int (Godot's
+// enums are int-sized). Other types have no range (min > max).
+template <class T>
+constexpr int64_t variant_int_min() {
+	if constexpr (std::is_enum<T>::value) {
+		return INT32_MIN;
+	} else if constexpr (std::is_integral<T>::value && std::is_signed<T>::value) {
+		return int64_t(std::numeric_limits<T>::min());
+	} else {
+		return 0;
+	}
+}
+template <class T>
+constexpr int64_t variant_int_max() {
+	if constexpr (std::is_enum<T>::value) {
+		return INT32_MAX;
+	} else if constexpr (std::is_integral<T>::value && !std::is_same<T, bool>::value) {
+		return std::numeric_limits<T>::max() > uint64_t(INT64_MAX) ? INT64_MAX : int64_t(std::numeric_limits<T>::max());
+	} else {
+		return -1;
+	}
+}
+
+// Integers (not bool) and enums go through INT. check() also rejects a value outside T's range, so an
+// int64 is never narrowed silently (4294967301 would otherwise reach an int setter as 5).
 template <class T>
 struct VariantCaster<T, typename std::enable_if<(std::is_integral<T>::value && !std::is_same<T, bool>::value) || std::is_enum<T>::value>::type> {
 	static constexpr Variant::Type TYPE = Variant::INT;
-	static bool check(const Variant &p_v) { return Variant::can_convert(p_v.get_type(), TYPE); }
+	static bool check(const Variant &p_v) {
+		if (!Variant::can_convert(p_v.get_type(), TYPE)) {
+			return false;
+		}
+		const int64_t v = p_v.operator int64_t();
+		return v >= variant_int_min<T>() && v <= variant_int_max<T>();
+	}
 	static T cast(const Variant &p_v) { return (T)p_v.operator int64_t(); }
 	static Variant to_variant(T p_value) { return Variant((int64_t)p_value); }
 };

@@ -17,6 +17,8 @@ PACKAGES=(
 	libembree-dev
 	# Tests.
 	doctest-dev
+	# Sanitizer and fuzz job (misc/scripts/sanitize_fuzz.sh, `scons fuzz=yes`): clang with ASan, UBSan, libFuzzer.
+	clang libclang-rt-dev
 	# Charts.
 	python3-matplotlib python3-numpy
 	# Python module godot_area (modules/python), built for and tested with /usr/bin/python3.

@@ -141,6 +141,10 @@ py::list _run_frames(int p_count, py::object p_callback, int p_width, int p_heig
 	if (p_count < 0) {
 		throw py::value_error("run_frames() needs a frame count >= 0.");
 	}
+	// 0 x 0 keeps the tree's size; anything else must be a drawable size (20000 x 20000 used to draw nothing).
+	if (p_width < 0 || p_height < 0 || p_width > Image::MAX_SIZE || p_height > Image::MAX_SIZE || ((p_width == 0) != (p_height == 0))) {
+		throw py::value_error(vformat("run_frames(): size %dx%d is out of range (both 1..%d, or both 0 to keep the tree's size).", p_width, p_height, Image::MAX_SIZE));
+	}
 	if (p_width > 0 && p_height > 0) {
 		tree->set_size(p_width, p_height);
 	}

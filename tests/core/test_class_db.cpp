@@ -396,4 +396,62 @@ TEST_CASE("[ClassDB] Integer constants, defaults and notifications") {
 	CHECK(omni.omni_notified == 5);
 }
 
+// Integer setters of several widths, as the engine's properties have (int area_shadow_grid, uint32 layers).
+class TestCDBIntWidths : public Object {
+	GDCLASS(TestCDBIntWidths, Object);
+
+public:
+	int grid = 4;
+	uint32_t layers = 1;
+	int64_t big = 0;
+
+	void set_grid(int p_grid) { grid = p_grid; }
+	int get_grid() const { return grid; }
+	void set_layers(uint32_t p_layers) { layers = p_layers; }
+	uint32_t get_layers() const { return layers; }
+	void set_big(int64_t p_big) { big = p_big; }
+	int64_t get_big() const { return big; }
+
+protected:
+	static void _bind_methods() {
+		ClassDB::bind_method(D_METHOD("set_grid", "grid"), &TestCDBIntWidths::set_grid);
+		ClassDB::bind_method(D_METHOD("get_grid"), &TestCDBIntWidths::get_grid);
+		ClassDB::bind_method(D_METHOD("set_layers", "layers"), &TestCDBIntWidths::set_layers);
+		ClassDB::bind_method(D_METHOD("get_layers"), &TestCDBIntWidths::get_layers);
+		ClassDB::bind_method(D_METHOD("set_big", "big"), &TestCDBIntWidths::set_big);
+		ClassDB::bind_method(D_METHOD("get_big"), &TestCDBIntWidths::get_big);
+		ADD_PROPERTY(PropertyInfo(Variant::INT, "grid"), "set_grid", "get_grid");
+		ADD_PROPERTY(PropertyInfo(Variant::INT, "layers"), "set_layers", "get_layers");
+		ADD_PROPERTY(PropertyInfo(Variant::INT, "big"), "set_big", "get_big");
+	}
+};
+
+TEST_CASE("[ClassDB] an int64 value outside the setter's integer type is rejected, not wrapped") {
+	if (!ClassDB::class_exists("TestCDBIntWidths")) {
+		GDREGISTER_CLASS(TestCDBIntWidths);
+	}
+	TestCDBIntWidths obj;
+	String error;
+	// Issue 20: 4294967301 = 2^32 + 5 reached an int setter as 5.
+	CHECK_FALSE(ClassDB::set_property(&obj, "grid", Variant(int64_t(4294967301LL)), nullptr, &error));
+	CHECK(obj.grid == 4);
+	CHECK_MESSAGE(error.find("Value 4294967301 in argument 'grid' of 'set_grid' is out of range: the setter takes -2147483648..2147483647.") != String::npos, error);
+	error.clear();
+	CHECK_FALSE(ClassDB::set_property(&obj, "grid", Variant(int64_t(2147483648LL)), nullptr, &error));
+	CHECK(obj.grid == 4);
+	CHECK_FALSE(ClassDB::set_property(&obj, "grid", Variant(3e10), nullptr, &error)); // A float that does not fit either.
+	CHECK(obj.grid == 4);
+	CHECK(ClassDB::set_property(&obj, "grid", Variant(int64_t(INT32_MIN)), nullptr, &error));
+	CHECK(obj.grid == INT32_MIN);
+	CHECK_FALSE(ClassDB::set_property(&obj, "layers", Variant(int64_t(-1)), nullptr, &error));
+	CHECK(obj.layers == 1);
+	CHECK(ClassDB::set_property(&obj, "layers", Variant(int64_t(UINT32_MAX)), nullptr, &error));
+	CHECK(obj.layers == UINT32_MAX);
+	CHECK(ClassDB::set_property(&obj, "big", Variant(int64_t(INT64_MIN)), nullptr, &error));
+	CHECK(obj.big == INT64_MIN);
+	// Direct narrowing saturates instead of wrapping.
+	CHECK(int(Variant(int64_t(2147483648LL))) == INT32_MAX);
+	CHECK(uint32_t(Variant(int64_t(-5))) == 0u);
+}
+
 } // namespace TestClassDB

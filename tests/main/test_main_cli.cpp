@@ -175,4 +175,59 @@ TEST_CASE("[CLI] a malformed scene file exits 2 with an error naming file and li
 	std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("[CLI] --setting rejects an unknown name with a did-you-mean") {
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	String out;
+	CHECK(run_cli_capture("render --width 16 --height 16 -o /tmp/godot_area_never.exr --setting rendering/lights_and_shadows/area_light_error_budge=0.1", &out) == 2);
+	CHECK_MESSAGE(out.find("unknown project setting \"rendering/lights_and_shadows/area_light_error_budge\"; did you mean \"rendering/lights_and_shadows/area_light_error_budget\"?") != String::npos, out);
+	CHECK(run_cli_capture("info --setting no/such/thing=1", &out) == 2);
+	CHECK_MESSAGE(out.find("unknown project setting \"no/such/thing\"") != String::npos, out);
+	CHECK_MESSAGE(out.find("did you mean") == String::npos, out); // Nothing close enough to suggest.
+	CHECK_FALSE(std::filesystem::exists("/tmp/godot_area_never.exr"));
+}
+
+// A lit floor seen by a camera, with p_lights omni lights above it in view.
+static String _lights_scene(int p_lights, bool p_bad_property) {
+	String text = "[gd_scene format=3]\n\n[sub_resource type=\"PlaneMesh\" id=\"Plane\"]\nsize = Vector2(8, 8)\n\n"
+				  "[node name=\"Root\" type=\"Node3D\"]\n\n"
+				  "[node name=\"Camera\" type=\"Camera3D\" parent=\".\"]\ntransform = Transform3D(1, 0, 0, 0, 0.7071068, 0.7071068, 0, -0.7071068, 0.7071068, 0, 4, 4)\n\n"
+				  "[node name=\"Floor\" type=\"MeshInstance3D\" parent=\".\"]\nmesh = SubResource(\"Plane\")\n";
+	if (p_bad_property) {
+		text += "no_such_property = 3\n";
+	}
+	for (int i = 0; i < p_lights; i++) {
+		text += vformat("\n[node name=\"L%d\" type=\"OmniLight3D\" parent=\".\"]\ntransform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, %g, 0.5, %g)\nomni_range = 2.0\n",
+				i, -3.0 + 0.15 * i, -1.0 + 0.05 * i);
+	}
+	return text;
+}
+
+TEST_CASE("[CLI][Render] lights over capacity warn once with counts; --strict turns warnings into exit 1") {
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_strict";
+	std::filesystem::create_directories(dir);
+	const String many = (dir / "many.tscn").string(), bad = (dir / "bad.tscn").string(), exr = (dir / "x.exr").string();
+	{
+		std::ofstream(many) << _lights_scene(40, false);
+		std::ofstream(bad) << _lights_scene(1, true);
+	}
+	const String common = " --width 32 --height 32 --settle-frames 1 -o '" + exr + "'";
+	String out;
+	// Capacity 32 per type (rendering/limits/cluster_builder/max_clustered_elements): 8 of 40 omni lights dropped.
+	CHECK(run_cli_capture("render '" + many + "'" + common + " --setting rendering/limits/cluster_builder/max_clustered_elements=32", &out) == 0);
+	CHECK_MESSAGE(out.find("8 visible lights exceed the renderer's capacity of 32 per type and are not drawn (farthest first: 0 of 0 area, 8 of 40 omni, 0 of 0 spot)") != String::npos, out);
+	size_t first = out.find("visible lights exceed");
+	CHECK_MESSAGE((first != String::npos && out.find("visible lights exceed", first + 1) == String::npos), "the warning must appear once: ", out);
+	CHECK(run_cli_capture("render '" + many + "'" + common + " --strict --setting rendering/limits/cluster_builder/max_clustered_elements=32", &out) == 1);
+	CHECK_MESSAGE(out.find("--strict:") != String::npos, out);
+	// The default capacity (512) holds them all: no warning, and --strict passes.
+	CHECK(run_cli_capture("render '" + many + "'" + common + " --strict", &out) == 0);
+	CHECK_MESSAGE(out.find("visible lights exceed") == String::npos, out);
+	// A property the node does not have is a load warning: exit 0 normally, 1 with --strict.
+	CHECK(run_cli_capture("render '" + bad + "'" + common, &out) == 0);
+	CHECK_MESSAGE(out.find("no_such_property") != String::npos, out);
+	CHECK(run_cli_capture("render '" + bad + "'" + common + " --strict", &out) == 1);
+	std::filesystem::remove_all(dir);
+}
+
 } // namespace TestMainCLI

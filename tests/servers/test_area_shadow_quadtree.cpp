@@ -462,7 +462,10 @@ TEST_CASE("[AreaShadowQuadtree] a full atlas stops growth without oscillation or
 	sim.level = 4;
 	int frames = sim.converge(100, 10);
 	REQUIRE(frames >= 0);
-	CHECK(sim.tree.get_point_count() <= 12);
+	// The pool bounds the point count by construction; what must hold is that the full pool, not the
+	// requested depth, stopped the growth.
+	CHECK(sim.tree.get_depth() < 4);
+	CHECK(sim.pool.free_tiles.size() < 4); // Full: fewer tiles left than one expansion (4 children) needs.
 	uint64_t changes = sim.tree.get_change_count();
 	for (int f = 0; f < 300; f++) {
 		sim.step();

@@ -533,6 +533,11 @@ TEST_CASE("[RenderingDevice] buffer_get_data_async delivers after the frame comp
 TEST_CASE("[RenderingDevice] the debug messenger counts validation errors") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE(rd != nullptr);
+	if (!rd->get_device_info().validation_enabled) {
+		// Without the layer nothing can be counted: say so instead of passing.
+		MESSAGE("skipped: the Vulkan validation layer is not enabled (GODOT_AREA_VALIDATION=1 and vulkan-validationlayers)");
+		return;
+	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 	// A vertex shader reading location 0 with an empty vertex format is invalid Vulkan usage
 	// that RenderingDevice itself does not check; the layer must report it.
@@ -546,9 +551,7 @@ TEST_CASE("[RenderingDevice] the debug messenger counts validation errors") {
 	set_error_print_silenced(true);
 	RID pipeline = rd->render_pipeline_create(shader, rd->framebuffer_get_format(fb), rd->vertex_format_create({}), RD::RENDER_PRIMITIVE_TRIANGLES, RD::PipelineRasterizationState(), RD::PipelineDepthStencilState(), RD::PipelineColorBlendState::create_disabled(1));
 	set_error_print_silenced(false);
-	if (rd->get_device_info().validation_enabled) {
-		CHECK(rd->get_validation_error_count() > 0);
-	}
+	CHECK(rd->get_validation_error_count() > 0);
 	rd->reset_validation_counts();
 	CHECK(rd->get_validation_error_count() == 0);
 	if (pipeline.is_valid()) {

@@ -4,6 +4,7 @@
 
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 
+#include "core/config/project_settings.h"
 #include "core/error/error_macros.h"
 #include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/area_method_selector.h"
@@ -16,6 +17,15 @@
 using namespace RendererRD;
 
 /* GPU side */
+
+uint32_t LightStorage::get_project_max_lights() {
+	const int64_t v = GLOBAL_DEF(SETTING_MAX_CLUSTERED_ELEMENTS, int64_t(DEFAULT_MAX_LIGHTS)).to_int();
+	if (v < 32 || v > int64_t(MAX_LIGHTS_LIMIT)) {
+		ERR_PRINT(vformat("%s must be 32..%u; got %lld. Using %u.", SETTING_MAX_CLUSTERED_ELEMENTS, MAX_LIGHTS_LIMIT, (long long)v, DEFAULT_MAX_LIGHTS));
+		return DEFAULT_MAX_LIGHTS;
+	}
+	return uint32_t(v);
+}
 
 bool LightStorage::initialize_gpu(uint32_t p_max_lights) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
@@ -238,6 +248,17 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	std::sort(areas.begin(), areas.end(), [](const SortedArea &a, const SortedArea &b) {
 		return a.distance_sq != b.distance_sq ? a.distance_sq < b.distance_sq : a.index < b.index;
 	});
+	// Over capacity: the farthest are dropped, and said so once per change of the counts (not every frame).
+	const size_t over_area = areas.size() > max_lights ? areas.size() - max_lights : 0;
+	const size_t over_omni = omnis.size() > max_lights ? omnis.size() - max_lights : 0;
+	const size_t over_spot = spots.size() > max_lights ? spots.size() - max_lights : 0;
+	dropped_light_count = uint32_t(over_area + over_omni + over_spot);
+	if (dropped_light_count != 0 && dropped_light_count != warned_dropped_count) {
+		WARN_PRINT(vformat("%u visible lights exceed the renderer's capacity of %u per type and are not drawn (farthest first: %u of %u area, %u of %u omni, %u of %u spot). Raise the project setting %s (up to %u).",
+				dropped_light_count, max_lights, uint32_t(over_area), uint32_t(areas.size()), uint32_t(over_omni), uint32_t(omnis.size()), uint32_t(over_spot), uint32_t(spots.size()),
+				SETTING_MAX_CLUSTERED_ELEMENTS, MAX_LIGHTS_LIMIT));
+	}
+	warned_dropped_count = dropped_light_count;
 	if (areas.size() > max_lights) {
 		areas.resize(max_lights);
 	}

@@ -108,8 +108,14 @@ public:
 	};
 	static_assert(sizeof(DirectionalLightBlock) == 16 + 48 * MAX_DIRECTIONAL_LIGHTS, "DirectionalLightBlock must match the shader's block.");
 
-	// Lights per type uploaded per view (nearest to the camera first); a multiple of 32.
+	// Lights per type uploaded per view (nearest to the camera first); a multiple of 32. The renderer's
+	// capacity comes from Godot's project setting rendering/limits/cluster_builder/max_clustered_elements
+	// (32..8192, default 512); visible lights beyond it are not drawn and counted in a warning.
 	static constexpr uint32_t DEFAULT_MAX_LIGHTS = 512;
+	static constexpr uint32_t MAX_LIGHTS_LIMIT = 8192;
+	static constexpr const char *SETTING_MAX_CLUSTERED_ELEMENTS = "rendering/limits/cluster_builder/max_clustered_elements";
+	// The setting's value (an invalid one is reported and DEFAULT_MAX_LIGHTS used).
+	static uint32_t get_project_max_lights();
 
 private:
 	/* Private Members */
@@ -124,6 +130,8 @@ private:
 	uint32_t omni_light_count = 0;
 	uint32_t spot_light_count = 0;
 	uint32_t area_light_count = 0;
+	uint32_t dropped_light_count = 0; // Visible lights of the last update not drawn (over max_lights).
+	uint32_t warned_dropped_count = 0; // The count last warned about (a steady overflow warns once).
 	uint32_t area_shading_method_mask = 0; // Bit m set: an uploaded area light uses RS::LightAreaShadingMethod m.
 	std::vector<LightData> omni_data;
 	std::vector<LightData> spot_data;
@@ -176,6 +184,8 @@ public:
 	// (the renderer compiles only these methods). 0 without area lights.
 	uint32_t get_area_shading_method_mask() const { return area_shading_method_mask; }
 	uint32_t get_max_lights() const { return max_lights; }
+	// Visible lights (all types) of the last update_light_buffers() beyond the capacity, so not drawn.
+	uint32_t get_dropped_light_count() const { return dropped_light_count; }
 	// CPU copies of the last upload (tests).
 	const std::vector<LightData> &get_omni_light_data() const { return omni_data; }
 	const std::vector<LightData> &get_spot_light_data() const { return spot_data; }

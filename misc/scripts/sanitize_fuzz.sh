@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# CI's robustness job (doc/reliability.md): one clang build with ASan+UBSan and libFuzzer
+# (`scons fuzz=yes`, a subset of the engine: core, drivers, servers, scene, modules/gltf), then
+#  1. the unit tests that build into it (tests/core, tests/scene, the glTF tests) under the sanitizers,
+#  2. each libFuzzer harness for FUZZ_SECONDS (default 45) from the committed seed corpus.
+# Any sanitizer report, test failure or fuzzer crash fails the job. Prints the time of each step.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+JOBS="$(nproc 2>/dev/null || echo 2)"
+FUZZ_SECONDS="${FUZZ_SECONDS:-45}"
+step() { echo "sanitize_fuzz: $1: $(( $(date +%s) - T0 )) s"; T0=$(date +%s); }
+T0=$(date +%s)
+
+scons -Q -j"$JOBS" target=release fuzz=yes
+step "sanitized build"
+
+# Vulkan drivers and the loader leak by design at exit; leak checking covers the engine through the
+# fuzzers' per-input runs instead. halt_on_error: the first report fails the job.
+export ASAN_OPTIONS="detect_leaks=0:halt_on_error=1:abort_on_error=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export GODOT_AREA_VALIDATION=1
+export GODOT_AREA_DEVICE="${GODOT_AREA_DEVICE:-llvmpipe}"
+./bin/godot-area-tests.fuzz
+step "unit tests under ASan+UBSan"
+
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+for harness in resource_format_text:tscn gltf_document:gltf; do
+	name="${harness%%:*}"
+	kind="${harness##*:}"
+	# New inputs go to a scratch corpus; the committed seeds are read only.
+	mkdir -p "$work/$kind"
+	ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=1" \
+		./bin/fuzz_"$name" "$work/$kind" "tests/fuzz/corpus/$kind" -dict="tests/fuzz/$kind.dict" \
+		-max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+		-artifact_prefix="$work/" 2>&1 | grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done|==[0-9]+==ERROR|SUMMARY)" || true
+	if ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* >/dev/null 2>&1; then
+		echo "sanitize_fuzz: fuzz_$name found a failing input:"
+		ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* 2>/dev/null
+		exit 1
+	fi
+	step "fuzz_$name ($FUZZ_SECONDS s)"
+done
