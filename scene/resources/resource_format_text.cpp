@@ -1002,11 +1002,6 @@ const Node *_template_counterpart(const Node *p_node) {
 	return nullptr;
 }
 
-bool _is_inherited(const Node *p_node) {
-	const TextSceneData *d = _data_or_null(p_node);
-	return d && d->inherited;
-}
-
 struct NodeOut {
 	const Node *node;
 	const Node *base; // Template node to diff against (instances and overrides).
