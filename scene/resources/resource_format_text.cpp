@@ -3,6 +3,7 @@
 /**************************************************************************/
 
 #include "scene/resources/resource_format_text.h"
+#include "core/io/file_io.h"
 
 #include "core/error/error_macros.h"
 #include "core/io/missing_resource.h"
@@ -65,15 +66,9 @@ String _dir_of(const String &p_path) {
 	return slash == String::npos ? String() : p_path.substr(0, slash);
 }
 
-bool _read_file(const String &p_path, String &r_text) {
-	std::ifstream f(p_path, std::ios::binary);
-	if (!f) {
-		return false;
-	}
-	std::stringstream ss;
-	ss << f.rdbuf();
-	r_text = ss.str();
-	return true;
+// Bounded read (core/io/file_io.h): `render /dev/zero` stops with an error instead of filling memory.
+bool _read_file(const String &p_path, String &r_text, String *r_error = nullptr) {
+	return file_read_bounded(p_path, r_text, r_error);
 }
 
 String _canonical(const String &p_path) {
@@ -1246,9 +1241,9 @@ Node *ResourceFormatText::load_scene(const String &p_path, String *r_error) {
 			return node;
 		});
 	}
-	String text;
-	if (!_read_file(p_path, text)) {
-		String msg = vformat("%s:0: Cannot open the scene file.", p_path.c_str());
+	String text, read_error;
+	if (!_read_file(p_path, text, &read_error)) {
+		String msg = vformat("%s:0: Cannot open the scene file: %s", p_path.c_str(), read_error.c_str());
 		if (r_error) {
 			*r_error = msg;
 		}
@@ -1453,12 +1448,9 @@ bool ResourceFormatText::save_scene(const Node *p_root, const String &p_path, St
 		return false;
 	}
 	String text = save_scene_to_string(p_root);
-	std::ofstream f(p_path, std::ios::binary);
-	if (f) {
-		f << text;
-	}
-	if (!f) {
-		String msg = vformat("%s: Cannot write the scene file.", p_path.c_str());
+	String write_error; // Atomic and checked through close (core/io/file_io.h).
+	if (!file_write_atomic(p_path, text, &write_error)) {
+		String msg = vformat("%s: Cannot write the scene file: %s", p_path.c_str(), write_error.c_str());
 		if (r_error) {
 			*r_error = msg;
 		}
