@@ -23,7 +23,8 @@
 #include "editor/plugins/node_3d_editor_plugin.h"
 #include "editor/scene_tree_dock.h"
 #include "editor/scene_tree_editor.h"
-#include "main/main.h"
+#include "modules/register_module_types.h"
+#include "scene/main/godot_instance.h"
 #include "scene/3d/node_3d.h"
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
@@ -118,6 +119,9 @@ public:
 	bool window_captured = false;
 	bool window_capture_requested = false; // F11.
 	bool viewport_pressed[3] = { false, false, false };
+	// What the scene loader reported (one line per distinct problem: what was kept as a
+	// placeholder or as text, what could not be applied), shown in the Output dock.
+	std::vector<String> load_report;
 
 	void log_line(const String &p_text) {
 		if (log) {
@@ -316,6 +320,13 @@ public:
 	}
 
 	void draw_output() {
+		if (!load_report.empty()) {
+			ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Scene load report: %d line(s) (kept as placeholders or text, or not applied):", (int)load_report.size());
+			for (const String &line : load_report) {
+				ImGui::BulletText("%s", line.c_str());
+			}
+			ImGui::Separator();
+		}
 		ImGui::Text("GPU time per pass (last frame, ms):");
 		double total = 0;
 		for (const auto &p : viewport.get_profile()) {
@@ -395,17 +406,29 @@ int EditorNode::run(const Options &p_options) {
 		return 1;
 	}
 	RenderingDevice::set_extra_extensions(display.get_required_instance_extensions(), { VK_KHR_SWAPCHAIN_EXTENSION_NAME });
-	if (!Main::setup(Main::BACKEND_RD, &error)) {
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error)) {
 		fprintf(stderr, "godot-area editor: %s\n", error.c_str());
 		s.log_line("exit error " + error);
 		return 1;
 	}
+	initialize_modules();
 	int code = 0;
 	{
 		SceneTree tree;
 		s.tree = &tree;
-		s.scene = Main::load_scene(p_options.scene_path, &error);
+		{
+			// The loader's warnings are the load report (it counts each kind of problem once).
+			ErrorHandlerList report_handler;
+			report_handler.callback = [&s](ErrorHandlerType, const String &p_text) { s.load_report.push_back(p_text); };
+			add_error_handler(&report_handler);
+			s.scene = GodotInstance::load_scene(p_options.scene_path, &error);
+			remove_error_handler(&report_handler);
+		}
 		s.load_problems = s.scene ? ResourceFormatText::get_last_load_problem_count() : 0;
+		for (const String &line : s.load_report) {
+			s.log_line("load " + line);
+		}
 		if (!s.scene) {
 			fprintf(stderr, "godot-area editor: cannot load scene '%s': %s\n", p_options.scene_path.empty() ? "<embedded demo>" : p_options.scene_path.c_str(), error.c_str());
 			code = 2;
@@ -576,12 +599,13 @@ int EditorNode::run(const Options &p_options) {
 		}
 		s.scene = nullptr;
 	}
-	int validation_errors = Main::get_validation_error_count();
+	int validation_errors = engine.get_validation_error_count();
 	if (validation_errors > 0) {
 		fprintf(stderr, "godot-area: the Vulkan validation layer reported %d error(s) (see above)\n", validation_errors);
 		code = code ? code : 1;
 	}
-	Main::cleanup();
+	uninitialize_modules();
+	engine.stop();
 	display.finalize();
 	s.log_line(vformat("exit %d validation_errors %d", code, validation_errors));
 	if (s.log) {

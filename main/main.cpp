@@ -25,27 +25,24 @@
 #include "drivers/png/png_writer.h"
 #include "editor/editor_node.h"
 #include "editor/gizmo_overlay.h"
-#include "main/demo_scene.gen.h"
 #include "core/config/project_settings.h"
 #include "modules/accuracy/accuracy_command.h"
 #include "modules/benchmark/methods_sweep_command.h"
 #include "modules/benchmark/dolly_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
 #include "modules/benchmark/targets_bench.h"
-#include "modules/gltf/register_types.h"
+#include "modules/register_module_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/metrics/image_metrics.h"
 #include "modules/openexr/image_saver_exr.h"
 #include "modules/reference/renderer_compositor_reference.h"
 #include "scene/3d/camera_3d.h"
+#include "scene/main/godot_instance.h"
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
-#include "scene/register_scene_types.h"
 #include "scene/resources/resource_format_text.h"
-#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "servers/rendering/rendering_device.h"
 #include "servers/rendering/rendering_profiler.h"
-#include "servers/rendering/rendering_server_default.h"
 
 #include <algorithm>
 #include <chrono>
@@ -54,60 +51,38 @@
 #include <cstdlib>
 #include <map>
 
-RenderingDevice *Main::rendering_device = nullptr;
-RenderingServer *Main::rendering_server = nullptr;
+namespace {
+GodotInstance engine;
+} // namespace
 
 bool Main::setup(Backend p_backend, String *r_error, const void *p_reference_options) {
-	if (p_backend == BACKEND_RD) {
-		rendering_device = new RenderingDevice;
-		String error;
-		if (!rendering_device->initialize(&error)) {
-			*r_error = "No usable Vulkan device: " + error;
-			delete rendering_device;
-			rendering_device = nullptr;
-			return false;
-		}
-		RendererCompositorRD *compositor = new RendererCompositorRD;
-		if (!compositor->initialize()) {
-			*r_error = "The Forward+ renderer could not be initialized (see the errors above).";
-			delete compositor;
-			delete rendering_device;
-			rendering_device = nullptr;
-			return false;
-		}
-		rendering_server = new RenderingServerDefault(compositor);
-	} else if (p_backend == BACKEND_REFERENCE) {
+	bool ok = false;
+	if (p_backend == BACKEND_REFERENCE) {
 		ReferenceRenderOptions options;
 		if (p_reference_options) {
 			options = *static_cast<const ReferenceRenderOptions *>(p_reference_options);
 		}
-		rendering_server = new RenderingServerDefault(new RendererCompositorReference(options));
+		ok = engine.start_with_compositor(new RendererCompositorReference(options), r_error);
 	} else {
-		rendering_server = RenderingServerDefault::create_dummy();
+		ok = engine.start(p_backend == BACKEND_RD ? GodotInstance::BACKEND_RD : GodotInstance::BACKEND_DUMMY, r_error);
 	}
-	register_scene_types();
-	initialize_gltf_module();
-	return true;
+	if (ok) {
+		initialize_modules();
+	}
+	return ok;
 }
 
 int Main::get_validation_error_count() {
-	return rendering_device ? int(rendering_device->get_validation_error_count()) : 0;
+	return engine.get_validation_error_count();
 }
 
 void Main::cleanup() {
-	uninitialize_gltf_module();
-	unregister_scene_types();
-	delete rendering_server;
-	rendering_server = nullptr;
-	delete rendering_device;
-	rendering_device = nullptr;
+	uninitialize_modules();
+	engine.stop();
 }
 
 Node *Main::load_scene(const String &p_path, String *r_error) {
-	if (p_path.empty()) {
-		return ResourceFormatText::load_scene_from_string(DEMO_SCENE_TSCN, "demo/demo.tscn (built in)", r_error);
-	}
-	return ResourceFormatText::load_scene(p_path, r_error);
+	return GodotInstance::load_scene(p_path, r_error);
 }
 
 namespace {
@@ -325,11 +300,14 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 				printf("wrote %s (%dx%d, scene-linear %s)\n", out_path.c_str(), width, height, _has_flag(p_args, "--half") ? "half" : "float");
 				auto png_it = p_args.options.find("--png");
 				if (png_it != p_args.options.end()) {
-					if (!PNGWriter::save(image, png_it->second, &error, exposure, Tonemap::MODE_ACES_FITTED)) {
+					// The scene's Environment tonemap (tonemap_mode/_exposure/_white), as Godot shows it; the EXR stays linear.
+					const Tonemap::Settings tonemap = Environment::get_preview_tonemap(tree.get_camera_3d()->get_environment(), tree.get_world_3d()->get_environment());
+					static const char *tonemap_names[Tonemap::MODE_MAX] = { "Linear", "ACES-fitted", "Reinhard", "Filmic", "ACES", "AgX" };
+					if (!PNGWriter::save(image, png_it->second, &error, exposure, tonemap)) {
 						fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 						code = 1;
 					} else {
-						printf("wrote %s (ACES-fitted preview, exposure %+.2f EV)\n", png_it->second.c_str(), exposure);
+						printf("wrote %s (%s preview, tonemap exposure %.2f, white %.2f, %+.2f EV)\n", png_it->second.c_str(), tonemap_names[tonemap.mode], tonemap.exposure, tonemap.white, exposure);
 					}
 				}
 				if (p_backend == Main::BACKEND_RD) {

@@ -22,12 +22,7 @@ public:
 		BACKEND_REFERENCE, // CPU ground truth on Embree (modules/reference).
 	};
 
-private:
-	static RenderingDevice *rendering_device;
-	static RenderingServer *rendering_server;
-
-public:
-	// Creates the RenderingDevice (for BACKEND_RD), the RenderingServer and registers scene types.
+	// Starts the process's GodotInstance (scene/main/godot_instance.h) and registers the modules.
 	// Returns false with r_error when no usable Vulkan device exists.
 	// p_reference_options is a ReferenceRenderOptions* (BACKEND_REFERENCE only; null = defaults).
 	static bool setup(Backend p_backend, String *r_error, const void *p_reference_options = nullptr);

@@ -60,10 +60,16 @@ bool PNGWriter::save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int
 }
 
 bool PNGWriter::save(const Image &p_image, const String &p_path, String *r_error, float p_exposure_ev, Tonemap::Mode p_mode) {
+	Tonemap::Settings settings;
+	settings.mode = p_mode;
+	return save(p_image, p_path, r_error, p_exposure_ev, settings);
+}
+
+bool PNGWriter::save(const Image &p_image, const String &p_path, String *r_error, float p_exposure_ev, const Tonemap::Settings &p_tonemap) {
 	if (p_image.is_empty()) {
 		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": the image is empty.", p_path.c_str()));
 	}
-	const std::vector<uint8_t> bytes = Tonemap::apply(p_image, p_exposure_ev, p_mode);
+	const std::vector<uint8_t> bytes = Tonemap::apply(p_image, p_tonemap, p_exposure_ev);
 	if (bytes.empty()) {
 		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": tonemapping failed.", p_path.c_str()));
 	}

@@ -3,7 +3,7 @@
 /**************************************************************************/
 /* godot-area: the engine state behind the Python module `godot_area`     */
 /* (modules/python/godot_area_module.cpp). Plain C++, no Python headers,  */
-/* so it lives in the engine library: one engine (Main::setup) per        */
+/* so it lives in the engine library: one GodotInstance per              */
 /* process, one SceneTree, rendering and per-frame profiles.              */
 
 #pragma once

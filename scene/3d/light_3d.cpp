@@ -615,6 +615,7 @@ void AreaLight3D::set_area_shading_method(AreaShadingMethod p_method) {
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_shading_method(get_light(), RS::LightAreaShadingMethod(p_method));
 	}
+	notify_property_list_changed(); // area_stochastic_samples shows or hides.
 }
 
 void AreaLight3D::set_area_stochastic_samples(int p_samples) {
@@ -653,6 +654,15 @@ void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
 	// The PCSS baseline draws one map from the centre; ADAPTIVE and HEURISTIC choose their own samples
 	// (up to the project's rendering/lights_and_shadows/area_shadow_adaptive_max_depth): the grid does not apply.
 	if (area_shadow_mode != AREA_SHADOW_FIXED && n == "area_shadow_grid") {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	// Only the stochastic method takes samples (AUTO may pick it per light and frame).
+	if (area_shading_method != AREA_SHADING_STOCHASTIC && area_shading_method != AREA_SHADING_AUTO && n == "area_stochastic_samples") {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	// Area lights do not sample a projector texture (the shading of the rectangle has no projection);
+	// a value from a scene file is still kept and saved.
+	if (n == "light_projector") {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
 }

@@ -254,6 +254,12 @@ void Node::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_node_or_null", "path"), &Node::get_node_or_null);
 	ClassDB::bind_method(D_METHOD("has_node", "path"), &Node::has_node);
 	ClassDB::bind_method(D_METHOD("is_inside_tree"), &Node::is_inside_tree);
+	ClassDB::bind_method(D_METHOD("add_to_group", "group"), &Node::add_to_group);
+	ClassDB::bind_method(D_METHOD("remove_from_group", "group"), &Node::remove_from_group);
+	ClassDB::bind_method(D_METHOD("is_in_group", "group"), &Node::is_in_group);
+	ClassDB::bind_method(D_METHOD("queue_free"), &Node::queue_free);
+	ClassDB::bind_method(D_METHOD("is_queued_for_deletion"), &Node::is_queued_for_deletion);
+	ClassDB::bind_method(D_METHOD("duplicate"), &Node::duplicate);
 
 	// Godot saves the name in the [node name="..."] header, not as a property; it is bound
 	// (without storage) so scripts and tools can read it.
@@ -266,9 +272,93 @@ void Node::_bind_methods() {
 	BIND_CONSTANT(NOTIFICATION_UNPARENTED);
 }
 
+void Node::add_to_group(const String &p_group) {
+	ERR_FAIL_COND_MSG(p_group.empty(), vformat("Node \"%s\": add_to_group() needs a group name.", name.c_str()));
+	if (!is_in_group(p_group)) {
+		groups.push_back(p_group);
+	}
+}
+
+void Node::remove_from_group(const String &p_group) {
+	for (size_t i = 0; i < groups.size(); i++) {
+		if (groups[i] == p_group) {
+			groups.erase(groups.begin() + i);
+			return;
+		}
+	}
+	ERR_FAIL_MSG(vformat("Node \"%s\" is not in group \"%s\".", name.c_str(), p_group.c_str()));
+}
+
+bool Node::is_in_group(const String &p_group) const {
+	for (const String &g : groups) {
+		if (g == p_group) {
+			return true;
+		}
+	}
+	return false;
+}
+
+namespace {
+std::vector<Node *> delete_queue;
+} // namespace
+
+void (*Node::predelete_callback)(Node *p_node) = nullptr;
+
+void Node::queue_free() {
+	if (!queued_for_deletion) {
+		queued_for_deletion = true;
+		delete_queue.push_back(this);
+	}
+}
+
+void Node::flush_delete_queue() {
+	// A deleted node's queued descendants leave the queue in their destructors.
+	while (!delete_queue.empty()) {
+		Node *node = delete_queue.front();
+		delete_queue.erase(delete_queue.begin());
+		node->queued_for_deletion = false;
+		if (node->parent) {
+			node->parent->remove_child(node);
+		}
+		delete node;
+	}
+}
+
+Node *Node::duplicate() const {
+	Node *copy = dynamic_cast<Node *>(ClassDB::instantiate(get_class()));
+	ERR_FAIL_NULL_V_MSG(copy, nullptr, vformat("Node \"%s\": cannot duplicate a %s.", name.c_str(), get_class().c_str()));
+	std::vector<PropertyInfo> list;
+	get_property_list(&list);
+	for (const PropertyInfo &pi : list) {
+		if (!pi.is_group_marker() && (pi.usage & PROPERTY_USAGE_STORAGE)) {
+			copy->set(pi.name, get(pi.name));
+		}
+	}
+	copy->set_name(name);
+	copy->groups = groups;
+	for (const Node *child : children) {
+		Node *child_copy = child->duplicate();
+		if (child_copy) {
+			copy->add_child(child_copy);
+		}
+	}
+	return copy;
+}
+
 Node::Node() {}
 
 Node::~Node() {
+	if (predelete_callback) {
+		predelete_callback(this);
+	}
+	if (queued_for_deletion) {
+		for (size_t i = 0; i < delete_queue.size(); i++) {
+			if (delete_queue[i] == this) {
+				delete_queue.erase(delete_queue.begin() + i);
+				break;
+			}
+		}
+	}
 	// Derived destructors have already run, so only the children (still whole) can be
 	// told that they leave the tree.
 	std::vector<Node *> list = children;

@@ -1,6 +1,7 @@
 # godot-area: pytest tests of the Python module `godot_area` (modules/python): classes, every
 # AreaLight3D property by attribute and by set/get, property hints, errors, scene save/load.
 # Rendering is in test_render.py. Run through the README test command, or by hand (conftest.py).
+import enum
 import os
 
 import numpy as np
@@ -79,7 +80,8 @@ def _assert_same(name, got, expected):
 		if isinstance(expected, ga.Object):
 			assert got is expected, "one Python wrapper per engine object"
 	elif isinstance(expected, int):
-		assert type(got) is int and got == expected, (name, got, expected)
+		# Enum properties read as their IntEnum member (an int); get() gives the plain int.
+		assert (type(got) is int or isinstance(got, enum.IntEnum)) and got == expected, (name, got, expected)
 	else:
 		# float32 storage in the engine; Euler angles (rotation) go through a Basis.
 		assert np.allclose(np.asarray(got, float), np.asarray(expected, float), rtol=1e-5, atol=1e-5), (name, got, expected)

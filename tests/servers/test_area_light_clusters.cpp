@@ -369,7 +369,7 @@ TEST_CASE("[AreaLight3D][Cluster] the cluster debug view writes per-pixel area-l
 				nonzero += count > 0 ? 1 : 0;
 				bool ok = false;
 				for (uint32_t s = 0; s < ClusterBuilderRD::Z_SLICES && !ok; s++) {
-					uint32_t offset = cb->get_cluster_offset(ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT, x / 32, y / 32, s);
+					uint32_t offset = cb->get_cluster_offset(ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT, x / ClusterBuilderRD::TILE_SIZE, y / ClusterBuilderRD::TILE_SIZE, s);
 					int n = 0;
 					for (uint32_t w = 0; w < cb->get_words_per_type(); w++) {
 						n += __builtin_popcount(words[offset + w]);

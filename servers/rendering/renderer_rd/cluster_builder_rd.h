@@ -2,7 +2,7 @@
 /*  cluster_builder_rd.h                                                  */
 /**************************************************************************/
 /* godot-area: the Forward+ cluster builder (Godot's ClusterBuilderRD).   */
-/* 32-pixel screen tiles x 32 linear depth slices; per element type and   */
+/* 16-pixel screen tiles x 32 linear depth slices; per element type and   */
 /* cluster one bit per element. Layout and bounding-volume tests:         */
 /* shaders/cluster_data_inc.glsl and shaders/cluster_build.glsl.          */
 /*                                                                        */
@@ -29,7 +29,7 @@ class ClusterBuilderRD {
 public:
 	/* Definition */
 
-	static constexpr uint32_t TILE_SIZE = 32; // Pixels. Must match CLUSTER_TILE_SIZE.
+	static constexpr uint32_t TILE_SIZE = 16; // Pixels. Must match CLUSTER_TILE_SIZE. 16 as Godot: bench --targets P5.
 	static constexpr uint32_t Z_SLICES = 32; // Must match CLUSTER_Z_SLICES.
 
 	// Must match CLUSTER_ELEMENT_TYPE_* (shaders/cluster_data_inc.glsl).

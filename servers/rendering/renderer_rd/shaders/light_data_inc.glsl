@@ -54,4 +54,17 @@ struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	uint cull_mask; // 76: "light_cull_mask" render layers.
 };
 
+// One directional light (std140 array element of the DirectionalLights block), 48 bytes.
+// Mirror: RendererRD::LightStorage::DirectionalLightData. Not clustered: every fragment loops over all.
+struct DirectionalLightData {
+	vec3 direction; // 0: view space unit vector the light shines along (its local -Z); L = -direction.
+	float energy; // 12: light_energy * pi (negative for negative lights).
+	vec3 color; // 16: linear colour * energy (above): the radiance a unit-cosine Lambert receiver gets times pi.
+	float size; // 28: angular radius of the sun disk, radians (light_angular_distance / 2).
+	float specular_amount; // 32: "light_specular".
+	uint cull_mask; // 36: "light_cull_mask".
+	uint flags; // 40: DIRECTIONAL_FLAG_*.
+	float pad0; // 44
+};
+
 #endif // LIGHT_DATA_INC_GLSL

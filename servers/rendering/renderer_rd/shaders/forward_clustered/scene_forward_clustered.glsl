@@ -14,6 +14,9 @@
 /*     brute-force reference loops (RS::set_debug_force_all_lights);      */
 /*   5, 6 MODE_DEBUG_CLUSTER (same): the cluster debug views.             */
 /*   The production variants 0 and 2 carry neither.                       */
+/* Any colour variant may carry USE_DIRECTIONAL_LIGHTS (a version of a   */
+/* view with a DirectionalLight3D: binding 8 and the directional loop,   */
+/* scene_forward_directional_inc.glsl); without it there is no sun code.*/
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -70,6 +73,9 @@ void main() {
 
 #include "../brdf_inc.glsl"
 #include "../scene_forward_lights_inc.glsl"
+#ifdef USE_DIRECTIONAL_LIGHTS
+#include "../scene_forward_directional_inc.glsl"
+#endif
 #ifdef USE_AREA_LIGHTS
 #include "../area_light_inc.glsl"
 #if defined(AREA_SHADOWS_PCF) || defined(AREA_SHADOWS_PCSS)
@@ -279,6 +285,16 @@ void main() {
 		}
 #endif
 	}
+
+#ifdef USE_DIRECTIONAL_LIGHTS
+	// Directional lights: their own loop, outside the clustered walks (Godot's directional light list).
+	for (uint i = 0u; i < directional_lights.count; i++) {
+		if ((directional_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
+			continue;
+		}
+		light_process_directional(directional_lights.data[i], N, V, diffuse_mode, roughness, f0, f90, specular_enabled, 1.0, diffuse_light, specular_light);
+	}
+#endif
 
 	vec3 ambient_light = scene_data.ambient_light.rgb;
 	vec3 color = material.emission.rgb + (ambient_light + diffuse_light) * albedo * (1.0 - metallic) + specular_light;
