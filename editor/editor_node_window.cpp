@@ -112,6 +112,8 @@ public:
 	uint64_t seen_dock_version = 0;
 	int screenshot_count = 0;
 	String status_message;
+	int load_problems = 0; // Distinct problems the scene's load counted (content kept as placeholders/text).
+	bool overwrite_confirmed = false;
 	bool quit = false;
 	bool viewport_hovered = false;
 	bool window_captured = false;
@@ -172,6 +174,13 @@ public:
 
 	void save() {
 		String error;
+		if (load_problems > 0 && !overwrite_confirmed && options.save_path == options.scene_path) {
+			// Never overwrite such a file silently: the first Ctrl+S explains, the second saves.
+			overwrite_confirmed = true;
+			status_message = vformat("The scene loaded with %d kinds of content this engine keeps but does not run (see the warnings); Ctrl+S again writes it back to %s.", load_problems, options.save_path.c_str());
+			log_line("save needs confirmation " + options.save_path);
+			return;
+		}
 		if (ResourceFormatText::save_scene(scene, options.save_path, &error)) {
 			status_message = "Saved " + options.save_path;
 			log_line("save ok " + options.save_path);
@@ -416,6 +425,7 @@ int EditorNode::run(const Options &p_options) {
 			s.scene = GodotInstance::load_scene(p_options.scene_path, &error);
 			remove_error_handler(&report_handler);
 		}
+		s.load_problems = s.scene ? ResourceFormatText::get_last_load_problem_count() : 0;
 		for (const String &line : s.load_report) {
 			s.log_line("load " + line);
 		}

@@ -105,7 +105,7 @@ void _print_usage() {
 	fprintf(stderr,
 			"usage:\n"
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
-			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N]\n"
+			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N] [--verbose]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
@@ -116,7 +116,7 @@ void _print_usage() {
 			"  godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--polynomial [--glsl PATH]]\n"
 			"  godot-area info\n"
 			"  godot-area editor [SCENE.tscn] [--select NODE_PATH] [--save-as PATH] [--test-log FILE] [--screenshot PREFIX]\n"
-			"Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
+			"SCENE may be a .tscn or a .glb/.gltf. Without SCENE the embedded demo scene is used. GODOT_AREA_DEVICE=<name|index> picks a Vulkan device,\n"
 			"GODOT_AREA_VALIDATION=1 enables the validation layer. --setting name=value overrides a project setting\n"
 			"(e.g. rendering/lights_and_shadows/area_light_error_budget=0.02; unknown names are rejected). --strict makes\n"
 			"any warning or error (a scene property that does not apply, lights over capacity) exit with 1.\n");
@@ -134,7 +134,7 @@ bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 	static const std::map<String, std::vector<String>> flag_options = {
 		{ "compare", { "--json", "--no-hdr-flip" } },
 		{ "reference", { "--progress" } },
-		{ "render", { "--half", "--gizmos", "--gizmos-selected", "--debug-area-clusters" } },
+		{ "render", { "--half", "--gizmos", "--gizmos-selected", "--debug-area-clusters", "--verbose" } },
 		{ "bench", {} },
 		{ "info", {} },
 	};
@@ -222,6 +222,7 @@ void _print_profile(const std::vector<std::pair<String, double>> &p_profile, con
 // Loads the scene into a tree of the given size. Returns false with r_error on failure.
 bool _prepare_tree(SceneTree &r_tree, const Args &p_args, int p_width, int p_height, String *r_error) {
 	String error;
+	ResourceFormatText::set_verbose(_has_flag(p_args, "--verbose")); // Every load problem, not one line per kind.
 	Node *scene = Main::load_scene(p_args.scene, &error);
 	if (!scene) {
 		*r_error = vformat("cannot load scene '%s': %s", p_args.scene.empty() ? "<embedded demo>" : p_args.scene.c_str(), error.c_str());

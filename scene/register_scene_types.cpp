@@ -12,6 +12,7 @@
 #include "scene/3d/node_3d.h"
 #include "scene/3d/visual_instance_3d.h"
 #include "scene/3d/world_environment.h"
+#include "core/io/image_loader.h"
 #include "core/io/missing_resource.h"
 #include "scene/main/missing_node.h"
 #include "scene/main/node.h"
@@ -19,6 +20,7 @@
 #include "scene/resources/material.h"
 #include "scene/resources/mesh.h"
 #include "scene/resources/primitive_meshes.h"
+#include "scene/resources/resource_format_text.h"
 #include "scene/resources/texture.h"
 #include "scene/resources/world_3d.h"
 
@@ -54,6 +56,17 @@ void register_scene_types() {
 	GDREGISTER_CLASS(Environment);
 	GDREGISTER_CLASS(World3D);
 	GDREGISTER_CLASS(MissingResource);
+
+	// Image files referenced by scenes (ext_resource type="Texture2D") load as ImageTexture.
+	for (const String &ext : ImageLoader::get_recognized_extensions()) {
+		ResourceFormatText::add_resource_loader(ext, [](const String &p_path, const String &p_type, String *r_error) -> Ref<Resource> {
+			Image image;
+			if (!ImageLoader::load_image(p_path, image, r_error)) {
+				return Ref<Resource>();
+			}
+			return ImageTexture::create_from_image(image);
+		});
+	}
 }
 
 void unregister_scene_types() {

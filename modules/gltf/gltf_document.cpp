@@ -8,9 +8,7 @@
 
 #include "core/error/error_macros.h"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
+// stb_image's implementation is compiled once, in core/io/image_loader.cpp.
 #include <stb/stb_image.h>
 
 #define TINYGLTF_IMPLEMENTATION

@@ -330,6 +330,17 @@ Node *_duplicate(const Node *p_src) {
 	return node;
 }
 
+bool _lists_property(const Object *p_obj, const String &p_name) {
+	std::vector<PropertyInfo> plist;
+	p_obj->get_property_list(&plist);
+	for (const PropertyInfo &pi : plist) {
+		if (pi.name == p_name) {
+			return true;
+		}
+	}
+	return false;
+}
+
 struct ExtRes {
 	String type;
 	String path; // As written.
@@ -476,7 +487,15 @@ public:
 			return;
 		}
 		String err;
-		if (!p_target->try_set(p_key, p_value, &err)) {
+		bool applied = p_target->try_set(p_key, p_value, &err);
+		if (applied && p_key.find('/') != String::npos && !_lists_property(p_target, p_key)) {
+			// A dynamic property the object accepted but does not have (e.g. the surface
+			// override of a mesh that could not load): keep it so the save writes it back.
+			keep_raw(p_target, p_key, p_raw);
+			problem(p_line, "notlisted:" + cls + ":" + p_key, vformat("%s.%s does not exist on this object (its mesh or owner did not load); kept as text and written back on save.", cls.c_str(), p_key.c_str()));
+			return;
+		}
+		if (!applied) {
 			keep_raw(p_target, p_key, p_raw);
 			bool known = p_target->has_property(p_key);
 			if (!known) {
@@ -498,8 +517,26 @@ public:
 		return out;
 	}
 
+	bool orphan = false; // Set by handle_node_tag for a section kept as text.
+
+	// True when p_path starts at a node that came from an instanced scene (or a placeholder).
+	bool under_instance(const String &p_path) const {
+		String path = p_path;
+		while (!path.empty()) {
+			size_t slash = path.rfind('/');
+			path = slash == String::npos ? String() : path.substr(0, slash);
+			Node *n = path.empty() ? root : root->get_node_or_null(path);
+			if (n) {
+				const TextSceneData *d = _data_or_null(n);
+				return Object::cast_to<MissingNode>(n) || (d && (d->inherited || !d->instance_path.empty()));
+			}
+		}
+		return false;
+	}
+
 	bool handle_node_tag(const VariantParser::Tag &p_tag, const String &p_raw_tag, Object *&r_target) {
 		r_target = nullptr;
+		orphan = false;
 		int line = p_tag.line;
 		Variant name_v = p_tag.get("name");
 		if (name_v.get_type() != Variant::STRING || name_v.to_string().empty()) {
@@ -521,7 +558,14 @@ public:
 		if (has_parent) {
 			parent = parent_path == "." ? root : root->get_node_or_null(parent_path);
 			if (!parent) {
-				return fail(line, vformat("Parent node \"%s\" of node \"%s\" does not exist.", parent_path.c_str(), name.c_str()));
+				// Godot allows sections under nodes an instance makes (a glTF's skeleton...). When
+				// the instance has no such node, or the parent is missing, keep the section as text.
+				if (!under_instance(parent_path)) {
+					return fail(line, vformat("Parent node \"%s\" of node \"%s\" does not exist.", parent_path.c_str(), name.c_str()));
+				}
+				problem(line, "orphan:" + parent_path, vformat("Parent node \"%s\" of node \"%s\" is not in the instanced scene as loaded here; the section is kept as text and written back on save.", parent_path.c_str(), name.c_str()));
+				orphan = true;
+				return true;
 			}
 		}
 		std::vector<std::pair<String, String>> extras = extra_fields(p_raw_tag);
@@ -700,10 +744,19 @@ public:
 		Object *target = nullptr;
 		String section; // Name of the current section; empty before the first.
 		size_t tail_start = String::npos; // Start of a section kept as text.
+		bool orphan_start = false;
 		auto close_tail = [&](size_t p_end) {
 			if (tail_start != String::npos) {
-				scene_data.tail_sections.push_back(section_text(tail_start, p_end));
+				String text = section_text(tail_start, p_end);
+				for (const String &id : _referenced_ids(text, "SubResource")) {
+					auto it = sub_resources.find(id);
+					if (it != sub_resources.end()) {
+						scene_data.section_refs.push_back(it->second); // Saved with the text that names it.
+					}
+				}
+				(orphan_start ? scene_data.orphan_sections : scene_data.tail_sections).push_back(text);
 				tail_start = String::npos;
+				orphan_start = false;
 			}
 		};
 		while (true) {
@@ -775,6 +828,10 @@ public:
 			} else if (tag.name == "node" && !resource_mode) {
 				if (!handle_node_tag(tag, raw_tag, target)) {
 					return false;
+				}
+				if (orphan) {
+					tail_start = start; // Kept with its properties, written after the nodes.
+					orphan_start = true;
 				}
 			} else if (tag.name == "resource" && resource_mode) {
 				if (ClassDB::class_exists(resource_type) && ClassDB::is_parent_class(resource_type, "Resource") && ClassDB::can_instantiate(resource_type)) {
@@ -997,11 +1054,6 @@ const Node *_template_counterpart(const Node *p_node) {
 	return nullptr;
 }
 
-bool _is_inherited(const Node *p_node) {
-	const TextSceneData *d = _data_or_null(p_node);
-	return d && d->inherited;
-}
-
 struct NodeOut {
 	const Node *node;
 	const Node *base; // Template node to diff against (instances and overrides).
@@ -1169,6 +1221,8 @@ Node *ResourceFormatText::load_scene_from_string(const String &p_text, const Str
 		d->file_header = loader.scene_data.file_header;
 		d->ext_entries = loader.scene_data.ext_entries;
 		d->tail_sections = loader.scene_data.tail_sections;
+		d->orphan_sections = loader.scene_data.orphan_sections;
+		d->section_refs = loader.scene_data.section_refs;
 		d->is_scene_root = true;
 		return loader.root;
 	});
@@ -1294,6 +1348,12 @@ String ResourceFormatText::save_scene_to_string(const Node *p_root) {
 			}
 		}
 	}
+	if (root_data) {
+		for (const Ref<Resource> &r : root_data->section_refs) {
+			const TextSceneData *rd = _data_or_null(r.ptr());
+			loaded.push_back(std::make_pair(rd ? rd->load_order : 0, const_cast<Resource *>(r.ptr())));
+		}
+	}
 	std::stable_sort(loaded.begin(), loaded.end(), [](const std::pair<int, Resource *> &a, const std::pair<int, Resource *> &b) { return a.first < b.first; });
 	for (const auto &L : loaded) {
 		state.find_resource(L.second);
@@ -1369,6 +1429,9 @@ String ResourceFormatText::save_scene_to_string(const Node *p_root) {
 		out += "]\n" + props;
 	}
 	if (root_data) {
+		for (const String &s : root_data->orphan_sections) {
+			out += "\n" + s + "\n";
+		}
 		for (const String &s : root_data->tail_sections) {
 			out += "\n" + s + "\n";
 		}

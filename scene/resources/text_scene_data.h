@@ -50,7 +50,9 @@ struct TextSceneData : public ObjectFileData {
 	bool is_scene_root = false;
 	std::vector<std::pair<String, String>> file_header; // [gd_scene ...] fields as written.
 	std::vector<ExtEntry> ext_entries;
-	std::vector<String> tail_sections; // [connection], [editable] and unknown sections, as written.
+	std::vector<String> tail_sections;
+	std::vector<Ref<Resource>> section_refs; // SubResources the kept sections name.
+	std::vector<String> orphan_sections; // [node] sections under nodes the instances did not make, as written. // [connection], [editable] and unknown sections, as written.
 
 	std::unique_ptr<ObjectFileData> clone() const override { return std::make_unique<TextSceneData>(*this); }
 };

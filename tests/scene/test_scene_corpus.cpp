@@ -252,3 +252,46 @@ TEST_CASE("[ResourceFormatText] Warnings: one line per distinct problem with a c
 }
 
 } // namespace TestSceneCorpus
+
+namespace TestSceneCorpus {
+
+TEST_CASE("[ResourceFormatText] Sections under nodes an instance does not make are kept as text, not a failed load") {
+	SceneTest::DummyServer server;
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ga_orphans_" + itos((long long)getpid()));
+	std::filesystem::create_directories(dir);
+	std::ofstream(dir / "project.godot") << "config_version=5\n";
+	std::ofstream(dir / "model.countscene") << "x";
+	const String text = R"([gd_scene format=3 uid="uid://borphans00001"]
+
+[ext_resource type="PackedScene" uid="uid://dmodel0000001" path="res://model.countscene" id="1_m0d3l"]
+
+[sub_resource type="BoxMesh" id="BoxMesh_h4t00"]
+size = Vector3(0.2, 0.2, 0.2)
+
+[node name="Root" type="Node3D"]
+
+[node name="Bot" parent="." instance=ExtResource("1_m0d3l")]
+
+[node name="Hat" type="MeshInstance3D" parent="Bot/Armature/Skeleton3D"]
+mesh = SubResource("BoxMesh_h4t00")
+
+[node name="Feather" type="Node3D" parent="Bot/Armature/Skeleton3D/Hat"]
+)";
+	ResourceFormatText::add_scene_loader("countscene", _count_loader);
+	Capture capture;
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(text, (dir / "orphans.tscn").string(), &error);
+	REQUIRE_MESSAGE(root != nullptr, error.c_str());
+	CHECK(capture.count("orphans.tscn:12:", "Bot/Armature/Skeleton3D") == 1);
+	CHECK(root->get_node_or_null("Bot/Body") != nullptr);
+	CHECK(ResourceFormatText::save_scene_to_string(root) == text);
+	delete root;
+	// A missing parent outside any instance is still malformed.
+	Node *bad = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n\n[node name=\"R\" type=\"Node3D\"]\n\n[node name=\"A\" type=\"Node3D\" parent=\"Nope\"]\n", "bad.tscn", &error);
+	CHECK(bad == nullptr);
+	CHECK(error.find("bad.tscn:5: Parent node \"Nope\"") == 0);
+	ResourceFormatText::remove_scene_loader("countscene");
+	std::filesystem::remove_all(dir);
+}
+
+} // namespace TestSceneCorpus

@@ -1,0 +1,117 @@
+/**************************************************************************/
+/*  test_scene_textures.cpp                                               */
+/**************************************************************************/
+/* Issue 15: a scene's image textures load (PNG through libpng, JPEG      */
+/* through stb_image) and draw: an unshaded textured quad's pixels equal  */
+/* the image decoded sRGB -> linear within 1/255, on the GPU and in the   */
+/* Embree reference. The PNG is written by the test (no binary asset).    */
+
+#include "core/io/image.h"
+#include "core/io/image_loader.h"
+#include "core/math/color.h"
+#include "drivers/png/png_writer.h"
+#include "modules/openexr/image_loader_exr.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace TestSceneTextures {
+
+static int run_cli(const String &p_args) {
+	String cmd = String("'") + GODOT_AREA_CLI_PATH + "' " + p_args + " > /dev/null 2>&1";
+	int status = std::system(cmd.c_str());
+	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Quadrant colours (sRGB 8-bit): top-left, top-right, bottom-left, bottom-right.
+static const uint8_t QUADRANTS[4][3] = { { 255, 0, 0 }, { 0, 255, 0 }, { 0, 0, 255 }, { 200, 120, 40 } };
+
+static std::vector<uint8_t> quadrant_texels(int p_size) {
+	std::vector<uint8_t> rgba((size_t)p_size * p_size * 4);
+	for (int y = 0; y < p_size; y++) {
+		for (int x = 0; x < p_size; x++) {
+			const uint8_t *c = QUADRANTS[(y >= p_size / 2) * 2 + (x >= p_size / 2)];
+			uint8_t *t = &rgba[((size_t)y * p_size + x) * 4];
+			t[0] = c[0];
+			t[1] = c[1];
+			t[2] = c[2];
+			t[3] = 255;
+		}
+	}
+	return rgba;
+}
+
+TEST_CASE("[ImageLoader] PNG texels load as stored (8-bit / 255)") {
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ga_imgload_" + itos((long long)getpid()));
+	std::filesystem::create_directories(dir);
+	String png = (dir / "q.png").string();
+	REQUIRE(PNGWriter::save_rgba8(quadrant_texels(8), 8, 8, png));
+	Image image;
+	String error;
+	REQUIRE_MESSAGE(ImageLoader::load_image(png, image, &error), error);
+	CHECK(image.get_width() == 8);
+	CHECK(image.get_pixel(7, 7).is_equal_approx(Color(200 / 255.0f, 120 / 255.0f, 40 / 255.0f, 1)));
+	CHECK_FALSE(ImageLoader::load_image((dir / "none.png").string(), image, &error));
+	CHECK(error.find("none.png") != String::npos);
+	std::ofstream(dir / "bad.jpg") << "not a jpeg";
+	CHECK_FALSE(ImageLoader::load_image((dir / "bad.jpg").string(), image, &error));
+	CHECK(error.find("bad.jpg") != String::npos);
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[CLI][Render] a textured quad's pixels equal the PNG (sRGB -> linear) on the GPU and in the reference") {
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first");
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ga_texquad_" + itos((long long)getpid()));
+	std::filesystem::create_directories(dir / "textures");
+	REQUIRE(PNGWriter::save_rgba8(quadrant_texels(8), 8, 8, (dir / "textures" / "quadrants.png").string()));
+	std::ofstream(dir / "project.godot") << "config_version=5\n";
+	// The quad (1.5 m, facing +Z) at 1 m fills a 75-degree view.
+	std::ofstream(dir / "quad.tscn") << R"([gd_scene load_steps=4 format=3 uid="uid://btexquad0001"]
+
+[ext_resource type="Texture2D" uid="uid://dquadrants001" path="res://textures/quadrants.png" id="1_q4d"]
+
+[sub_resource type="StandardMaterial3D" id="StandardMaterial3D_u1"]
+shading_mode = 0
+albedo_texture = ExtResource("1_q4d")
+
+[sub_resource type="QuadMesh" id="QuadMesh_q1"]
+material = SubResource("StandardMaterial3D_u1")
+size = Vector2(1.5, 1.5)
+
+[node name="Root" type="Node3D"]
+
+[node name="Quad" type="MeshInstance3D" parent="."]
+mesh = SubResource("QuadMesh_q1")
+
+[node name="Camera3D" type="Camera3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1)
+)";
+	String gpu = (dir / "gpu.exr").string(), ref = (dir / "ref.exr").string();
+	String scene = (dir / "quad.tscn").string();
+	CHECK(run_cli("render '" + scene + "' --width 64 --height 64 -o '" + gpu + "'") == 0);
+	CHECK(run_cli("reference '" + scene + "' --width 64 --height 64 --spp 4 --shadows off -o '" + ref + "'") == 0);
+	for (const String &out : { gpu, ref }) {
+		Image image;
+		String error;
+		REQUIRE_MESSAGE(ImageLoaderEXR::load(out, image, &error), error);
+		REQUIRE(image.get_width() == 64);
+		const int px[4][2] = { { 16, 16 }, { 48, 16 }, { 16, 48 }, { 48, 48 } };
+		for (int q = 0; q < 4; q++) {
+			Color got = image.get_pixel(px[q][0], px[q][1]);
+			for (int c = 0; c < 3; c++) {
+				float want = Color::srgb_to_linear_channel(QUADRANTS[q][c] / 255.0f);
+				float have = c == 0 ? got.r : (c == 1 ? got.g : got.b);
+				CHECK_MESSAGE(std::fabs(have - want) <= 1.0f / 255.0f, out << " quadrant " << q << " channel " << c << ": " << have << " vs " << want);
+			}
+		}
+	}
+	std::filesystem::remove_all(dir);
+}
+
+} // namespace TestSceneTextures
