@@ -176,6 +176,16 @@ uint32_t AreaShadowRendererRD::light_get_shadow_map_count(RID p_light) const {
 	return it != current->map_counts.end() ? it->second : 0;
 }
 
+uint32_t AreaShadowRendererRD::get_shadow_map_count() const {
+	uint32_t total = 0;
+	if (current) {
+		for (const auto &e : current->map_counts) {
+			total += e.second;
+		}
+	}
+	return total;
+}
+
 bool AreaShadowRendererRD::is_reprojection_compiled() const {
 	for (const auto &e : atlases) {
 		if (e.second.adaptive && e.second.adaptive->is_reprojection_compiled()) {
