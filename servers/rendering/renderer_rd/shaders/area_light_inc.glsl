@@ -13,12 +13,19 @@
 /*   AREA_METHOD_MRP             area_light_mrp_inc.glsl (thesis 5.3)     */
 /*   AREA_METHOD_STOCHASTIC      area_light_mc_inc.glsl (thesis 5.2)      */
 /* area_light_ltc_inc.glsl is always included: it also holds the range    */
-/* window W(d) of the contract (area_light_range_window) that every       */
-/* method applies once per shading point, outside the integral.           */
+/* window W(d) (area_light_range_window) that every method applies once   */
+/* per shading point, outside the integral.                               */
 /*                                                                        */
-/* Every method follows the contract (/tmp area contract, light_data_inc. */
-/* glsl): one-sided (exactly 0 on and behind the light plane), exactly 0  */
-/* for a zero-size or black light, L_o = W(d) * integral f L_e cos dw.    */
+/* Every method computes the same quantity (the CPU reference,            */
+/* modules/reference/area_light.h, computes it exactly):                  */
+/*   L_o(x) = W(d) * integral over the rectangle of f(l, v) L_e (n.l) dw  */
+/*   L_e    = srgb_to_linear(colour) * energy * pi / A_n                  */
+/*            (A_n = a * b when the energy is normalised, else 1)         */
+/*   W(d)   = (max(1 - (d / r)^4, 0)^2)^attenuation, d = distance from x  */
+/*            to the closest point of the rectangle, r = range            */
+/* one-sided (only points strictly in front, local -Z, are lit: exactly   */
+/* 0 on and behind the light plane), and exactly 0 for a zero-size or     */
+/* black light.                                                           */
 /*                                                                        */
 /* Needs, included before: brdf_inc.glsl, light_data_inc.glsl,            */
 /* scene_forward_lights_inc.glsl (light_compute), and the bindings that   */
