@@ -15,8 +15,8 @@ PACKAGES=(
 	libopenexr-dev libpng-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
 	# CPU reference renderer (ray tracing).
 	libembree-dev
-	# Tests.
-	doctest-dev
+	# Tests, and the format check (misc/scripts/check_format.sh).
+	doctest-dev clang-format
 	# Charts.
 	python3-matplotlib python3-numpy
 	# Python module godot_area (modules/python), built for and tested with /usr/bin/python3.
