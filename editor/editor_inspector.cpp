@@ -192,6 +192,29 @@ static std::vector<String> _list_signature(const std::vector<PropertyInfo> &p_li
 	return sig;
 }
 
+int EditorInspector::get_layer_count(PropertyHint p_hint) {
+	switch (p_hint) {
+		case PROPERTY_HINT_LAYERS_2D_RENDER:
+		case PROPERTY_HINT_LAYERS_2D_PHYSICS:
+		case PROPERTY_HINT_LAYERS_2D_NAVIGATION:
+		case PROPERTY_HINT_LAYERS_3D_RENDER:
+		case PROPERTY_HINT_LAYERS_3D_PHYSICS:
+		case PROPERTY_HINT_LAYERS_3D_NAVIGATION:
+			return 20; // Godot's layer grid: 20 named layers (the project settings' layer_names).
+		default:
+			return 0;
+	}
+}
+
+uint32_t EditorInspector::get_layer_mask(const Variant &p_value) {
+	return (uint32_t)(uint64_t)p_value.to_int();
+}
+
+int64_t EditorInspector::toggle_layer(const Variant &p_value, int p_bit) {
+	ERR_FAIL_INDEX_V_MSG(p_bit, 32, (int64_t)get_layer_mask(p_value), vformat("Layer bit %d is out of range (0..31).", p_bit));
+	return (int64_t)(get_layer_mask(p_value) ^ (uint32_t(1) << p_bit));
+}
+
 void EditorInspector::edit(Object *p_object) {
 	edited = p_object;
 	last_edit.reset();

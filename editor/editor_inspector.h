@@ -76,6 +76,13 @@ public:
 	static String make_label(const String &p_property, const String &p_prefix = String());
 	// Fills the hint fields of r_row from its hint/hint_string.
 	static void parse_hint(EditorPropertyRow &r_row);
+	// Layer and mask properties (PROPERTY_HINT_LAYERS_*): how many layers Godot's layer grid
+	// shows for the hint (20 for 3D render/physics/navigation, 0 for other hints), the
+	// mask as the unsigned 32-bit value it is (a stored -1 is all 32 bits set), and the mask
+	// with one layer (0-based bit) toggled, bits outside the grid kept.
+	static int get_layer_count(PropertyHint p_hint);
+	static uint32_t get_layer_mask(const Variant &p_value);
+	static int64_t toggle_layer(const Variant &p_value, int p_bit);
 
 	// The object is not owned. nullptr clears the rows.
 	void edit(Object *p_object);

@@ -108,6 +108,30 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 					}
 					ImGui::EndCombo();
 				}
+			} else if (EditorInspector::get_layer_count(p_row.hint) > 0) {
+				// Godot's layer grid: numbered toggles in two rows, the mask as unsigned hex beside.
+				const int layers = EditorInspector::get_layer_count(p_row.hint);
+				const uint32_t mask = EditorInspector::get_layer_mask(p_value);
+				const float cell = ImGui::GetFrameHeight() * 0.95f;
+				ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(2, 2));
+				for (int bit = 0; bit < layers; bit++) {
+					if (bit % (layers / 2) != 0) {
+						ImGui::SameLine();
+					}
+					const bool on = (mask >> bit) & 1u;
+					ImGui::PushStyleColor(ImGuiCol_Button, on ? ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive) : ImGui::GetStyleColorVec4(ImGuiCol_FrameBg));
+					const std::string id = std::to_string(bit + 1) + "##layer" + std::to_string(bit);
+					if (ImGui::Button(id.c_str(), ImVec2(cell, cell))) {
+						r_value = EditorInspector::toggle_layer(p_value, bit);
+						result.changed = true;
+					}
+					if (ImGui::IsItemHovered()) {
+						ImGui::SetTooltip("Layer %d (bit %d) %s", bit + 1, bit, on ? "on" : "off");
+					}
+					ImGui::PopStyleColor();
+				}
+				ImGui::PopStyleVar();
+				ImGui::TextDisabled("0x%08X", mask);
 			} else if (p_row.hint == PROPERTY_HINT_FLAGS && !p_row.enum_options.empty()) {
 				int64_t flags = current;
 				for (size_t i = 0; i < p_row.enum_options.size(); i++) {

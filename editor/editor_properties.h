@@ -7,7 +7,8 @@
 /* so no widget knows any particular property:                            */
 /*   bool -> checkbox; int/float with a range hint -> slider (or drag     */
 /*   when or_greater/or_less), exp ranges logarithmic; enums -> combo;    */
-/*   flags -> checkboxes; String -> text field (enum suggestions ->       */
+/*   flags -> checkboxes; layers/masks -> Godot's layer grid (numbered   */
+/*   toggles, unsigned mask); String -> text field (enum suggestions ->   */
 /*   combo); Vector2/3 -> drag fields; Color -> colour editor;            */
 /*   Transform3D -> origin and rotation (degrees) fields. Read-only rows  */
 /*   are drawn disabled.                                                  */

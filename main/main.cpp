@@ -30,6 +30,7 @@
 #include "modules/benchmark/methods_sweep_command.h"
 #include "modules/benchmark/dolly_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
+#include "modules/benchmark/targets_bench.h"
 #include "modules/register_module_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/metrics/image_metrics.h"
@@ -101,6 +102,7 @@ void _print_usage() {
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
+			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
@@ -297,11 +299,14 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 				printf("wrote %s (%dx%d, scene-linear %s)\n", out_path.c_str(), width, height, _has_flag(p_args, "--half") ? "half" : "float");
 				auto png_it = p_args.options.find("--png");
 				if (png_it != p_args.options.end()) {
-					if (!PNGWriter::save(image, png_it->second, &error, exposure, Tonemap::MODE_ACES_FITTED)) {
+					// The scene's Environment tonemap (tonemap_mode/_exposure/_white), as Godot shows it; the EXR stays linear.
+					const Tonemap::Settings tonemap = Environment::get_preview_tonemap(tree.get_camera_3d()->get_environment(), tree.get_world_3d()->get_environment());
+					static const char *tonemap_names[Tonemap::MODE_MAX] = { "Linear", "ACES-fitted", "Reinhard", "Filmic", "ACES", "AgX" };
+					if (!PNGWriter::save(image, png_it->second, &error, exposure, tonemap)) {
 						fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 						code = 1;
 					} else {
-						printf("wrote %s (ACES-fitted preview, exposure %+.2f EV)\n", png_it->second.c_str(), exposure);
+						printf("wrote %s (%s preview, tonemap exposure %.2f, white %.2f, %+.2f EV)\n", png_it->second.c_str(), tonemap_names[tonemap.mode], tonemap.exposure, tonemap.white, exposure);
 					}
 				}
 				if (p_backend == Main::BACKEND_RD) {
@@ -448,6 +453,10 @@ int Main::run(int p_argc, char **p_argv) {
 		if (std::find(rest.begin(), rest.end(), String("--accuracy")) != rest.end()) {
 			// The accuracy suite (modules/accuracy) makes its own servers, so it runs before Main::setup().
 			return accuracy_command(rest);
+		}
+		if (std::find(rest.begin(), rest.end(), String("--targets")) != rest.end()) {
+			// bench --targets: issue 17's cost targets, one process, interleaved (modules/benchmark/targets_bench.h).
+			return targets_bench_command(rest);
 		}
 		auto sweep = std::find(rest.begin(), rest.end(), String("--sweep"));
 		if (sweep != rest.end()) {

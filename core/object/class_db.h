@@ -74,9 +74,12 @@ public:
 	static void get_inheriters_from_class(const String &p_class, std::vector<String> *r_classes);
 
 	// Methods.
-	template <class M>
-	static MethodBind *bind_method(const MethodDefinition &p_definition, M p_method) {
-		return _bind_method(create_method_bind(p_method), p_definition);
+	// Trailing p_defaults (DEFVAL(...)) are the defaults of the last arguments.
+	template <class M, class... D>
+	static MethodBind *bind_method(const MethodDefinition &p_definition, M p_method, D... p_defaults) {
+		MethodBind *bind = create_method_bind(p_method);
+		bind->default_arguments = std::vector<Variant>{ Variant(p_defaults)... };
+		return _bind_method(bind, p_definition);
 	}
 	// Searches p_class then its ancestors.
 	static MethodBind *get_method(const String &p_class, const String &p_method);

@@ -39,6 +39,13 @@ Variant MethodBind::call(Object *p_object, const std::vector<Variant> &p_args, C
 	for (const Variant &v : p_args) {
 		ptrs.push_back(&v);
 	}
+	// Missing trailing arguments take their defaults (DEFVAL).
+	const int missing = get_argument_count() - (int)p_args.size();
+	if (missing > 0 && missing <= (int)default_arguments.size()) {
+		for (int i = (int)default_arguments.size() - missing; i < (int)default_arguments.size(); i++) {
+			ptrs.push_back(&default_arguments[i]);
+		}
+	}
 	return call(p_object, ptrs.empty() ? nullptr : ptrs.data(), (int)ptrs.size(), r_error);
 }
 

@@ -41,6 +41,8 @@ struct MethodDefinition {
 			name(p_name), args{ String(p_args)... } {}
 };
 #define D_METHOD(...) MethodDefinition(__VA_ARGS__)
+// ClassDB::bind_method(D_METHOD("look_at", "target", "up"), &Node3D::look_at, DEFVAL(Vector3(0, 1, 0)));
+#define DEFVAL(m_value) (Variant(m_value))
 
 class MethodBind {
 	friend class ClassDB;
@@ -50,6 +52,7 @@ protected:
 	String instance_class;
 	std::vector<String> arg_names;
 	std::vector<Variant::Type> arg_types; // NIL = any Variant.
+	std::vector<Variant> default_arguments; // Of the last arguments (Godot's DEFVAL), in order.
 	Variant::Type return_type = Variant::NIL;
 	bool returns = false;
 	bool is_const = false;
@@ -66,6 +69,8 @@ public:
 	Variant::Type get_return_type() const { return return_type; }
 	bool has_return() const { return returns; }
 	bool is_const_method() const { return is_const; }
+	// Defaults of the trailing arguments: argument i has one when i >= count - defaults.size().
+	const std::vector<Variant> &get_default_arguments() const { return default_arguments; }
 
 	virtual Variant call(Object *p_object, const Variant **p_args, int p_argcount, CallError &r_error) const = 0;
 	Variant call(Object *p_object, const std::vector<Variant> &p_args, CallError &r_error) const;

@@ -114,7 +114,7 @@ Variant Object::call(const String &p_method, const std::vector<Variant> &p_args,
 		ptrs.push_back(&v);
 	}
 	CallError ce;
-	Variant ret = mb->call(this, ptrs.empty() ? nullptr : ptrs.data(), (int)ptrs.size(), ce);
+	Variant ret = mb->call(this, p_args, ce); // Fills in DEFVAL defaults.
 	if (ce.error != CallError::CALL_OK) {
 		ERR_PRINT(vformat("Invalid call to '%s::%s': %s", get_class().c_str(), p_method.c_str(), mb->get_call_error_text(ce, ptrs.empty() ? nullptr : ptrs.data()).c_str()));
 		return Variant();

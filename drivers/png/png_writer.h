@@ -21,4 +21,6 @@ public:
 	static bool save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, const String &p_path, String *r_error = nullptr);
 	// Encodes a scene-linear image with Tonemap::apply(p_image, p_exposure_ev, p_mode), then saves it.
 	static bool save(const Image &p_image, const String &p_path, String *r_error = nullptr, float p_exposure_ev = 0.0f, Tonemap::Mode p_mode = Tonemap::MODE_LINEAR);
+	// The same with Godot's tonemap settings (an Environment's tonemap_mode/_exposure/_white).
+	static bool save(const Image &p_image, const String &p_path, String *r_error, float p_exposure_ev, const Tonemap::Settings &p_tonemap);
 };

@@ -310,7 +310,8 @@ void Node3DEditorViewport::_redraw_display() {
 			visit(scene_root);
 		}
 	}
-	display = Tonemap::apply(img, 0.0f, Tonemap::MODE_ACES_FITTED);
+	// The scene's Environment tonemap (WorldEnvironment), as Godot's editor viewport shows it.
+	display = Tonemap::apply(img, Environment::get_preview_tonemap(camera ? camera->get_environment() : Ref<Environment>(), tree ? tree->get_world_3d()->get_environment() : Ref<Environment>()));
 	display_dirty = false;
 }
 

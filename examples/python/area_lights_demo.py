@@ -2,6 +2,7 @@
 # godot-area: builds a scene from nothing with the Python module `godot_area` (a floor, a box,
 # a sphere and two area lights), sweeps one area light across the scene over N frames, renders
 # the last frame and plots the per-pass GPU times of every frame with matplotlib.
+# Written as a GDScript user would: ga.AreaLight3D(...), node.look_at(), ga.Vector3, enum names.
 #
 #   scons -Q -j2                       # builds bin/python/godot_area*.so
 #   /usr/bin/python3 examples/python/area_lights_demo.py --frames 40 --png doc/results/python_demo_times.png
@@ -9,6 +10,7 @@
 # Without PYTHONPATH the script looks for the module under bin/python*/ of this repository.
 import argparse
 import glob
+import math
 import os
 import sys
 import time
@@ -26,75 +28,43 @@ except ImportError:
 	import godot_area as ga
 
 
-def look_at(eye, target, up=(0.0, 1.0, 0.0)):
-	"""A 3x4 Transform3D (basis rows, then origin) whose -Z axis points from eye to target."""
-	eye, target, up = (np.asarray(v, float) for v in (eye, target, up))
-	back = (eye - target) / np.linalg.norm(eye - target)
-	right = np.cross(up, back)
-	right /= np.linalg.norm(right)
-	basis = np.stack([right, np.cross(back, right), back], axis=1)
-	return np.hstack([basis, eye.reshape(3, 1)])
-
-
 def material(albedo, roughness):
-	m = ga.create("StandardMaterial3D")
-	m.albedo_color = albedo
-	m.roughness = roughness
-	return m
+	return ga.StandardMaterial3D(albedo_color=ga.Color(*albedo), roughness=roughness)
 
 
-def mesh_instance(parent, name, mesh_class, material_, position=(0.0, 0.0, 0.0), **mesh_properties):
-	node = parent.add_child(ga.create("MeshInstance3D"))
-	node.name = name
-	mesh = ga.create(mesh_class)
-	for key, value in mesh_properties.items():
-		mesh.set(key, value)
-	node.mesh = mesh
-	node.material_override = material_
-	node.position = position
-	return node
+def mesh_instance(parent, name, mesh, material_, position=ga.Vector3.ZERO):
+	return parent.add_child(ga.MeshInstance3D(name=name, mesh=mesh, material_override=material_, position=position))
 
 
 def build_scene():
-	root = ga.create("Node3D")
-	root.name = "AreaLightsDemo"
+	root = ga.Node3D(name="AreaLightsDemo")
 
-	env_node = root.add_child(ga.create("WorldEnvironment"))
-	environment = ga.create("Environment")
-	environment.background_mode = 1  # Custom colour.
-	environment.background_color = (0.02, 0.02, 0.03)
-	env_node.environment = environment
+	environment = ga.Environment(background_mode=ga.Environment.BG_COLOR, background_color=ga.Color(0.02, 0.02, 0.03))
+	root.add_child(ga.WorldEnvironment(environment=environment))
 
-	mesh_instance(root, "Floor", "PlaneMesh", material((0.6, 0.6, 0.62), 0.25), size=(10, 10))
-	mesh_instance(root, "Box", "BoxMesh", material((0.75, 0.35, 0.2), 0.6), (-0.8, 0.4, 0.0), size=(0.8, 0.8, 0.8))
-	mesh_instance(root, "Ball", "SphereMesh", material((0.85, 0.85, 0.8), 0.15), (0.9, 0.45, 0.3), radius=0.45, height=0.9)
+	mesh_instance(root, "Floor", ga.PlaneMesh(size=ga.Vector2(10, 10)), material((0.6, 0.6, 0.62), 0.25))
+	mesh_instance(root, "Box", ga.BoxMesh(size=ga.Vector3(0.8, 0.8, 0.8)), material((0.75, 0.35, 0.2), 0.6), ga.Vector3(-0.8, 0.4, 0.0))
+	mesh_instance(root, "Ball", ga.SphereMesh(radius=0.45, height=0.9), material((0.85, 0.85, 0.8), 0.15), ga.Vector3(0.9, 0.45, 0.3))
 
-	camera = root.add_child(ga.create("Camera3D"))
-	camera.name = "Camera"
-	camera.transform = look_at((0.0, 2.6, 4.6), (0.0, 0.4, 0.0))
-	camera.fov = 55.0
+	camera = root.add_child(ga.Camera3D(name="Camera", fov=55.0, position=ga.Vector3(0.0, 2.6, 4.6)))
+	camera.look_at(ga.Vector3(0.0, 0.4, 0.0))
 
-	panel = root.add_child(ga.create("AreaLight3D"))  # A ceiling panel, fixed.
-	panel.name = "Panel"
-	panel.transform = look_at((0.0, 2.8, 0.0), (0.0, 0.0, 0.0), up=(0.0, 0.0, -1.0))
-	panel.area_size = (2.0, 1.0)
-	panel.area_range = 8.0
-	panel.light_energy = 1.5
+	# A ceiling panel, fixed, facing down (its -Z axis); "up" on the screen is the scene's -Z.
+	panel = root.add_child(ga.AreaLight3D(name="Panel", area_size=ga.Vector2(2.0, 1.0), area_range=8.0, light_energy=1.5))
+	panel.position = ga.Vector3(0.0, 2.8, 0.0)
+	panel.look_at(ga.Vector3.ZERO, ga.Vector3.FORWARD)
 
-	strip = root.add_child(ga.create("AreaLight3D"))  # A warm light strip that sweeps across.
-	strip.name = "Strip"
-	strip.area_size = (0.3, 1.2)
-	strip.area_range = 6.0
-	strip.light_color = (1.0, 0.7, 0.4)
-	strip.light_energy = 4.0
+	# A warm light strip that sweeps across; MRP shading, no shadow.
+	root.add_child(ga.AreaLight3D(name="Strip", area_size=ga.Vector2(0.3, 1.2), area_range=6.0, light_color=ga.Color(1.0, 0.7, 0.4),
+			light_energy=4.0, area_shading_method=ga.AreaLight3D.AREA_SHADING_MRP))
 	return root
 
 
 def sweep(strip, frame, frames):
 	"""Moves the strip on a half circle around the objects, always facing the centre."""
-	angle = np.pi * frame / max(frames - 1, 1)
-	eye = (2.5 * np.cos(angle), 1.2, 2.5 * np.sin(angle) - 0.5)
-	strip.transform = look_at(eye, (0.0, 0.4, 0.0))
+	angle = math.pi * frame / max(frames - 1, 1)
+	strip.position = ga.Vector3(2.5 * math.cos(angle), 1.2, 2.5 * math.sin(angle) - 0.5)
+	strip.look_at(ga.Vector3(0.0, 0.4, 0.0))
 
 
 def preview(image, exposure=1.0):
@@ -125,6 +95,7 @@ def main():
 	ga.init("rd")
 	scene = ga.get_tree().root.add_child(build_scene())
 	strip = scene.get_node("Strip")
+	assert isinstance(strip, ga.AreaLight3D)
 	if args.save_scene:
 		ga.save_scene(scene, args.save_scene)
 

@@ -50,6 +50,13 @@ public:
 // The one Python wrapper of p_object (None for null). p_owns: a plain (non-node, non-refcounted)
 // Object whose wrapper should delete it.
 py::object wrap_object(Object *p_object, bool p_owns = false);
+// The generated Python classes by ClassDB name (wrap_object gives each wrapper its class).
+void set_class_map(py::dict p_map);
+// Node::predelete_callback: the node's wrapper (if any) becomes invalid.
+void on_node_deleted(Node *p_node);
+// Every ClassDB class with its own methods, properties and constants (no inheritance), for
+// the class generator (godot_area_classes.py).
+py::list class_api();
 // Marks the wrappers of p_node and its descendants as freed (call right before the engine deletes them).
 void invalidate_subtree(Node *p_node);
 // Engine shutdown: deletes orphan nodes still held by Python, drops every Ref and marks every
@@ -70,9 +77,21 @@ public:
 	ErrorCapture &operator=(const ErrorCapture &) = delete;
 };
 
-// Variant <-> Python (godot_area_variant.cpp). Vector2/3 <-> tuples, Color <-> tuple of 3/4,
-// Transform3D <-> 3x4 nested lists (a 4x4 or numpy array is accepted), objects <-> wrappers.
+// Variant <-> Python (godot_area_variant.cpp). Vector2/3, Color, Transform3D <-> the math types
+// (tuples, lists and NumPy arrays of the right shape are accepted too), objects <-> wrappers.
 py::object variant_to_python(const Variant &p_value);
+// The Python math types (godot_area_math.py) the conversions produce and recognise.
+enum MathType {
+	MATH_VECTOR2,
+	MATH_VECTOR3,
+	MATH_VECTOR4,
+	MATH_COLOR,
+	MATH_BASIS,
+	MATH_TRANSFORM3D,
+	MATH_TYPE_MAX,
+};
+void set_math_type(MathType p_type, py::object p_class);
+bool is_math_type(py::handle p_value, MathType p_type);
 // p_hint: the expected type (a property's), or NIL to guess from the Python value. Throws
 // py::type_error when the value has no Variant form.
 Variant python_to_variant(py::handle p_value, Variant::Type p_hint = Variant::NIL);

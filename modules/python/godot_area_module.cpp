@@ -16,6 +16,7 @@
 /* "rd", or on "dummy" with a RuntimeWarning when no Vulkan device works. */
 
 #include "modules/python/godot_area_bindings.h"
+#include "modules/python/godot_area_embedded.gen.h"
 
 #include "scene/main/godot_instance.h"
 #include "modules/openexr/image_loader_exr.h"
@@ -24,9 +25,11 @@
 #include "scene/3d/camera_3d.h"
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
+#include "scene/register_scene_types.h"
 #include "scene/resources/resource_format_text.h"
 #include "servers/rendering/rendering_device.h"
 
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -167,17 +170,63 @@ void _shutdown() {
 	PythonSession::shutdown();
 }
 
+// Runs one embedded Python source (modules/python/godot_area_*.py) in its own namespace.
+py::dict _run_embedded(const char *p_source, const char *p_name) {
+	py::dict ns;
+	ns["__builtins__"] = py::module_::import("builtins");
+	ns["__name__"] = py::str(p_name);
+	py::exec(py::str(p_source), ns);
+	return ns;
+}
+
 } // namespace
 
 PYBIND11_MODULE(godot_area, m) {
-	m.doc() = "godot-area engine: build, load and save scenes, set any ClassDB property, render frames to NumPy.";
+	m.doc() = "godot-area engine: build, load and save scenes, set any ClassDB property, render frames to NumPy.\n\n"
+			  "One Python class per engine class (ga.AreaLight3D, ga.Node3D, ...), with the ClassDB properties, methods,\n"
+			  "enums and constants as attributes; Vector2/3/4, Color, Basis and Transform3D value types.";
+
+	// ClassDB is filled at import (no GPU needed), so the classes exist before init().
+	register_scene_types();
+	Node::predelete_callback = &on_node_deleted;
 
 	bind_objects(m);
+
+	py::dict math = _run_embedded(GODOT_AREA_MATH_PY, "godot_area");
+	const char *math_names[MATH_TYPE_MAX] = { "Vector2", "Vector3", "Vector4", "Color", "Basis", "Transform3D" };
+	for (int i = 0; i < MATH_TYPE_MAX; i++) {
+		m.attr(math_names[i]) = math[math_names[i]];
+		set_math_type(MathType(i), math[math_names[i]]);
+	}
+	m.def("_class_api", &class_api, "ClassDB as data (for the class generator and the stub writer).");
+	m.def("_class_docs", []() {
+		py::list out;
+		for (const char *const *doc = GODOT_AREA_CLASS_DOCS; *doc; doc++) {
+			out.append(py::str(*doc));
+		}
+		return out;
+	}, "The class reference (doc/classes/*.xml) embedded at build time.");
+	m.def("_set_class_map", &set_class_map);
 
 	py::class_<TreeHandle>(m, "SceneTree", "The process-wide scene tree: its root node, viewport size and rendering.")
 			.def_property_readonly("root", [](TreeHandle &) { return wrap_object(_tree()->get_root()); })
 			.def_property_readonly("camera", [](TreeHandle &) { return wrap_object(_tree()->get_camera_3d()); }, "The current Camera3D (None without one).")
 			.def_property_readonly("size", [](TreeHandle &) { return py::make_tuple(_tree()->get_width(), _tree()->get_height()); })
+			.def("get_nodes_in_group", [](TreeHandle &, const String &p_group) {
+				py::list out;
+				std::vector<Node *> stack = { _tree()->get_root() };
+				while (!stack.empty()) {
+					Node *node = stack.back();
+					stack.pop_back();
+					if (node->is_in_group(p_group)) {
+						out.append(wrap_object(node));
+					}
+					for (int i = node->get_child_count() - 1; i >= 0; i--) {
+						stack.push_back(node->get_child(i));
+					}
+				}
+				return out;
+			}, py::arg("group"), "Nodes of the tree in the group, in tree order (Godot's SceneTree.get_nodes_in_group).")
 			.def("set_size", [](TreeHandle &, int p_width, int p_height) {
 				if (p_width < 0 || p_height < 0 || p_width > Image::MAX_SIZE || p_height > Image::MAX_SIZE) {
 					throw py::value_error(vformat("Size %dx%d is out of range (0..%d).", p_width, p_height, Image::MAX_SIZE));
@@ -205,15 +254,14 @@ PYBIND11_MODULE(godot_area, m) {
 		}
 		return wrap_object(object, true);
 	}, py::arg("class_name"), "A new instance of an engine class by name (Python owns it until it gets a parent).");
-	m.def("class_exists", [](const String &p_class) { _ensure_engine(); return ClassDB::class_exists(p_class); });
+	// ClassDB queries need no engine (the classes are registered at import).
+	m.def("class_exists", [](const String &p_class) { return ClassDB::class_exists(p_class); }, py::arg("class_name"));
 	m.def("get_class_list", []() {
-		_ensure_engine();
 		std::vector<String> classes;
 		ClassDB::get_class_list(&classes);
 		return classes;
 	});
 	m.def("class_get_property_list", [](const String &p_class) {
-		_ensure_engine();
 		if (!ClassDB::class_exists(p_class)) {
 			throw py::value_error(vformat("Class '%s' does not exist.", p_class.c_str()));
 		}
@@ -292,4 +340,9 @@ PYBIND11_MODULE(godot_area, m) {
 	m.def("validation_error_count", []() { return PythonSession::get_validation_error_count(); }, "Vulkan validation errors so far (GODOT_AREA_VALIDATION=1 enables the layer).");
 
 	py::module_::import("atexit").attr("register")(py::cpp_function(&_shutdown));
+
+	// The generated classes last: they wrap every module-level name above.
+	_run_embedded(GODOT_AREA_CLASSES_PY, "godot_area")["_build"](m);
+	py::dict stubs = _run_embedded(GODOT_AREA_STUBS_PY, "godot_area");
+	m.attr("_write_stubs") = stubs["write_stubs"];
 }

@@ -10,10 +10,13 @@
 
 #include "modules/python/godot_area_bindings.h"
 
+#include "core/object/class_db.h"
+
 #include "modules/python/python_session.h"
 #include "scene/main/node.h"
 
 #include <algorithm>
+#include <fnmatch.h>
 #include <unordered_map>
 
 namespace godot_area_py {
@@ -22,6 +25,23 @@ namespace {
 
 // Object* -> its Python wrapper (borrowed: the wrapper removes itself when it dies).
 std::unordered_map<Object *, PyObject *> wrapper_registry;
+// ClassDB class name -> its generated Python class (godot_area_classes.py fills it at import).
+PyObject *class_map = nullptr;
+
+// The generated Python class of p_object's class, or of its nearest ancestor that has one.
+py::object _python_class_of(const Object *p_object) {
+	if (!class_map) {
+		return py::object();
+	}
+	py::dict map = py::reinterpret_borrow<py::dict>(class_map);
+	for (String name = p_object->get_class(); !name.empty(); name = ClassDB::get_parent_class(name)) {
+		py::str key(name);
+		if (map.contains(key)) {
+			return map[key];
+		}
+	}
+	return py::object();
+}
 
 EngineObject *_wrapper_of(PyObject *p_object) {
 	return py::handle(p_object).cast<EngineObject *>();
@@ -175,7 +195,21 @@ py::object wrap_object(Object *p_object, bool p_owns) {
 	} else if (!is_node) {
 		wrapper->owns_object = p_owns;
 	}
-	py::object result = py::cast(wrapper, py::return_value_policy::take_ownership);
+	py::object cls = _python_class_of(p_object);
+	py::object result;
+	if (cls) {
+		// An instance of the generated class that matches the engine class (type(light) is
+		// AreaLight3D), made the way pybind11 makes one for its own classes: allocate, then
+		// let the pybind11 base adopt the wrapper as its owned value.
+		result = py::reinterpret_steal<py::object>(py::detail::make_new_instance((PyTypeObject *)cls.ptr()));
+		py::detail::instance *inst = reinterpret_cast<py::detail::instance *>(result.ptr());
+		inst->owned = true;
+		py::detail::value_and_holder v_h = *py::detail::values_and_holders(inst).begin();
+		v_h.value_ptr() = wrapper;
+		v_h.type->init_instance(inst, nullptr);
+	} else {
+		result = py::cast(wrapper, py::return_value_policy::take_ownership);
+	}
 	wrapper_registry[p_object] = result.ptr();
 	return result;
 }
@@ -227,6 +261,79 @@ void release_all_wrappers() {
 	}
 }
 
+void set_class_map(py::dict p_map) {
+	Py_XDECREF(class_map);
+	class_map = p_map.inc_ref().ptr();
+}
+
+void on_node_deleted(Node *p_node) {
+	auto it = wrapper_registry.find(p_node);
+	if (it != wrapper_registry.end()) {
+		_wrapper_of(it->second)->object = nullptr;
+		wrapper_registry.erase(it);
+	}
+}
+
+py::list class_api() {
+	std::vector<String> classes;
+	ClassDB::get_class_list(&classes);
+	py::list out;
+	for (const String &name : classes) {
+		py::dict c;
+		c["name"] = name;
+		c["parent"] = ClassDB::get_parent_class(name);
+		c["instantiable"] = ClassDB::can_instantiate(name);
+		py::list methods;
+		std::vector<String> method_names;
+		ClassDB::get_method_list(name, &method_names, true);
+		for (const String &m : method_names) {
+			const MethodBind *bind = ClassDB::get_method(name, m);
+			if (!bind) {
+				continue;
+			}
+			py::dict d;
+			d["name"] = m;
+			py::list args;
+			for (int i = 0; i < bind->get_argument_count(); i++) {
+				const String arg_name = i < (int)bind->get_argument_names().size() ? bind->get_argument_names()[i] : vformat("arg%d", i);
+				args.append(py::make_tuple(arg_name, Variant::get_type_name(bind->get_argument_type(i))));
+			}
+			d["args"] = args;
+			py::list defaults;
+			for (const Variant &v : bind->get_default_arguments()) {
+				defaults.append(variant_to_python(v));
+			}
+			d["defaults"] = defaults;
+			d["return_type"] = bind->has_return() ? Variant::get_type_name(bind->get_return_type()) : String("void");
+			d["const"] = bind->is_const_method();
+			methods.append(d);
+		}
+		c["methods"] = methods;
+		py::list properties;
+		std::vector<PropertyInfo> list;
+		ClassDB::get_property_list(name, &list, true);
+		for (const PropertyInfo &pi : list) {
+			if (pi.is_group_marker()) {
+				continue;
+			}
+			py::dict d = property_info_to_dict(pi);
+			d["setter"] = ClassDB::get_property_setter(name, pi.name);
+			d["getter"] = ClassDB::get_property_getter(name, pi.name);
+			properties.append(d);
+		}
+		c["properties"] = properties;
+		py::list constants;
+		std::vector<String> constant_names;
+		ClassDB::get_integer_constant_list(name, &constant_names, true);
+		for (const String &k : constant_names) {
+			constants.append(py::make_tuple(k, ClassDB::get_integer_constant_enum(name, k, true), ClassDB::get_integer_constant(name, k)));
+		}
+		c["constants"] = constants;
+		out.append(c);
+	}
+	return out;
+}
+
 ErrorCapture::ErrorCapture() {
 	handler.callback = [this](ErrorHandlerType p_type, const String &p_text) {
 		(p_type == ERR_HANDLER_WARNING ? warnings : errors).push_back(p_text);
@@ -276,9 +383,20 @@ void bind_objects(py::module_ &m) {
 			.def("has_method", [](EngineObject &self, const String &p_name) { return self.get_checked()->has_method(p_name); })
 			.def("call", [](EngineObject &self, const String &p_method, py::args p_args) {
 				Object *object = self.get_checked();
+				// The bound method's argument types guide the conversion (2 -> 2.0 for a float, a
+				// 3-tuple -> Color for a Color argument).
+				const MethodBind *bind = ClassDB::get_method(object->get_class(), p_method);
 				std::vector<Variant> args;
+				int index = 0;
 				for (py::handle a : p_args) {
-					args.push_back(python_to_variant(a));
+					const Variant::Type hint = bind && index < bind->get_argument_count() ? bind->get_argument_type(index) : Variant::NIL;
+					try {
+						args.push_back(python_to_variant(a, hint));
+					} catch (const py::type_error &e) {
+						throw py::type_error(vformat("%s.%s(): argument %d ('%s'): %s", object->get_class().c_str(), p_method.c_str(), index + 1,
+								bind && index < (int)bind->get_argument_names().size() ? bind->get_argument_names()[index].c_str() : "?", e.what()));
+					}
+					index++;
 				}
 				bool valid = false;
 				Variant ret;
@@ -362,6 +480,32 @@ void bind_objects(py::module_ &m) {
 			.def("get_path", [](EngineNode &self) { return self.get_node_checked()->get_path(); })
 			.def("is_inside_tree", [](EngineNode &self) { return self.get_node_checked()->is_inside_tree(); })
 			.def("get_tree_string", [](EngineNode &self) { return self.get_node_checked()->get_tree_string(); })
+			.def("get_groups", [](EngineNode &self) {
+				py::list out;
+				for (const String &g : self.get_node_checked()->get_groups()) {
+					out.append(py::str(g));
+				}
+				return out;
+			}, "The node's groups, in the order they were added (add_to_group).")
+			.def("find_children", [](EngineNode &self, const String &p_pattern, const String &p_class, bool p_recursive) {
+				py::list out;
+				std::vector<Node *> stack = { self.get_node_checked() };
+				while (!stack.empty()) {
+					Node *node = stack.back();
+					stack.pop_back();
+					for (int i = node->get_child_count() - 1; i >= 0; i--) {
+						Node *child = node->get_child(i);
+						if ((p_class.empty() || child->is_class(p_class)) && fnmatch(p_pattern.c_str(), child->get_name().c_str(), 0) == 0) {
+							out.append(wrap_object(child));
+						}
+						if (p_recursive) {
+							stack.push_back(child);
+						}
+					}
+				}
+				return out;
+			}, py::arg("pattern") = "*", py::arg("type") = "", py::arg("recursive") = true,
+					"Descendants whose name matches pattern (* and ?) and whose class is type or a subclass ('' for any), in tree order.")
 			.def("free", [](EngineNode &self) {
 				Node *node = self.get_node_checked();
 				if (node->is_inside_tree() && !node->get_parent()) {

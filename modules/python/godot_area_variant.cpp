@@ -11,6 +11,29 @@
 
 namespace godot_area_py {
 
+namespace {
+
+// The math types of godot_area_math.py (set at import; strong references kept for the process).
+PyObject *math_types[MATH_TYPE_MAX] = {};
+
+py::object _math(MathType p_type, py::args p_args) {
+	if (!math_types[p_type]) {
+		return py::tuple(p_args); // Before the module finished importing.
+	}
+	return py::reinterpret_borrow<py::object>(math_types[p_type])(*p_args);
+}
+
+} // namespace
+
+void set_math_type(MathType p_type, py::object p_class) {
+	Py_XDECREF(math_types[p_type]);
+	math_types[p_type] = p_class.inc_ref().ptr();
+}
+
+bool is_math_type(py::handle p_value, MathType p_type) {
+	return math_types[p_type] && PyObject_IsInstance(p_value.ptr(), math_types[p_type]) == 1;
+}
+
 String python_type_name(py::handle p_value) {
 	return String(py::str(py::type::handle_of(p_value).attr("__name__")));
 }
@@ -29,15 +52,15 @@ py::object variant_to_python(const Variant &p_value) {
 			return py::str(p_value.to_string());
 		case Variant::VECTOR2: {
 			Vector2 v = p_value;
-			return py::make_tuple(v.x, v.y);
+			return _math(MATH_VECTOR2, py::make_tuple(v.x, v.y));
 		}
 		case Variant::VECTOR3: {
 			Vector3 v = p_value;
-			return py::make_tuple(v.x, v.y, v.z);
+			return _math(MATH_VECTOR3, py::make_tuple(v.x, v.y, v.z));
 		}
 		case Variant::COLOR: {
 			Color c = p_value;
-			return py::make_tuple(c.r, c.g, c.b, c.a);
+			return _math(MATH_COLOR, py::make_tuple(c.r, c.g, c.b, c.a));
 		}
 		case Variant::TRANSFORM3D: {
 			Transform3D t = p_value;
@@ -45,7 +68,7 @@ py::object variant_to_python(const Variant &p_value) {
 			for (int i = 0; i < 3; i++) {
 				rows.append(py::make_tuple(t.basis.rows[i].x, t.basis.rows[i].y, t.basis.rows[i].z, t.origin[i]));
 			}
-			return rows;
+			return _math(MATH_TRANSFORM3D, py::make_tuple(rows));
 		}
 		case Variant::OBJECT:
 			return wrap_object(p_value.get_object());
@@ -123,6 +146,13 @@ Variant python_to_variant(py::handle p_value, Variant::Type p_hint) {
 	}
 	if (py::isinstance<py::str>(p_value)) {
 		return Variant(String(p_value.cast<std::string>()));
+	}
+	// Types the engine's Variant does not hold: say so instead of guessing from their size.
+	if (is_math_type(p_value, MATH_VECTOR4) || is_math_type(p_value, MATH_BASIS)) {
+		throw py::type_error(vformat("A %s cannot be stored in an engine value (Vector2, Vector3, Color and Transform3D can).", python_type_name(p_value).c_str()));
+	}
+	if (is_math_type(p_value, MATH_TRANSFORM3D) && p_hint != Variant::TRANSFORM3D && p_hint != Variant::NIL) {
+		throw py::type_error(vformat("Expected %s, got a Transform3D.", Variant::get_type_name(p_hint).c_str()));
 	}
 	// numpy scalars and other number-likes.
 	if (!_is_sequence(p_value) && py::hasattr(p_value, "__index__") && p_hint != Variant::FLOAT) {

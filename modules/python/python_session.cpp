@@ -83,6 +83,7 @@ bool PythonSession::draw_frame(FrameProfile &r_profile, String *r_error) {
 		*r_error = "The engine is not initialized.";
 		return false;
 	}
+	Node::flush_delete_queue(); // Nodes queue_free()d since the last frame.
 	rs->draw();
 	r_profile = rs->get_frame_profile();
 	return true;

@@ -21,6 +21,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <mutex>
 #include <thread>
@@ -249,7 +250,20 @@ bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_inst
 	ERR_FAIL_COND_V_MSG(!light_storage->owns_light(rid), false, "ReferenceRenderer: a visible light instance has an invalid light RID; skipped.");
 	RS::LightType type = light_storage->light_get_type(rid);
 	if (type == RS::LIGHT_DIRECTIONAL) {
-		return false; // The Forward+ shader has no directional lights yet; mirror it.
+		// RendererRD::LightStorage::fill_directional_light_data, in world space (sun_light.h).
+		r_light.type = type;
+		DirectionalLightData &sun = r_light.sun;
+		sun = DirectionalLightData();
+		Vector3 direction = p_instance.transform.basis.xform(Vector3(0, 0, -1)).normalized();
+		sun.direction = direction == Vector3() ? Vector3(0, 0, -1) : direction;
+		Color linear = light_storage->light_get_color(rid).srgb_to_linear();
+		float energy = light_storage->light_get_param(rid, RS::LIGHT_PARAM_ENERGY) * float(Math::PI) * (light_storage->light_is_negative(rid) ? -1.0f : 1.0f);
+		sun.color = Vector3(linear.r * energy, linear.g * energy, linear.b * energy);
+		sun.size = Math::deg_to_rad(std::fmin(std::fmax(light_storage->light_get_param(rid, RS::LIGHT_PARAM_SIZE), 0.0f), 90.0f)) * 0.5f;
+		sun.specular_amount = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR);
+		sun.cull_mask = light_storage->light_get_cull_mask(rid);
+		sun.shadow = light_storage->light_has_shadow(rid);
+		return true;
 	}
 	if (type == RS::LIGHT_AREA) {
 		// The area-light contract's units (area_light.h); scale is ignored, as for every light.
@@ -378,8 +392,11 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 			frame.lights.push_back(light);
 		}
 	}
-	if (!p_data.directional_lights.empty()) {
-		WARN_PRINT_ONCE("ReferenceRenderer: directional lights are ignored (the Forward+ shader has none yet).");
+	for (const RenderSceneData::LightInstance &li : p_data.directional_lights) {
+		Light light;
+		if (_make_light(li, light)) {
+			frame.lights.push_back(light);
+		}
 	}
 
 	// Embree scene (built per frame; the surfaces vector is not resized after this point).
@@ -540,6 +557,36 @@ static void _reference_shade_area_light(RTCScene p_scene, const ReferenceRenderO
 	r_radiance += integral.radiance;
 }
 
+// One directional light: the mean of light_compute() over jittered strata of the sun disk (sun_light.h), one
+// shadow ray per sample (to infinity) when shadows are on and the light has shadow_enabled. Accumulates like a punctual light.
+static void _reference_shade_sun(RTCScene p_scene, const ReferenceRenderOptions &p_options, const DirectionalLightData &p_sun, const AreaLightShadingPoint &p_point, ReferenceRNG &r_rng, uint64_t &r_shadow_rays, Vector3 &r_diffuse, Vector3 &r_specular) {
+	int strata = 1;
+	if (p_sun.size > 0.0f) {
+		strata = std::max(1, int(std::sqrt(double(std::max(p_options.sun_samples, 1)))));
+	}
+	const int count = strata * strata;
+	const Vector3 weight = p_sun.size > 0.0f ? sun_sample_weight(p_sun, count) : p_sun.color;
+	for (int i = 0; i < count; i++) {
+		Vector3 L = -p_sun.direction;
+		if (p_sun.size > 0.0f) {
+			const double u = (double(i % strata) + r_rng.next_double()) / strata;
+			const double v = (double(i / strata) + r_rng.next_double()) / strata;
+			L = sun_sample_direction(p_sun, u, v);
+		}
+		if (p_point.N.dot(L) <= 0.0f) {
+			continue;
+		}
+		if (p_options.shadows && p_sun.shadow) { // As the GPU: only a sun with shadow_enabled casts shadows.
+			const Vector3 side = p_point.ng.dot(L) >= 0.0f ? p_point.ng : -p_point.ng;
+			r_shadow_rays++;
+			if (_reference_occluded(p_scene, p_point.vertex + side * p_point.offset, L, std::numeric_limits<float>::infinity())) {
+				continue;
+			}
+		}
+		light_compute(p_point.N, L, p_point.V, weight, p_sun.specular_amount, p_point.diffuse_mode, p_point.roughness, p_point.f0, p_point.f90, p_point.specular_enabled, r_diffuse, r_specular);
+	}
+}
+
 Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters) {
 	// Pixel centre in Vulkan NDC (y down, top row first), unprojected at depth 0 (near) and 1 (far):
 	// the segment the rasteriser's depth range covers for this pixel.
@@ -654,6 +701,12 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 				const uint64_t before = r_counters.area_samples;
 				_reference_shade_area_light(p_frame.scene, p_frame.options, light.area, point, r_rng, r_counters.shadow_rays, r_counters.area_samples, r_counters.area_integrals, r_counters.area_converged, r_counters.max_relative_error, area_light);
 				r_counters.pixel_samples += uint32_t(r_counters.area_samples - before);
+			}
+			continue;
+		}
+		if (light.type == RS::LIGHT_DIRECTIONAL) {
+			if ((light.sun.cull_mask & s.layer_mask) != 0) {
+				_reference_shade_sun(p_frame.scene, p_frame.options, light.sun, point, r_rng, r_counters.shadow_rays, diffuse_light, specular_light);
 			}
 			continue;
 		}

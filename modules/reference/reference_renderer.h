@@ -19,6 +19,7 @@
 #include "modules/reference/area_light_integrator.h"
 #include "modules/reference/forward_lights.h"
 #include "modules/reference/sampling.h"
+#include "modules/reference/sun_light.h"
 #include "servers/rendering/renderer_scene_render.h"
 #include "servers/rendering/storage/light_storage.h"
 #include "servers/rendering/storage/material_storage.h"
@@ -43,6 +44,9 @@ struct ReferenceRenderOptions {
 	// Trace shadow rays (hard shadows for omni and spot lights, one ray per sample of an area light).
 	// Off: every light is unoccluded, as in the GPU renderer, which has no shadows yet.
 	bool shadows = false;
+	// Samples of each directional light's disk per pixel (jittered strata; 0 angular size: one exact
+	// evaluation). Rounded down to a square.
+	int sun_samples = 64;
 	// Worker threads; 0 = std::thread::hardware_concurrency().
 	int threads = 0;
 	// Seed of the per-pixel random generators (same seed: bit-identical image).
@@ -138,6 +142,7 @@ private:
 		RS::LightType type = RS::LIGHT_OMNI;
 		ReferenceBRDF::LightData data; // Omni and spot.
 		ReferenceBRDF::AreaLightData area; // LIGHT_AREA.
+		ReferenceBRDF::DirectionalLightData sun; // LIGHT_DIRECTIONAL.
 	};
 
 	struct Frame; // Everything render_scene() sets up for the workers (Embree scene, camera, lights).

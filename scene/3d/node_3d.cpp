@@ -158,6 +158,38 @@ void Node3D::look_at(const Vector3 &p_target, const Vector3 &p_up) {
 	set_global_transform(Transform3D(Basis::looking_at(dir, p_up) * Basis::from_scale(s), g.origin));
 }
 
+void Node3D::rotate(const Vector3 &p_axis, real_t p_angle) {
+	ERR_FAIL_COND_MSG(p_axis.length_squared() < real_t(CMP_EPSILON), vformat("Node3D \"%s\": rotate() needs a non-zero axis.", get_name().c_str()));
+	Transform3D t = get_transform();
+	t.basis = Basis::from_axis_angle(p_axis.normalized(), p_angle) * t.basis;
+	set_transform(t);
+}
+
+void Node3D::rotate_object_local(const Vector3 &p_axis, real_t p_angle) {
+	ERR_FAIL_COND_MSG(p_axis.length_squared() < real_t(CMP_EPSILON), vformat("Node3D \"%s\": rotate_object_local() needs a non-zero axis.", get_name().c_str()));
+	Transform3D t = get_transform();
+	t.basis = t.basis * Basis::from_axis_angle(p_axis.normalized(), p_angle);
+	set_transform(t);
+}
+
+void Node3D::scale_object_local(const Vector3 &p_scale) {
+	Transform3D t = get_transform();
+	t.basis = t.basis * Basis::from_scale(p_scale);
+	set_transform(t);
+}
+
+void Node3D::translate(const Vector3 &p_offset) {
+	Transform3D t = get_transform();
+	t.origin = t.origin + t.basis.xform(p_offset);
+	set_transform(t);
+}
+
+void Node3D::global_translate(const Vector3 &p_offset) {
+	Transform3D g = get_global_transform();
+	g.origin = g.origin + p_offset;
+	set_global_transform(g);
+}
+
 void Node3D::set_visible(bool p_visible) {
 	if (visible == p_visible) {
 		return;
@@ -217,7 +249,20 @@ void Node3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("set_visible", "visible"), &Node3D::set_visible);
 	ClassDB::bind_method(D_METHOD("is_visible"), &Node3D::is_visible);
 	ClassDB::bind_method(D_METHOD("is_visible_in_tree"), &Node3D::is_visible_in_tree);
-	ClassDB::bind_method(D_METHOD("look_at", "target", "up"), &Node3D::look_at);
+	ClassDB::bind_method(D_METHOD("look_at", "target", "up"), &Node3D::look_at, DEFVAL(Vector3(0, 1, 0)));
+	ClassDB::bind_method(D_METHOD("rotate", "axis", "angle"), &Node3D::rotate);
+	ClassDB::bind_method(D_METHOD("rotate_x", "angle"), &Node3D::rotate_x);
+	ClassDB::bind_method(D_METHOD("rotate_y", "angle"), &Node3D::rotate_y);
+	ClassDB::bind_method(D_METHOD("rotate_z", "angle"), &Node3D::rotate_z);
+	ClassDB::bind_method(D_METHOD("rotate_object_local", "axis", "angle"), &Node3D::rotate_object_local);
+	ClassDB::bind_method(D_METHOD("scale_object_local", "scale"), &Node3D::scale_object_local);
+	ClassDB::bind_method(D_METHOD("translate", "offset"), &Node3D::translate);
+	ClassDB::bind_method(D_METHOD("translate_object_local", "offset"), &Node3D::translate_object_local);
+	ClassDB::bind_method(D_METHOD("global_translate", "offset"), &Node3D::global_translate);
+	ClassDB::bind_method(D_METHOD("to_global", "local_point"), &Node3D::to_global);
+	ClassDB::bind_method(D_METHOD("to_local", "global_point"), &Node3D::to_local);
+	ClassDB::bind_method(D_METHOD("show"), &Node3D::show);
+	ClassDB::bind_method(D_METHOD("hide"), &Node3D::hide);
 
 	// Godot 4 order and usages: only `transform` is saved; the editor edits the views.
 	ADD_GROUP("Transform", "");

@@ -69,6 +69,22 @@ public:
 	// Rotates so that local -Z points at p_target (global), +Y towards p_up.
 	void look_at(const Vector3 &p_target, const Vector3 &p_up = Vector3(0, 1, 0));
 
+	// Godot's Node3D helpers. Rotations are about the parent's axes (rotate, rotate_x/y/z) or
+	// the node's own axes (rotate_object_local); translate moves along the node's own axes,
+	// global_translate along the world's. Angles in radians.
+	void rotate(const Vector3 &p_axis, real_t p_angle);
+	void rotate_x(real_t p_angle) { rotate(Vector3(1, 0, 0), p_angle); }
+	void rotate_y(real_t p_angle) { rotate(Vector3(0, 1, 0), p_angle); }
+	void rotate_z(real_t p_angle) { rotate(Vector3(0, 0, 1), p_angle); }
+	void rotate_object_local(const Vector3 &p_axis, real_t p_angle);
+	void scale_object_local(const Vector3 &p_scale);
+	void translate(const Vector3 &p_offset);
+	void translate_object_local(const Vector3 &p_offset) { translate(p_offset); }
+	void global_translate(const Vector3 &p_offset);
+	// A point from this node's local space to global space and back.
+	Vector3 to_global(const Vector3 &p_local_point) const { return get_global_transform().xform(p_local_point); }
+	Vector3 to_local(const Vector3 &p_global_point) const { return get_global_transform().affine_inverse().xform(p_global_point); }
+
 	void set_visible(bool p_visible);
 	bool is_visible() const { return visible; }
 	// Visible and every Node3D ancestor visible.

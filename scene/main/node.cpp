@@ -25,6 +25,8 @@ void Node::set_name(const String &p_name) {
 	}
 	if (parent) {
 		fixed = parent->_validate_child_name(fixed, this);
+		parent->children_by_name.erase(name);
+		parent->children_by_name[fixed] = this;
 	}
 	name = fixed;
 }
@@ -34,14 +36,8 @@ String Node::_validate_child_name(const String &p_name, const Node *p_child) con
 	String candidate = base;
 	int number = 2;
 	while (true) {
-		bool taken = false;
-		for (const Node *c : children) {
-			if (c != p_child && c->name == candidate) {
-				taken = true;
-				break;
-			}
-		}
-		if (!taken) {
+		auto it = children_by_name.find(candidate);
+		if (it == children_by_name.end() || it->second == p_child) {
 			return candidate;
 		}
 		candidate = base + itos(number++);
@@ -58,6 +54,7 @@ void Node::add_child(Node *p_child) {
 	p_child->name = _validate_child_name(p_child->name, p_child);
 	p_child->parent = this;
 	children.push_back(p_child);
+	children_by_name[p_child->name] = p_child;
 	p_child->notification(NOTIFICATION_PARENTED);
 	if (tree) {
 		p_child->_propagate_enter_tree(tree);
@@ -77,6 +74,7 @@ void Node::remove_child(Node *p_child) {
 			break;
 		}
 	}
+	children_by_name.erase(p_child->name);
 	p_child->parent = nullptr;
 	p_child->notification(NOTIFICATION_UNPARENTED);
 }
@@ -256,6 +254,12 @@ void Node::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_node_or_null", "path"), &Node::get_node_or_null);
 	ClassDB::bind_method(D_METHOD("has_node", "path"), &Node::has_node);
 	ClassDB::bind_method(D_METHOD("is_inside_tree"), &Node::is_inside_tree);
+	ClassDB::bind_method(D_METHOD("add_to_group", "group"), &Node::add_to_group);
+	ClassDB::bind_method(D_METHOD("remove_from_group", "group"), &Node::remove_from_group);
+	ClassDB::bind_method(D_METHOD("is_in_group", "group"), &Node::is_in_group);
+	ClassDB::bind_method(D_METHOD("queue_free"), &Node::queue_free);
+	ClassDB::bind_method(D_METHOD("is_queued_for_deletion"), &Node::is_queued_for_deletion);
+	ClassDB::bind_method(D_METHOD("duplicate"), &Node::duplicate);
 
 	// Godot saves the name in the [node name="..."] header, not as a property; it is bound
 	// (without storage) so scripts and tools can read it.
@@ -268,9 +272,93 @@ void Node::_bind_methods() {
 	BIND_CONSTANT(NOTIFICATION_UNPARENTED);
 }
 
+void Node::add_to_group(const String &p_group) {
+	ERR_FAIL_COND_MSG(p_group.empty(), vformat("Node \"%s\": add_to_group() needs a group name.", name.c_str()));
+	if (!is_in_group(p_group)) {
+		groups.push_back(p_group);
+	}
+}
+
+void Node::remove_from_group(const String &p_group) {
+	for (size_t i = 0; i < groups.size(); i++) {
+		if (groups[i] == p_group) {
+			groups.erase(groups.begin() + i);
+			return;
+		}
+	}
+	ERR_FAIL_MSG(vformat("Node \"%s\" is not in group \"%s\".", name.c_str(), p_group.c_str()));
+}
+
+bool Node::is_in_group(const String &p_group) const {
+	for (const String &g : groups) {
+		if (g == p_group) {
+			return true;
+		}
+	}
+	return false;
+}
+
+namespace {
+std::vector<Node *> delete_queue;
+} // namespace
+
+void (*Node::predelete_callback)(Node *p_node) = nullptr;
+
+void Node::queue_free() {
+	if (!queued_for_deletion) {
+		queued_for_deletion = true;
+		delete_queue.push_back(this);
+	}
+}
+
+void Node::flush_delete_queue() {
+	// A deleted node's queued descendants leave the queue in their destructors.
+	while (!delete_queue.empty()) {
+		Node *node = delete_queue.front();
+		delete_queue.erase(delete_queue.begin());
+		node->queued_for_deletion = false;
+		if (node->parent) {
+			node->parent->remove_child(node);
+		}
+		delete node;
+	}
+}
+
+Node *Node::duplicate() const {
+	Node *copy = dynamic_cast<Node *>(ClassDB::instantiate(get_class()));
+	ERR_FAIL_NULL_V_MSG(copy, nullptr, vformat("Node \"%s\": cannot duplicate a %s.", name.c_str(), get_class().c_str()));
+	std::vector<PropertyInfo> list;
+	get_property_list(&list);
+	for (const PropertyInfo &pi : list) {
+		if (!pi.is_group_marker() && (pi.usage & PROPERTY_USAGE_STORAGE)) {
+			copy->set(pi.name, get(pi.name));
+		}
+	}
+	copy->set_name(name);
+	copy->groups = groups;
+	for (const Node *child : children) {
+		Node *child_copy = child->duplicate();
+		if (child_copy) {
+			copy->add_child(child_copy);
+		}
+	}
+	return copy;
+}
+
 Node::Node() {}
 
 Node::~Node() {
+	if (predelete_callback) {
+		predelete_callback(this);
+	}
+	if (queued_for_deletion) {
+		for (size_t i = 0; i < delete_queue.size(); i++) {
+			if (delete_queue[i] == this) {
+				delete_queue.erase(delete_queue.begin() + i);
+				break;
+			}
+		}
+	}
 	// Derived destructors have already run, so only the children (still whole) can be
 	// told that they leave the tree.
 	std::vector<Node *> list = children;
@@ -282,6 +370,7 @@ Node::~Node() {
 		}
 	}
 	children.clear();
+	children_by_name.clear();
 	for (Node *c : list) {
 		c->parent = nullptr;
 		delete c;
@@ -294,6 +383,7 @@ Node::~Node() {
 				break;
 			}
 		}
+		parent->children_by_name.erase(name);
 		parent = nullptr;
 	}
 }

@@ -31,6 +31,7 @@ void SceneTree::set_size(int p_width, int p_height) {
 Image SceneTree::render() {
 	RS *rs = RS::get_singleton();
 	ERR_FAIL_NULL_V_MSG(rs, Image(), "SceneTree::render() needs a RenderingServer.");
+	Node::flush_delete_queue(); // Nodes queue_free()d since the last frame.
 	rs->draw();
 	return rs->viewport_get_texture_data(viewport);
 }
@@ -38,6 +39,7 @@ Image SceneTree::render() {
 Image SceneTree::render_settled(int p_max_frames, int *r_frames) {
 	RS *rs = RS::get_singleton();
 	ERR_FAIL_NULL_V_MSG(rs, Image(), "SceneTree::render_settled() needs a RenderingServer.");
+	Node::flush_delete_queue(); // Nodes queue_free()d since the last frame.
 	int frames = 0;
 	do {
 		rs->draw();

@@ -68,10 +68,52 @@ void Environment::set_ambient_light_energy(float p_energy) {
 	_update_ambient_light();
 }
 
+void Environment::set_tonemapper(ToneMapper p_mode) {
+	ERR_FAIL_INDEX_MSG((int)p_mode, TONE_MAPPER_MAX, vformat("tonemap_mode must be 0..%d (Linear, Reinhard, Filmic, ACES, AgX); got %d. The old value is kept.", TONE_MAPPER_MAX - 1, (int)p_mode));
+	tonemap_mode = p_mode;
+	notify_property_list_changed();
+	emit_changed();
+}
+
+void Environment::set_tonemap_exposure(float p_exposure) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_exposure) || p_exposure <= 0.0f, vformat("tonemap_exposure must be finite and > 0 (got %s); the old value is kept.", rtos(p_exposure).c_str()));
+	tonemap_exposure = p_exposure;
+	emit_changed();
+}
+
+void Environment::set_tonemap_white(float p_white) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_white) || p_white <= 0.0f, vformat("tonemap_white must be finite and > 0 (got %s); the old value is kept.", rtos(p_white).c_str()));
+	tonemap_white = p_white;
+	emit_changed();
+}
+
+Tonemap::Settings Environment::get_tonemap_settings() const {
+	Tonemap::Settings settings;
+	Tonemap::mode_from_godot(int(tonemap_mode), settings.mode);
+	settings.exposure = tonemap_exposure;
+	settings.white = tonemap_white;
+	return settings;
+}
+
+Tonemap::Settings Environment::get_preview_tonemap(const Ref<Environment> &p_camera_environment, const Ref<Environment> &p_world_environment) {
+	if (p_camera_environment.is_valid()) {
+		return p_camera_environment->get_tonemap_settings();
+	}
+	if (p_world_environment.is_valid()) {
+		return p_world_environment->get_tonemap_settings();
+	}
+	Tonemap::Settings preview;
+	preview.mode = Tonemap::MODE_ACES_FITTED;
+	return preview;
+}
+
 void Environment::_validate_property(PropertyInfo &p_property) const {
 	// As Godot: background_color only matters for Custom Color; ambient colour/energy not when disabled.
 	if (p_property.name == "background_color" && bg_mode != BG_COLOR) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	if (p_property.name == "tonemap_white" && (tonemap_mode == TONE_MAPPER_LINEAR || tonemap_mode == TONE_MAPPER_AGX)) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR; // As Godot: no white point for these two.
 	}
 	if ((p_property.name == "ambient_light_color" || p_property.name == "ambient_light_energy") && ambient_source == AMBIENT_SOURCE_DISABLED) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
@@ -101,6 +143,16 @@ void Environment::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "ambient_light_source", PROPERTY_HINT_ENUM, "Background,Disabled,Color,Sky"), "set_ambient_source", "get_ambient_source");
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "ambient_light_color", PROPERTY_HINT_COLOR_NO_ALPHA), "set_ambient_light_color", "get_ambient_light_color");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ambient_light_energy", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_ambient_light_energy", "get_ambient_light_energy");
+	ClassDB::bind_method(D_METHOD("set_tonemapper", "mode"), &Environment::set_tonemapper);
+	ClassDB::bind_method(D_METHOD("get_tonemapper"), &Environment::get_tonemapper);
+	ClassDB::bind_method(D_METHOD("set_tonemap_exposure", "exposure"), &Environment::set_tonemap_exposure);
+	ClassDB::bind_method(D_METHOD("get_tonemap_exposure"), &Environment::get_tonemap_exposure);
+	ClassDB::bind_method(D_METHOD("set_tonemap_white", "white"), &Environment::set_tonemap_white);
+	ClassDB::bind_method(D_METHOD("get_tonemap_white"), &Environment::get_tonemap_white);
+	ADD_GROUP("Tonemap", "tonemap_");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "tonemap_mode", PROPERTY_HINT_ENUM, "Linear,Reinhard,Filmic,ACES,AgX"), "set_tonemapper", "get_tonemapper");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "tonemap_exposure", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_tonemap_exposure", "get_tonemap_exposure");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "tonemap_white", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_tonemap_white", "get_tonemap_white");
 	ADD_GROUP("", "");
 
 	BIND_ENUM_CONSTANT(BG_CLEAR_COLOR);
@@ -114,6 +166,11 @@ void Environment::_bind_methods() {
 	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_DISABLED);
 	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_COLOR);
 	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_SKY);
+	BIND_ENUM_CONSTANT(TONE_MAPPER_LINEAR);
+	BIND_ENUM_CONSTANT(TONE_MAPPER_REINHARDT);
+	BIND_ENUM_CONSTANT(TONE_MAPPER_FILMIC);
+	BIND_ENUM_CONSTANT(TONE_MAPPER_ACES);
+	BIND_ENUM_CONSTANT(TONE_MAPPER_AGX);
 }
 
 Environment::Environment() {

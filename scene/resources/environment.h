@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/io/resource.h"
+#include "core/io/tonemap.h"
 #include "servers/rendering_server.h"
 
 class Environment : public Resource {
@@ -31,6 +32,15 @@ public:
 		AMBIENT_SOURCE_SKY = RS::ENV_AMBIENT_SOURCE_SKY,
 		AMBIENT_SOURCE_MAX
 	};
+	// Godot's Environment.ToneMapper (tonemap_mode), same order and values.
+	enum ToneMapper {
+		TONE_MAPPER_LINEAR,
+		TONE_MAPPER_REINHARDT,
+		TONE_MAPPER_FILMIC,
+		TONE_MAPPER_ACES,
+		TONE_MAPPER_AGX,
+		TONE_MAPPER_MAX
+	};
 
 private:
 	RID environment;
@@ -40,6 +50,9 @@ private:
 	AmbientSource ambient_source = AMBIENT_SOURCE_BG;
 	Color ambient_color = Color(0, 0, 0, 1);
 	float ambient_energy = 1.0f;
+	ToneMapper tonemap_mode = TONE_MAPPER_LINEAR;
+	float tonemap_exposure = 1.0f;
+	float tonemap_white = 1.0f;
 
 	void _update_ambient_light();
 
@@ -66,9 +79,25 @@ public:
 	void set_ambient_light_energy(float p_energy);
 	float get_ambient_light_energy() const { return ambient_energy; }
 
+	// Tonemapping of the 8-bit previews (PNG, editor viewport); the HDR image and EXR stay scene-linear.
+	void set_tonemapper(ToneMapper p_mode);
+	ToneMapper get_tonemapper() const { return tonemap_mode; }
+	// Finite and > 0.
+	void set_tonemap_exposure(float p_exposure);
+	float get_tonemap_exposure() const { return tonemap_exposure; }
+	// Finite and > 0 (Reinhard, Filmic and ACES; Linear and AgX ignore it, as Godot).
+	void set_tonemap_white(float p_white);
+	float get_tonemap_white() const { return tonemap_white; }
+	// The three values above as core/io/tonemap.h settings.
+	Tonemap::Settings get_tonemap_settings() const;
+	// The tonemap of an 8-bit preview of a view: the camera's environment, else the world's (as the renderer
+	// resolves them), else Tonemap::MODE_ACES_FITTED (godot-area's preview for scenes without an Environment).
+	static Tonemap::Settings get_preview_tonemap(const Ref<Environment> &p_camera_environment, const Ref<Environment> &p_world_environment);
+
 	Environment();
 	~Environment() override;
 };
 
 VARIANT_ENUM_CAST(Environment::BGMode);
 VARIANT_ENUM_CAST(Environment::AmbientSource);
+VARIANT_ENUM_CAST(Environment::ToneMapper);

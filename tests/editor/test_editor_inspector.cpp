@@ -14,6 +14,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 namespace TestEditorInspector {
 
 using SceneTest::DummyServer;
@@ -80,7 +82,8 @@ TEST_CASE("[EditorInspector] AreaLight3D rows follow its ClassDB property list, 
 
 	// Hidden properties are not rows.
 	CHECK(inspector.find_row("name") == -1);
-	CHECK(inspector.find_row("light_size") == -1); // Punctual size, hidden on area lights.
+	CHECK(inspector.find_row("light_projector") == -1); // Hidden on area lights (upstream: area_texture instead).
+	CHECK(inspector.find_row("light_size") >= 0); // Shown on area lights, as upstream Godot 4.7 does.
 	CHECK(inspector.find_row("shadow_bias") == -1); // Shadows are off.
 	CHECK(inspector.find_row("area_shadow_mode") == -1);
 	CHECK(inspector.find_row("no_such_property") == -1);
@@ -241,7 +244,7 @@ TEST_CASE("[EditorInspector] A rejected value keeps the old value and leaves the
 
 	{
 		ErrorCatcher errors;
-		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(-1, 1)));
+		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(NAN, 1))); // Negative components are clamped (upstream); NaN is refused.
 		CHECK(errors.contains("area_size"));
 		CHECK(inspector.get_last_error().find("area_size") != String::npos);
 	}
@@ -315,7 +318,7 @@ TEST_CASE("[EditorInspector] A slider drag merges into one action") {
 	// A rejected value in a drag changes nothing.
 	{
 		ErrorCatcher errors;
-		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(-2, -2), true));
+		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(INFINITY, -2), true));
 	}
 	CHECK(undo_redo.get_history_count() == 4);
 
@@ -403,6 +406,69 @@ TEST_CASE("[EditorInspector] Subgroups, read-only rows, prefixes and hint parsin
 	CHECK(row.has_range);
 	CHECK(row.range_step == doctest::Approx(1.0));
 	undo_redo.clear_history();
+}
+
+TEST_CASE("[EditorInspector] AreaLight3D hides the projector, and the stochastic samples unless a method takes them") {
+	DummyServer server;
+	ErrorCatcher errors;
+	AreaLight3D *light = new AreaLight3D;
+	UndoRedo undo_redo;
+	EditorInspector inspector;
+	inspector.set_undo_redo(&undo_redo);
+	inspector.edit(light);
+	// Exactly what _validate_property says: the rows are the EDITOR entries of the property list.
+	CHECK(inspector.find_row("light_projector") == -1);
+	CHECK(inspector.find_row("area_stochastic_samples") == -1); // LTC by default.
+	REQUIRE(inspector.set_row_value(inspector.find_row("area_shading_method"), (int64_t)AreaLight3D::AREA_SHADING_STOCHASTIC));
+	inspector.refresh();
+	CHECK(inspector.find_row("area_stochastic_samples") >= 0);
+	REQUIRE(inspector.set_row_value(inspector.find_row("area_shading_method"), (int64_t)AreaLight3D::AREA_SHADING_AUTO));
+	inspector.refresh();
+	CHECK(inspector.find_row("area_stochastic_samples") >= 0); // AUTO may pick the stochastic method.
+	REQUIRE(inspector.set_row_value(inspector.find_row("area_shading_method"), (int64_t)AreaLight3D::AREA_SHADING_MRP));
+	inspector.refresh();
+	CHECK(inspector.find_row("area_stochastic_samples") == -1);
+	// Hidden from the inspector, still saved (a scene's value is not dropped).
+	std::vector<PropertyInfo> list;
+	light->get_property_list(&list);
+	int stored = 0;
+	for (const PropertyInfo &pi : list) {
+		if (pi.name == "light_projector" || pi.name == "area_stochastic_samples") {
+			stored += (pi.usage & PROPERTY_USAGE_STORAGE) ? 1 : 0;
+		}
+	}
+	CHECK(stored == 2);
+	// Omni lights keep their projector row.
+	OmniLight3D *omni = new OmniLight3D;
+	inspector.edit(omni);
+	CHECK(inspector.find_row("light_projector") >= 0);
+	inspector.edit(nullptr);
+	delete omni;
+	delete light;
+	CHECK(errors.messages.empty());
+}
+
+TEST_CASE("[EditorInspector] Layer masks: 20-layer grid, unsigned values, one bit toggled") {
+	DummyServer server;
+	AreaLight3D *light = new AreaLight3D;
+	EditorInspector inspector;
+	inspector.edit(light);
+	const int row = inspector.find_row("light_cull_mask");
+	REQUIRE(row >= 0);
+	CHECK(EditorInspector::get_layer_count(inspector.get_row(row).hint) == 20);
+	CHECK(EditorInspector::get_layer_count(PROPERTY_HINT_RANGE) == 0);
+	// The default mask is all layers: shown as 0xFFFFFFFF, never as a signed -1.
+	CHECK(EditorInspector::get_layer_mask(inspector.get_row_value(row)) == 0xFFFFFFFFu);
+	CHECK(EditorInspector::get_layer_mask(Variant((int64_t)-1)) == 0xFFFFFFFFu);
+	// Toggling layer 2 (bit 1) clears only that bit; the light takes the value.
+	const int64_t toggled = EditorInspector::toggle_layer(inspector.get_row_value(row), 1);
+	CHECK(toggled == (int64_t)0xFFFFFFFDu);
+	REQUIRE(inspector.set_row_value(row, toggled));
+	CHECK(light->get_cull_mask() == 0xFFFFFFFDu);
+	CHECK(EditorInspector::toggle_layer(Variant(toggled), 1) == (int64_t)0xFFFFFFFFu);
+	CHECK(EditorInspector::toggle_layer(Variant((int64_t)0), 19) == (int64_t)(1 << 19));
+	inspector.edit(nullptr);
+	delete light;
 }
 
 } // namespace TestEditorInspector

@@ -409,4 +409,76 @@ TEST_CASE("[SceneTree] a scene reaches the renderer: camera, visible geometry, l
 	delete tree;
 }
 
+TEST_CASE("[Node3D] rotate, translate, to_global/to_local as Godot's helpers") {
+	DummyServer server;
+	ErrorCatcher errors;
+	Node3D *parent = new Node3D;
+	parent->set_position(Vector3(10, 0, 0));
+	Node3D *node = new Node3D;
+	parent->add_child(node);
+	node->rotate_y(real_t(Math::PI / 2));
+	CHECK(node->get_rotation().is_equal_approx(Vector3(0, real_t(Math::PI / 2), 0)));
+	// translate() moves along the node's own axes: local -Z is world -X after the turn.
+	node->translate(Vector3(0, 0, -1));
+	CHECK(node->get_position().is_equal_approx(Vector3(-1, 0, 0)));
+	node->global_translate(Vector3(0, 2, 0));
+	CHECK(node->get_global_position().is_equal_approx(Vector3(9, 2, 0)));
+	CHECK(node->to_global(Vector3(0, 0, -1)).is_equal_approx(Vector3(8, 2, 0)));
+	CHECK(node->to_local(Vector3(8, 2, 0)).is_equal_approx(Vector3(0, 0, -1)));
+	// About its own X axis: local +Y turns to local +Z, which is parent +X after the turn.
+	node->rotate_object_local(Vector3(1, 0, 0), real_t(Math::PI / 2));
+	CHECK(node->get_transform().basis.xform(Vector3(0, 1, 0)).is_equal_approx(Vector3(1, 0, 0)));
+	CHECK(errors.messages.size() == 0);
+	node->rotate(Vector3(), 1); // A zero axis is an error, the transform is kept.
+	CHECK(errors.messages.size() == 1);
+	delete parent;
+}
+
+TEST_CASE("[Node] groups, duplicate and queue_free") {
+	DummyServer server;
+	ErrorCatcher errors;
+	Node3D *node = new Node3D;
+	node->set_name("Lamp");
+	node->set_position(Vector3(1, 2, 3));
+	node->add_to_group("lights");
+	node->add_to_group("lights"); // Once only.
+	CHECK(node->is_in_group("lights"));
+	CHECK(node->get_groups().size() == 1);
+	Node3D *child = new Node3D;
+	child->set_name("Child");
+	node->add_child(child);
+
+	Node *copy = node->duplicate();
+	REQUIRE(copy != nullptr);
+	CHECK(copy->get_class() == "Node3D");
+	CHECK(copy->get_name() == "Lamp");
+	CHECK(static_cast<Node3D *>(copy)->get_position().is_equal_approx(Vector3(1, 2, 3)));
+	CHECK(copy->is_in_group("lights"));
+	REQUIRE(copy->get_child_count() == 1);
+	CHECK(copy->get_child(0) != child);
+	CHECK(copy->get_child(0)->get_name() == "Child");
+
+	node->remove_from_group("lights");
+	CHECK(!node->is_in_group("lights"));
+	CHECK(errors.messages.size() == 0);
+	node->remove_from_group("lights");
+	CHECK(errors.messages.size() == 1);
+
+	// queue_free(): deleted at the next flush (SceneTree runs it before drawing), not at once;
+	// a queued node deleted by its parent first leaves the queue.
+	static std::vector<Node *> deleted;
+	deleted.clear();
+	Node::predelete_callback = [](Node *p_node) { deleted.push_back(p_node); };
+	copy->get_child(0)->queue_free();
+	copy->queue_free();
+	CHECK(copy->is_queued_for_deletion());
+	CHECK(deleted.empty());
+	Node::flush_delete_queue();
+	CHECK(deleted.size() == 2);
+	Node::flush_delete_queue(); // Nothing left.
+	CHECK(deleted.size() == 2);
+	Node::predelete_callback = nullptr;
+	delete node;
+}
+
 } // namespace TestNode3D

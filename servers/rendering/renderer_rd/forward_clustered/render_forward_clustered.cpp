@@ -60,7 +60,10 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	if (initialized) {
 		return true;
 	}
-	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
+	// Indexed by SceneShaderVariant. The brute-force and debug variants are compiled on first use only.
+	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n", "#define MODE_FORCE_ALL_LIGHTS\n",
+		"#define USE_AREA_LIGHTS\n#define MODE_FORCE_ALL_LIGHTS\n", "#define MODE_DEBUG_CLUSTER\n", "#define USE_AREA_LIGHTS\n#define MODE_DEBUG_CLUSTER\n" };
+	static_assert(SCENE_SHADER_MAX == 7, "One variant define per SceneShaderVariant.");
 	const String general_defines = area_ltc_precision_fix ? "" : "#define AREA_LTC_NO_PRECISION_FIX\n";
 	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants, general_defines), false,
 			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
@@ -106,6 +109,7 @@ void RenderForwardClustered::finalize() {
 	scene_set_cluster_buffer = RID();
 	area_versions.clear(); // Their shaders are freed by scene_shader.clear(), their sets with scene_ubo.
 	compiled_area_method_mask = 0;
+	compiled_feature_mask = 0;
 	ltc_lut.finalize();
 	area_shadows.finalize();
 	cluster_builder.finalize();
@@ -228,22 +232,37 @@ bool RenderForwardClustered::is_scene_shader_variant_compiled(SceneShaderVariant
 int RenderForwardClustered::get_area_shader_version_count() const {
 	int count = 0;
 	for (const auto &kv : area_versions) {
-		count += kv.second.scene_set.is_valid() ? 1 : 0;
+		count += (kv.second.scene_set.is_valid() && (kv.first & AREA_VERSION_METHOD_BITS) != 0) ? 1 : 0;
 	}
 	return count;
 }
 
-RID RenderForwardClustered::_get_area_shader(uint32_t p_area_methods) {
-	const uint32_t valid_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
-	ERR_FAIL_COND_V_MSG((p_area_methods & AREA_VERSION_METHOD_BITS) == 0 || (p_area_methods & ~valid_bits) != 0, RID(),
-			vformat("RenderForwardClustered: invalid area shader version key 0x%x (shading method mask | shadow bits).", p_area_methods));
-	AreaVersion &av = area_versions[p_area_methods];
-	if (!av.version.is_valid()) {
-		av.version = scene_shader.version_create(get_area_method_defines(p_area_methods));
+String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
+	String defines = get_area_method_defines(p_key);
+	if (p_key & SCENE_VERSION_DIRECTIONAL) {
+		defines += "#define USE_DIRECTIONAL_LIGHTS\n";
 	}
-	RID shader = scene_shader.version_get_shader(av.version, SCENE_SHADER_COLOR_AREA);
-	if (shader.is_valid()) {
-		compiled_area_method_mask |= p_area_methods & AREA_VERSION_METHOD_BITS;
+	return defines;
+}
+
+RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVariant p_variant) {
+	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
+	const uint32_t valid_bits = area_bits | SCENE_VERSION_FEATURE_BITS;
+	const bool has_area = (p_key & AREA_VERSION_METHOD_BITS) != 0;
+	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0) || has_area != _is_area_variant(p_variant), RID(),
+			vformat("RenderForwardClustered: invalid scene shader version key 0x%x for variant %d (area method mask | area shadow bits | feature bits).", p_key, int(p_variant)));
+	if (p_key == 0) {
+		return scene_shader.version_get_shader(p_variant);
+	}
+	AreaVersion &av = area_versions[p_key];
+	if (!av.version.is_valid()) {
+		av.version = scene_shader.version_create(get_scene_version_defines(p_key));
+	}
+	RID shader = scene_shader.version_get_shader(av.version, p_variant);
+	// Only the production variants count as compiled code (brute force and debug views are variants of their own).
+	if (shader.is_valid() && (p_variant == SCENE_SHADER_COLOR_AREA || p_variant == SCENE_SHADER_COLOR)) {
+		compiled_area_method_mask |= p_key & AREA_VERSION_METHOD_BITS;
+		compiled_feature_mask |= p_key & SCENE_VERSION_FEATURE_BITS;
 	}
 	return shader;
 }
@@ -271,7 +290,7 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
 	}
 	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(p_variant == SCENE_SHADER_DEPTH ? 0 : 1);
-	RID shader = p_variant == SCENE_SHADER_COLOR_AREA ? _get_area_shader(p_area_methods) : scene_shader.version_get_shader(p_variant);
+	RID shader = p_variant == SCENE_SHADER_DEPTH ? scene_shader.version_get_shader(p_variant) : _get_version_shader(p_area_methods, p_variant);
 	ERR_FAIL_COND_V_MSG(!shader.is_valid(), RID(), "RenderForwardClustered: the scene shader for this pipeline failed to compile: " + scene_shader.get_last_error());
 	RID pipeline = rd->render_pipeline_create(shader, p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
 	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), RID(), "RenderForwardClustered: render pipeline creation failed.");
@@ -282,33 +301,45 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	RID cluster_buffer = cluster_builder.get_cluster_buffer();
+	const bool has_area = (p_area_methods & AREA_VERSION_METHOD_BITS) != 0;
 	if (p_area_methods != 0) {
-		if (!ltc_lut.is_initialized()) {
+		if (has_area && !ltc_lut.is_initialized()) {
 			ERR_FAIL_COND_V_MSG(!ltc_lut.initialize(), false, "RenderForwardClustered: the LTC lookup table could not be created.");
 		}
-		RID shader = _get_area_shader(p_area_methods);
+		// All colour variants declare the same bindings: the production one gives the set layout.
+		RID shader = _get_version_shader(p_area_methods, has_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR);
 		AreaVersion &av = area_versions[p_area_methods];
-		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == area_shadows.get_atlas_texture();
+		const RID shadow_atlas = has_area ? area_shadows.get_atlas_texture() : RID();
+		const RID directional_buffer = (p_area_methods & SCENE_VERSION_DIRECTIONAL) ? light_storage->get_directional_light_buffer() : RID();
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer;
 		if (!area_ok) {
 			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
 				rd->free(av.scene_set);
 			}
-			ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "RenderForwardClustered: the area-light scene shader variant failed to compile: " + scene_shader.get_last_error());
+			ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "RenderForwardClustered: the scene shader version failed to compile: " + scene_shader.get_last_error());
 			std::vector<RD::Uniform> u;
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, scene_ubo));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, light_storage->get_omni_light_buffer()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, light_storage->get_spot_light_buffer()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, cluster_buffer));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 4, material_storage->get_sampler()));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, light_storage->get_area_light_buffer()));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 6, ltc_lut.get_texture()));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 7, ltc_lut.get_sampler()));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 12, area_shadows.get_data_buffer()));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 13, area_shadows.get_atlas_texture()));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 14, area_shadows.get_sampler()));
+			if (has_area) {
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, light_storage->get_area_light_buffer()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 6, ltc_lut.get_texture()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 7, ltc_lut.get_sampler()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 12, area_shadows.get_data_buffer()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 13, area_shadows.get_atlas_texture()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 14, area_shadows.get_sampler()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 15, area_shadows.get_compare_sampler()));
+			}
+			if (p_area_methods & SCENE_VERSION_DIRECTIONAL) {
+				ERR_FAIL_COND_V_MSG(!directional_buffer.is_valid(), false, "RenderForwardClustered: a directional version without the directional light buffer.");
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 8, directional_buffer));
+			}
 			av.scene_set = rd->uniform_set_create(u, shader, 0);
 			av.scene_set_cluster_buffer = cluster_buffer;
-			av.scene_set_shadow_atlas = area_shadows.get_atlas_texture();
+			av.scene_set_shadow_atlas = shadow_atlas;
+			av.scene_set_directional_buffer = directional_buffer;
 		}
 		if (!av.scene_set.is_valid()) {
 			return false;
@@ -346,7 +377,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	// ADAPTIVE area shadows: apply the newest completed frame's banding flags before this frame records
 	// anything (the readback then waits for no work of this frame).
 	last_area_shadow_tests = 0;
-	area_shadows.begin_frame(p_render_target);
+	const bool area_code = !area_code_disabled;
+	if (area_code) {
+		area_shadows.begin_frame(p_render_target);
+	}
 
 	ERR_FAIL_COND_MSG(!cluster_builder.setup(rt->width, rt->height), "render_scene: cluster setup failed.");
 
@@ -357,10 +391,15 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	cluster_builder.begin(clip_from_view, z_far);
 	// AUTO area lights pick their method from the receivers inside their influence box (AreaMethodSelector).
-	light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
+	if (area_code) {
+		light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
+	}
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
+	light_storage->update_directional_light_buffer(p_data.directional_lights, view_from_world);
 	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
-	area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
+	if (area_code) {
+		area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
+	}
 
 	SceneDataUBO ubo;
 	memset(&ubo, 0, sizeof(ubo));
@@ -383,7 +422,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.cluster_tiles_x = cluster_builder.get_tiles_x();
 	ubo.cluster_tile_count = cluster_builder.get_tiles_x() * cluster_builder.get_tiles_y();
 	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
-	ubo.area_light_count = light_storage->get_area_light_count();
+	ubo.area_light_count = area_code ? light_storage->get_area_light_count() : 0u;
 	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
 	int cluster_debug = debug_cluster_type;
 	if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS) {
@@ -403,10 +442,21 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	// The shader version holds the code of exactly the shading methods this view's area lights use, and the
 	// area shadow lookups only when some of them have shadow maps this frame.
 	const bool use_area = ubo.area_light_count > 0;
-	const uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
-	const SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	// Directional lights and sky add their own feature bits (no code, no bindings without them).
+	uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
+	if (light_storage->get_directional_light_count() > 0) {
+		area_methods |= SCENE_VERSION_DIRECTIONAL;
+	}
+	// Brute force and the cluster debug view are variants of their own: the production ones carry no code
+	// for them. All colour variants declare the same bindings, so the sets are shared.
+	SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	if ((ubo.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
+		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_DEBUG : SCENE_SHADER_COLOR_DEBUG;
+	} else if ((ubo.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
+		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_FORCE_ALL : SCENE_SHADER_COLOR_FORCE_ALL;
+	}
 	ERR_FAIL_COND_MSG(!_ensure_scene_sets(area_methods), "render_scene: scene uniform sets could not be created.");
-	RID color_set = use_area ? area_versions[area_methods].scene_set : scene_set_color;
+	RID color_set = area_methods != 0 ? area_versions[area_methods].scene_set : scene_set_color;
 
 	// Draw items (material sets are created/updated here, outside any list).
 	struct DrawItem {
@@ -456,8 +506,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "begin");
 
 	// 0. Area shadow maps (only the dirty ones; none in a static scene after the first frame).
-	area_shadows.render_shadows(p_data);
-	if (area_shadows.has_frame_shadows()) {
+	if (area_code) {
+		area_shadows.render_shadows(p_data);
+	}
+	if (area_code && area_shadows.has_frame_shadows()) {
 		rd->capture_timestamp(prefix + "area_shadows"); // Profiled only in frames with shadowed area lights.
 	}
 
@@ -481,10 +533,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "depth_prepass");
 	// 1b. ADAPTIVE area shadows: reprojection + banding of this frame's quad tests against the pre-pass depth
 	// (timestamps "area_reprojection", "area_banding"; nothing without ADAPTIVE lights).
-	last_area_shadow_tests = area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
+	last_area_shadow_tests = !area_code ? 0u : area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
 
 	// 2. Cluster build.
-	cluster_builder.bake_cluster();
+	cluster_builder.bake_cluster(area_code ? ClusterBuilderRD::ELEMENT_TYPE_MAX : ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT);
 	rd->capture_timestamp(prefix + "cluster_build");
 
 	// 3. Opaque pass.

@@ -67,6 +67,10 @@ public:
 		SCENE_SHADER_COLOR,
 		SCENE_SHADER_DEPTH, // MODE_DEPTH
 		SCENE_SHADER_COLOR_AREA, // USE_AREA_LIGHTS: colour pass with area lights.
+		SCENE_SHADER_COLOR_FORCE_ALL, // MODE_FORCE_ALL_LIGHTS: brute-force reference (tests).
+		SCENE_SHADER_COLOR_AREA_FORCE_ALL, // USE_AREA_LIGHTS + MODE_FORCE_ALL_LIGHTS.
+		SCENE_SHADER_COLOR_DEBUG, // MODE_DEBUG_CLUSTER: cluster debug view.
+		SCENE_SHADER_COLOR_AREA_DEBUG, // USE_AREA_LIGHTS + MODE_DEBUG_CLUSTER.
 		SCENE_SHADER_MAX,
 	};
 
@@ -152,13 +156,16 @@ private:
 		RID version; // ShaderRD version with the AREA_METHOD_* defines.
 		RID scene_set; // Set 0 of its SCENE_SHADER_COLOR_AREA variant.
 		RID scene_set_cluster_buffer; // Cluster buffer scene_set was made with.
-		RID scene_set_shadow_atlas; // Area shadow atlas texture scene_set was made with.
+		RID scene_set_shadow_atlas; // Area shadow atlas texture scene_set was made with (RID() without area lights).
+		RID scene_set_directional_buffer; // Directional light buffer scene_set was made with (RID() without).
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
+	uint32_t compiled_feature_mask = 0; // Union of the SCENE_VERSION_* feature bits compiled so far.
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
+	bool area_code_disabled = false; // Benchmark baseline (set_area_code_disabled).
 	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
 	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
@@ -169,8 +176,11 @@ private:
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
 	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
-	// The SCENE_SHADER_COLOR_AREA shader of the version for p_area_methods (created and compiled on first use).
-	RID _get_area_shader(uint32_t p_area_methods);
+	// The colour shader p_variant (one of the SCENE_SHADER_COLOR* variants; an area one exactly when p_key has
+	// area methods) of the version for key p_key (area key | SCENE_VERSION_* bits); key 0 is the default
+	// version. Compiled on first use.
+	RID _get_version_shader(uint32_t p_key, SceneShaderVariant p_variant);
+	static bool _is_area_variant(SceneShaderVariant p_variant) { return p_variant == SCENE_SHADER_COLOR_AREA || p_variant == SCENE_SHADER_COLOR_AREA_FORCE_ALL || p_variant == SCENE_SHADER_COLOR_AREA_DEBUG; }
 	// AREA_VERSION_SHADOWS_* bits for the area shadow data of this frame (area_shadows.prepare() ran).
 	uint32_t _get_area_shadow_version_bits() const;
 	void _free_render_target(RenderTarget *p_rt);
@@ -203,6 +213,10 @@ public:
 	// Debug view: output the per-pixel cluster element count of p_type (a ClusterBuilderRD::ElementType)
 	// instead of shading; -1 turns it off. Overrides RenderSceneData::debug_draw.
 	void set_debug_cluster_element_type(int p_type) { debug_cluster_type = p_type; }
+	// Benchmark baseline (bench --targets, P4): true skips every area-light step of a frame (area shadow
+	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
+	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.
+	void set_area_code_disabled(bool p_disabled) { area_code_disabled = p_disabled; }
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }
 	// SCENE_SHADER_COLOR_AREA: true once any area-method version has compiled it.
@@ -222,6 +236,15 @@ public:
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
 	// AREA_VERSION_SHADOWS_PCF / _PCSS also "#define AREA_SHADOWS_PCF\n" / "#define AREA_SHADOWS_PCSS\n".
 	static String get_area_method_defines(uint32_t p_area_methods);
+	// Feature bits of a scene version key, above the area bits: USE_DIRECTIONAL_LIGHTS when the view has a
+	// directional light (binding 8, scene_forward_directional_inc.glsl). A view without any feature and without
+	// area lights uses the default version, which has none of this code.
+	static constexpr uint32_t SCENE_VERSION_DIRECTIONAL = 1u << 10;
+	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL;
+	// get_area_method_defines() plus the feature defines of p_key.
+	static String get_scene_version_defines(uint32_t p_key);
+	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
+	uint32_t get_compiled_feature_mask() const { return compiled_feature_mask; }
 
 	// Area soft shadows (atlas, maps, per-frame draws; one atlas per renderer for now).
 	AreaShadowRendererRD &get_area_shadow_renderer() { return area_shadows; }

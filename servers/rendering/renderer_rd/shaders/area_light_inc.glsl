@@ -13,19 +13,14 @@
 /*   AREA_METHOD_MRP             area_light_mrp_inc.glsl (thesis 5.3)     */
 /*   AREA_METHOD_STOCHASTIC      area_light_mc_inc.glsl (thesis 5.2)      */
 /* area_light_ltc_inc.glsl is always included: it also holds the range    */
-/* window W(d) (area_light_range_window) that every method applies once   */
-/* per shading point, outside the integral.                               */
+/* window W(d) of the contract (area_light_range_window) that every       */
+/* method applies once per shading point, outside the integral.           */
 /*                                                                        */
-/* Every method computes the same quantity (the CPU reference,            */
-/* modules/reference/area_light.h, computes it exactly):                  */
-/*   L_o(x) = W(d) * integral over the rectangle of f(l, v) L_e (n.l) dw  */
-/*   L_e    = srgb_to_linear(colour) * energy * pi / A_n                  */
-/*            (A_n = a * b when the energy is normalised, else 1)         */
-/*   W(d)   = (max(1 - (d / r)^4, 0)^2)^attenuation, d = distance from x  */
-/*            to the closest point of the rectangle, r = range            */
-/* one-sided (only points strictly in front, local -Z, are lit: exactly   */
-/* 0 on and behind the light plane), and exactly 0 for a zero-size or     */
-/* black light.                                                           */
+/* Every method obeys the same definition of the light (scene/3d/         */
+/* light_3d.h, AreaLight3D): one-sided (exactly 0 on and behind the light */
+/* plane), exactly 0 for a zero-size or black light, and                  */
+/* L_o = W(d) * integral f L_e cos dw with L_e = colour * energy * pi /   */
+/* A_n and W(d) = max(1 - (d/r)^4, 0)^2 * max(d, 1e-4)^(2 - attenuation). */
 /*                                                                        */
 /* Needs, included before: brdf_inc.glsl, light_data_inc.glsl,            */
 /* scene_forward_lights_inc.glsl (light_compute), and the bindings that   */

@@ -45,13 +45,26 @@ struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	vec3 position; // 0: view space centre of the rectangle, metres.
 	float inv_radius; // 12: 1 / area_range (1/m); range = max distance from any point of the rectangle.
 	vec3 half_axis_x; // 16: view space, local +X scaled by area_size.x / 2 (metres).
-	float attenuation; // 28: area_attenuation, exponent of the range window W(d) (0 = no window).
+	float attenuation; // 28: area_attenuation, distance exponent a of W(d) = window * d^(2 - a) (2 = physical).
 	vec3 half_axis_y; // 32: view space, local +Y scaled by area_size.y / 2 (metres).
 	float specular_amount; // 44: "light_specular" multiplier of the specular lobe.
 	vec3 normal; // 48: view space unit emission direction (the light's local -Z); only this side emits.
 	uint shading_method; // 60: bits 0-7 AREA_SHADING_*, bits 8-23 stochastic samples (area_light_get_method()).
 	vec3 color; // 64: emitted radiance L_e = linear colour * energy * pi / A_n (A_n = a b when energy is normalised, else 1); 0 for a zero-size light.
 	uint cull_mask; // 76: "light_cull_mask" render layers.
+};
+
+// One directional light (std140 array element of the DirectionalLights block), 48 bytes.
+// Mirror: RendererRD::LightStorage::DirectionalLightData. Not clustered: every fragment loops over all.
+struct DirectionalLightData {
+	vec3 direction; // 0: view space unit vector the light shines along (its local -Z); L = -direction.
+	float energy; // 12: light_energy * pi (negative for negative lights).
+	vec3 color; // 16: linear colour * energy (above): the radiance a unit-cosine Lambert receiver gets times pi.
+	float size; // 28: angular radius of the sun disk, radians (light_angular_distance / 2).
+	float specular_amount; // 32: "light_specular".
+	uint cull_mask; // 36: "light_cull_mask".
+	uint flags; // 40: DIRECTIONAL_FLAG_*.
+	float pad0; // 44
 };
 
 #endif // LIGHT_DATA_INC_GLSL

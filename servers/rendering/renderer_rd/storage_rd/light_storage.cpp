@@ -48,7 +48,12 @@ void LightStorage::finalize_gpu() {
 		if (area_light_buffer.is_valid()) {
 			rd->free(area_light_buffer);
 		}
+		if (directional_light_buffer.is_valid()) {
+			rd->free(directional_light_buffer);
+		}
 	}
+	directional_light_buffer = RID();
+	directional_block = {};
 	omni_light_buffer = RID();
 	spot_light_buffer = RID();
 	area_light_buffer = RID();
@@ -295,4 +300,66 @@ void LightStorage::set_area_auto_receivers(const std::vector<RenderSceneData::Ge
 	auto_geometry = p_geometry;
 	auto_mesh_storage = p_mesh_storage;
 	auto_material_storage = p_material_storage;
+}
+
+/* Directional lights (not clustered) */
+
+bool LightStorage::fill_directional_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, DirectionalLightData &r_data) const {
+	const Light *light = light_owner.get_or_null(p_light);
+	ERR_FAIL_NULL_V_MSG(light, false, "LightStorage::fill_directional_light_data: invalid light RID.");
+	ERR_FAIL_COND_V_MSG(light->type != RS::LIGHT_DIRECTIONAL, false, "LightStorage::fill_directional_light_data: the light is not directional.");
+	Vector3 direction = (p_view_from_world.basis * p_world_from_light.basis).xform(Vector3(0, 0, -1)).normalized();
+	if (direction == Vector3()) {
+		direction = Vector3(0, 0, -1);
+	}
+	// Same conversion as fill_light_data(): linear colour * energy * pi (Godot without physical units), so a
+	// white Lambert surface facing the sun reflects exactly light_energy.
+	const Color linear = light->color.srgb_to_linear();
+	const float energy = light->param[RS::LIGHT_PARAM_ENERGY] * float(Math::PI) * (light->negative ? -1.0f : 1.0f);
+	r_data = DirectionalLightData();
+	for (int i = 0; i < 3; i++) {
+		r_data.direction[i] = direction[i];
+	}
+	r_data.energy = energy;
+	r_data.color[0] = linear.r * energy;
+	r_data.color[1] = linear.g * energy;
+	r_data.color[2] = linear.b * energy;
+	// light_angular_distance is the disk's angular diameter in degrees (Godot: 0.5 for the Sun seen from Earth).
+	r_data.size = Math::deg_to_rad(std::fmin(std::fmax(light->param[RS::LIGHT_PARAM_SIZE], 0.0f), 90.0f)) * 0.5f;
+	r_data.specular_amount = light->param[RS::LIGHT_PARAM_SPECULAR];
+	r_data.cull_mask = light->cull_mask;
+	r_data.flags = 0;
+	return true;
+}
+
+void LightStorage::update_directional_light_buffer(const std::vector<RenderSceneData::LightInstance> &p_lights, const Transform3D &p_view_from_world) {
+	directional_block.count = 0;
+	directional_source_indices.clear();
+	directional_dropped = 0;
+	for (uint32_t i = 0; i < p_lights.size(); i++) {
+		const Light *light = light_owner.get_or_null(p_lights[i].light);
+		ERR_CONTINUE_MSG(!light || light->type != RS::LIGHT_DIRECTIONAL, "update_directional_light_buffer: a directional light instance has an invalid or non-directional light RID; skipped.");
+		if (directional_block.count == MAX_DIRECTIONAL_LIGHTS) {
+			directional_dropped++;
+			continue;
+		}
+		if (fill_directional_light_data(p_lights[i].light, p_lights[i].transform, p_view_from_world, directional_block.data[directional_block.count])) {
+			directional_source_indices.push_back(i);
+			directional_block.count++;
+		}
+	}
+	if (directional_dropped) {
+		WARN_PRINT(vformat("LightStorage: %d directional lights beyond the first %d of the view are ignored (Godot's limit).", int(directional_dropped), int(MAX_DIRECTIONAL_LIGHTS)));
+	}
+	if (directional_block.count == 0) {
+		return; // Nothing to upload; a scene without a sun never creates the buffer.
+	}
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	ERR_FAIL_NULL_MSG(rd, "update_directional_light_buffer: no RenderingDevice.");
+	if (!directional_light_buffer.is_valid()) {
+		directional_light_buffer = rd->uniform_buffer_create(sizeof(DirectionalLightBlock));
+		ERR_FAIL_COND_MSG(!directional_light_buffer.is_valid(), "LightStorage: the directional light buffer could not be created.");
+		rd->set_resource_name(directional_light_buffer, "LightStorage directional lights");
+	}
+	rd->buffer_update(directional_light_buffer, 0, sizeof(DirectionalLightBlock), &directional_block);
 }

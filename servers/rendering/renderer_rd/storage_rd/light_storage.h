@@ -13,6 +13,12 @@
 /* Area lights (thesis Listing A.2) get their own AreaLightData array and */
 /* buffer (binding 5 of the scene shader) and cluster element type        */
 /* ELEMENT_TYPE_AREA_LIGHT (an oriented box, thesis section 5.1.1).       */
+/*                                                                        */
+/* Directional lights are not clustered (Godot keeps them in a separate  */
+/* uniform array): update_directional_light_buffer() converts up to       */
+/* MAX_DIRECTIONAL_LIGHTS of them into DirectionalLightData, in a buffer  */
+/* created on the first frame that has one (a scene without a sun        */
+/* allocates nothing).                                                    */
 
 #pragma once
 
@@ -61,7 +67,7 @@ public:
 		float position[3]; // View space centre, metres.
 		float inv_radius; // 1 / area_range.
 		float half_axis_x[3]; // View space local +X * size.x / 2.
-		float attenuation; // Range window exponent (area_attenuation).
+		float attenuation; // area_attenuation: distance exponent (2 = physical).
 		float half_axis_y[3]; // View space local +Y * size.y / 2.
 		float specular_amount; // LIGHT_PARAM_SPECULAR.
 		float normal[3]; // View space unit emission direction (local -Z).
@@ -79,6 +85,28 @@ public:
 	static uint32_t pack_area_shading_method(RS::LightAreaShadingMethod p_method, int p_samples) {
 		return (uint32_t(p_method) & AREA_METHOD_MASK) | ((uint32_t(p_samples) & 0xFFFFu) << AREA_METHOD_SAMPLES_SHIFT);
 	}
+
+	// One directional light as the scene shader reads it (std140 array element). Mirror of struct
+	// DirectionalLightData in shaders/light_data_inc.glsl: same names, same order, 48 bytes.
+	struct DirectionalLightData {
+		float direction[3]; // View space unit vector the light shines along (its local -Z); L = -direction.
+		float energy; // light_energy * pi (sign: negative lights), the colour kept separate for the sky.
+		float color[3]; // srgb_to_linear(light_color) * energy (the value above): radiance of a unit-cosine receiver.
+		float size; // Angular radius of the sun disk in radians (light_angular_distance / 2).
+		float specular_amount; // LIGHT_PARAM_SPECULAR.
+		uint32_t cull_mask; // light_cull_mask.
+		uint32_t flags; // DIRECTIONAL_FLAG_*.
+		float pad0;
+	};
+	static_assert(sizeof(DirectionalLightData) == 48, "DirectionalLightData must match shaders/light_data_inc.glsl (48 bytes).");
+	// Header + array of the directional light uniform buffer (std140): count, then the lights.
+	static constexpr uint32_t MAX_DIRECTIONAL_LIGHTS = 8; // Godot's MAX_DIRECTIONAL_LIGHTS.
+	struct DirectionalLightBlock {
+		uint32_t count;
+		uint32_t pad[3];
+		DirectionalLightData data[MAX_DIRECTIONAL_LIGHTS];
+	};
+	static_assert(sizeof(DirectionalLightBlock) == 16 + 48 * MAX_DIRECTIONAL_LIGHTS, "DirectionalLightBlock must match the shader's block.");
 
 	// Lights per type uploaded per view (nearest to the camera first); a multiple of 32.
 	static constexpr uint32_t DEFAULT_MAX_LIGHTS = 512;
@@ -100,6 +128,10 @@ private:
 	std::vector<LightData> omni_data;
 	std::vector<LightData> spot_data;
 	std::vector<AreaLightData> area_data;
+	RID directional_light_buffer; // DirectionalLightBlock; created by the first frame with a directional light.
+	DirectionalLightBlock directional_block = {};
+	uint32_t directional_dropped = 0; // Directional lights beyond MAX_DIRECTIONAL_LIGHTS in the last update.
+	std::vector<uint32_t> directional_source_indices; // GPU directional light i came from p_lights[i'].
 	std::vector<uint32_t> area_source_indices; // GPU area light i came from p_lights[area_source_indices[i]].
 	// AUTO shading (AreaMethodSelector): receivers of the next update_light_buffers() only (then cleared).
 	const std::vector<RenderSceneData::GeometryInstance> *auto_geometry = nullptr;
@@ -119,6 +151,20 @@ public:
 	// distance to the camera, keeps the nearest max_lights, uploads both arrays and adds every kept light
 	// to p_cluster_builder (may be null) in GPU index order. Records buffer updates: call outside lists.
 	void update_light_buffers(const std::vector<RenderSceneData::LightInstance> &p_lights, const Transform3D &p_view_from_world, ClusterBuilderRD *p_cluster_builder);
+
+	// Converts the directional lights of one view (scene order; the first MAX_DIRECTIONAL_LIGHTS,
+	// the rest dropped with a counted warning) into the directional block and uploads it. Creates the
+	// buffer on the first call with a light; without lights it uploads nothing. Call outside lists.
+	void update_directional_light_buffer(const std::vector<RenderSceneData::LightInstance> &p_lights, const Transform3D &p_view_from_world);
+	// Fills one DirectionalLightData (the unit conversion: view-space direction, linear colour * energy * pi,
+	// angular radius in radians).
+	bool fill_directional_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, DirectionalLightData &r_data) const;
+	RID get_directional_light_buffer() const { return directional_light_buffer; }
+	uint32_t get_directional_light_count() const { return directional_block.count; }
+	uint32_t get_directional_lights_dropped() const { return directional_dropped; }
+	const DirectionalLightBlock &get_directional_light_block() const { return directional_block; }
+	// For GPU directional light i of the last update, its index in the p_lights given.
+	const std::vector<uint32_t> &get_directional_light_source_indices() const { return directional_source_indices; }
 
 	RID get_omni_light_buffer() const { return omni_light_buffer; }
 	RID get_spot_light_buffer() const { return spot_light_buffer; }

@@ -92,6 +92,19 @@ layout(set = 0, binding = 6) uniform texture2DArray ltc_lut_texture; // LTCLutRD
 layout(set = 0, binding = 7) uniform sampler ltc_lut_sampler; // Linear, clamp to edge.
 #endif
 
+#ifdef USE_DIRECTIONAL_LIGHTS
+// Directional lights (not clustered, as Godot's): only in versions of views that have one.
+#define MAX_DIRECTIONAL_LIGHTS 8 // RendererRD::LightStorage::MAX_DIRECTIONAL_LIGHTS.
+layout(set = 0, binding = 8, std140) uniform DirectionalLights {
+	uint count;
+	uint pad0;
+	uint pad1;
+	uint pad2;
+	DirectionalLightData data[MAX_DIRECTIONAL_LIGHTS];
+}
+directional_lights;
+#endif
+
 /*************************************************************************/
 /* Set 1: material                                                       */
 /*************************************************************************/
