@@ -40,17 +40,20 @@ inline void add_quad(RS::SurfaceData &r_s, const Vector3 &p_center, const Vector
 	}
 }
 
-// Square y = 0 of half side p_half_size, normal +Y (PlaneMesh's arrays).
+// Square y = 0 of half side p_half_size, normal +Y.
 inline RS::SurfaceData make_plane(float p_half_size) {
 	RS::SurfaceData s;
-	PlaneMesh::create_plane_arrays(s, Vector2(p_half_size * 2, p_half_size * 2), 0, 0, Vector3(), PlaneMesh::FACE_Y);
+	add_quad(s, Vector3(), Vector3(0, 0, p_half_size), Vector3(p_half_size, 0, 0));
 	return s;
 }
 
-// Closed box of half extents p_half around the origin, normals outward (BoxMesh's arrays).
+// Closed box of half extents p_half around the origin, normals outward (BoxMesh's arrays, without
+// tangents and UVs so add_quad() can extend it).
 inline RS::SurfaceData make_box(const Vector3 &p_half) {
 	RS::SurfaceData s;
 	BoxMesh::create_box_arrays(s, p_half * 2, 0, 0, 0);
+	s.tangents.clear();
+	s.uvs.clear();
 	return s;
 }
 
