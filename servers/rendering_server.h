@@ -205,6 +205,12 @@ public:
 	/* VIEWPORT API enums */
 
 	// Godot 4's list, in order. The CLUSTER_* modes draw per-tile element counts.
+	enum RenderingInfo {
+		RENDERING_INFO_AREA_SHADOW_MAPS_IN_FRAME, // Shadow maps (sample points) the area lights averaged.
+		RENDERING_INFO_AREA_SHADOW_DRAW_CALLS_IN_FRAME, // Draw calls of the area shadow depth pass.
+		RENDERING_INFO_MAX,
+	};
+
 	enum ViewportDebugDraw {
 		VIEWPORT_DEBUG_DRAW_DISABLED,
 		VIEWPORT_DEBUG_DRAW_UNSHADED,
@@ -451,6 +457,8 @@ public:
 	// ADAPTIVE area-shadow quads tested by the last draw(), all viewports: 0 once every AREA_SHADOW_ADAPTIVE
 	// light has settled (its subdivision refines over frames; a still render draws until this is 0).
 	virtual uint32_t get_frame_area_shadow_tests() const = 0;
+	// Counters of the last draw(), summed over every viewport (Godot's RenderingServer::get_rendering_info()).
+	virtual uint64_t get_rendering_info(RenderingInfo p_info) const = 0;
 	// Renderer tests: when true the renderer shades every light per pixel (no clustering).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
 

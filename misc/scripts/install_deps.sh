@@ -15,8 +15,8 @@ PACKAGES=(
 	libopenexr-dev libpng-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
 	# CPU reference renderer (ray tracing).
 	libembree-dev
-	# Tests.
-	doctest-dev
+	# Tests, and the format check (misc/scripts/check_format.sh).
+	doctest-dev clang-format
 	# Sanitizer and fuzz job (misc/scripts/sanitize_fuzz.sh, `scons fuzz=yes`): clang with ASan, UBSan, libFuzzer.
 	clang libclang-rt-dev
 	# Charts.

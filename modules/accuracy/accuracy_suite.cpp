@@ -13,7 +13,7 @@
 #include "modules/metrics/heatmap.h"
 #include "modules/metrics/image_metrics.h"
 #include "modules/reference/renderer_compositor_reference.h"
-#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
+#include "scene/main/godot_instance.h"
 #include "servers/rendering/rendering_device.h"
 #include "servers/rendering/rendering_server_default.h"
 
@@ -130,12 +130,15 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 		options.seed = 0;
 		options.threads = p_options.reference_threads;
 		RendererCompositorReference *compositor = new RendererCompositorReference(options);
-		RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+		GodotInstance reference;
+		if (!reference.start_with_compositor(compositor, &error)) {
+			return fail(error);
+		}
+		RenderingServer *rs = reference.get_rendering_server();
 		for (size_t i = 0; i < scenes.size(); i++) {
 			double wall = 0.0, gpu = 0.0;
 			references[i] = render_scene(rs, scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, false, &wall, &gpu, &error);
 			if (references[i].is_empty()) {
-				delete rs;
 				return fail("Reference: " + error);
 			}
 			const ReferenceRenderStats &stats = compositor->get_reference_renderer()->get_last_stats();
@@ -146,25 +149,14 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 				fflush(stdout);
 			}
 		}
-		delete rs;
 	}
 
 	// 2. The engine, per method, compared at once; the worst scenes are kept for thumbnails.
-	RenderingDevice *owned_device = nullptr;
-	if (!RenderingDevice::get_singleton()) {
-		owned_device = new RenderingDevice;
-		if (!owned_device->initialize(&error)) {
-			delete owned_device;
-			return fail("No usable Vulkan device: " + error);
-		}
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error, 64)) {
+		return fail(error);
 	}
-	RendererCompositorRD *compositor = new RendererCompositorRD;
-	if (!compositor->initialize(64)) {
-		delete compositor;
-		delete owned_device;
-		return fail("The Forward+ renderer could not be initialized (see the errors above).");
-	}
-	RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+	RenderingServer *rs = engine.get_rendering_server();
 	bool ok = true;
 	std::map<int, std::vector<Thumb>> worst;
 	const int keep = std::max(0, p_options.thumbnails_per_method);
@@ -231,11 +223,7 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 			break;
 		}
 	}
-	delete rs;
-	if (owned_device) {
-		owned_device->finalize();
-		delete owned_device;
-	}
+	engine.stop();
 	if (!ok) {
 		return fail(error);
 	}

@@ -9,14 +9,9 @@
 #include "core/math/math_funcs.h"
 #include "modules/benchmark/penumbra_scene.h"
 #include "modules/benchmark/shadows_sweep.h"
-#include "modules/reference/reference_renderer.h"
-#include "servers/rendering/dummy/storage/light_storage.h"
-#include "servers/rendering/dummy/storage/material_storage.h"
-#include "servers/rendering/dummy/storage/mesh_storage.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "modules/reference/renderer_compositor_reference.h"
+#include "scene/main/godot_instance.h"
+#include "servers/rendering_server.h"
 
 #include <algorithm>
 #include <cctype>
@@ -184,96 +179,70 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 	const int positions = p_options.positions;
 	const PenumbraScene::Settings settings = scene_settings(p_options);
 
-	// 1. The reference at every position, open and with shadow rays.
+	// 1. The reference at every position, open and with shadow rays: the same scene through the server,
+	// drawn by the Embree reference compositor.
 	std::vector<std::vector<float>> ref_open(positions), ref_shadowed(positions);
 	if (p_options.errors) {
-		RendererDummy::LightStorage ls;
-		RendererDummy::MeshStorage ms;
-		RendererDummy::MaterialStorage mats;
 		ReferenceRenderOptions options;
 		options.threads = 0;
 		options.target_relative_error = p_options.reference_error;
 		options.max_samples = 4096;
-		ReferenceRenderer ref(&ls, &ms, &mats, options);
-		RenderSceneData d = make_position_view(p_options, 0, rw, rh);
+		RendererCompositorReference *compositor = new RendererCompositorReference(options);
+		GodotInstance reference;
+		String error;
+		if (!reference.start_with_compositor(compositor, &error)) {
+			return fail(error);
+		}
 		PenumbraScene objects;
-		if (!objects.create(&ls, &ms, &mats, d, settings)) {
+		if (!objects.create_in_server(reference.get_rendering_server(), rw, rh, settings)) {
 			return fail("the reference scene could not be created.");
 		}
-		RID rt = ref.render_target_create(rw, rh);
 		for (int i = 0; i < positions; i++) {
-			RenderSceneData view = make_position_view(p_options, i, rw, rh);
-			d.cam_transform = view.cam_transform;
-			d.cam_projection = view.cam_projection;
+			objects.set_view(make_position_view(p_options, i, rw, rh));
 			options.shadows = false;
-			ref.set_options(options);
-			ref.render_scene(d, rt);
-			ref_open[i] = ref.render_target_get_data(rt);
+			compositor->get_reference_renderer()->set_options(options);
+			ref_open[i] = objects.render();
 			options.shadows = true;
-			ref.set_options(options);
-			ref.render_scene(d, rt);
-			ref_shadowed[i] = ref.render_target_get_data(rt);
+			compositor->get_reference_renderer()->set_options(options);
+			ref_shadowed[i] = objects.render();
 			if (p_options.progress) {
 				printf("[reference] position %d/%d (%.2f m) %dx%d done\n", i + 1, positions, double((get_camera_position(p_options, i) - TARGET).length()), rw, rh);
 				fflush(stdout);
 			}
 		}
-		ref.render_target_free(rt);
+		objects.free();
 	}
 
 	// 2. The engine.
 	String error;
-	RenderingDevice *owned_device = nullptr;
-	if (!RenderingDevice::get_singleton()) {
-		owned_device = new RenderingDevice;
-		if (!owned_device->initialize(&error)) {
-			delete owned_device;
-			return fail("No usable Vulkan device: " + error);
-		}
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error, 8)) {
+		return fail(error);
 	}
+	RenderingServer *rs = engine.get_rendering_server();
 	bool ok = true;
 	{
-		RendererRD::LightStorage light_storage;
-		RendererRD::MeshStorage mesh_storage;
-		RendererRD::MaterialStorage material_storage;
-		RenderForwardClustered renderer(&light_storage, &mesh_storage, &material_storage);
-		if (!(material_storage.initialize_gpu() && light_storage.initialize_gpu(8) && renderer.initialize(8))) {
-			ok = false;
-			error = "The Forward+ renderer could not be initialized (see the errors above).";
-		}
-		RenderSceneData scene = make_position_view(p_options, 0, w, h);
 		PenumbraScene objects;
-		RID rt;
-		if (ok) {
-			ok = objects.create(&light_storage, &mesh_storage, &material_storage, scene, settings);
-			error = ok ? String() : String("The scene could not be created.");
-		}
-		if (ok) {
-			rt = renderer.render_target_create(w, h);
-			ok = rt.is_valid();
-			error = ok ? String() : String("The render target could not be created.");
-		}
+		ok = objects.create_in_server(rs, w, h, settings);
+		error = ok ? String() : String("The scene could not be created.");
 		const RID light = objects.get_light();
+		const RID viewport = objects.get_viewport();
 		const Transform3D rest = PenumbraScene::light_transform(settings);
 		auto set_position = [&](int p_index) {
-			RenderSceneData view = make_position_view(p_options, p_index, w, h);
-			scene.cam_transform = view.cam_transform;
-			scene.cam_projection = view.cam_projection;
+			objects.set_view(make_position_view(p_options, p_index, w, h));
 		};
 		auto map_count = [&]() -> int {
-			const std::vector<AreaShadowRendererRD::AreaShadowData> &data = renderer.get_area_shadow_renderer().get_data();
-			return data.empty() ? 0 : int(data[0].map_count);
+			return int(rs->get_rendering_info(RS::RENDERING_INFO_AREA_SHADOW_MAPS_IN_FRAME));
 		};
 
 		// Unshadowed images (the same for every mode).
 		std::vector<std::vector<float>> open(positions);
 		if (ok && p_options.errors) {
-			light_storage.light_set_shadow(light, false);
-			scene.lights[0].transform = rest;
+			rs->light_set_shadow(light, false);
+			objects.set_light_transform(rest);
 			for (int i = 0; i < positions; i++) {
 				set_position(i);
-				renderer.render_scene(scene, rt);
-				open[i] = renderer.render_target_get_data(rt);
+				open[i] = objects.render();
 			}
 		}
 
@@ -284,24 +253,26 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 			if (mode.mode == RS::LIGHT_AREA_SHADOW_FIXED) {
 				sub = std::max(sub, ShadowsSweep::subdivision_for_grid(mode.grid));
 			}
-			if (!renderer.area_shadow_atlas_set_size(p_options.atlas, sub)) {
+			rs->area_shadow_atlas_set_size(viewport, p_options.atlas, sub);
+			if (rs->area_shadow_atlas_get_size(viewport) != p_options.atlas || rs->area_shadow_atlas_get_subdivision(viewport) != sub) {
 				ok = false;
 				error = vformat("atlas %d px with %d x %d tiles was rejected.", p_options.atlas, sub, sub);
 				break;
 			}
-			light_storage.light_area_set_shadow_mode(light, mode.mode);
+			rs->light_area_set_shadow_mode(light, mode.mode);
 			if (mode.mode == RS::LIGHT_AREA_SHADOW_FIXED) {
-				light_storage.light_area_set_shadow_grid(light, mode.grid);
+				rs->light_area_set_shadow_grid(light, mode.grid);
 			}
-			light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, p_options.blur);
-			light_storage.light_set_shadow(light, true);
+			rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, p_options.blur);
+			rs->light_set_shadow(light, true);
 			auto render_frame = [&](bool p_moving) {
-				scene.lights[0].transform = rest;
+				Transform3D xform = rest;
 				if (p_moving && (frame % 2)) {
-					scene.lights[0].transform.origin.x += 0.01f; // Every map redraws.
+					xform.origin.x += 0.01f; // Every map redraws.
 				}
+				objects.set_light_transform(xform);
 				frame++;
-				renderer.render_scene(scene, rt);
+				rs->draw();
 			};
 			for (int i = 0; ok && i < positions; i++) {
 				set_position(i);
@@ -337,13 +308,13 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 					auto t0 = std::chrono::steady_clock::now();
 					render_frame(true);
 					auto t1 = std::chrono::steady_clock::now();
-					FrameTimes t = read_profile(renderer.get_last_frame_profile());
+					FrameTimes t = read_profile(rs->get_frame_profile());
 					maps_ms.push_back(t.shadow_maps);
 					reproj_ms.push_back(t.reprojection);
 					banding_ms.push_back(t.banding);
 					total_ms.push_back(t.total);
 					cpu_ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
-					draws += renderer.get_area_shadow_renderer().get_last_draw_count();
+					draws += rs->get_rendering_info(RS::RENDERING_INFO_AREA_SHADOW_DRAW_CALLS_IN_FRAME);
 				}
 				row.shadow_maps_ms = median(maps_ms);
 				row.reprojection_ms = median(reproj_ms);
@@ -356,7 +327,7 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 				render_frame(false);
 				row.maps = map_count();
 				if (p_options.errors) {
-					std::vector<float> shadowed = renderer.render_target_get_data(rt);
+					const std::vector<float> shadowed = rs->viewport_get_texture_data(viewport).get_data();
 					PenumbraScene::visibility_error(open[i], shadowed, w, ref_open[i], ref_shadowed[i], rw, rh, ss, row.visibility_rmse, &row.penumbra_rmse);
 				}
 				r_rows.push_back(row);
@@ -367,18 +338,9 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 				}
 			}
 		}
-		if (rt.is_valid()) {
-			renderer.render_target_free(rt);
-		}
 		objects.free();
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
 	}
-	if (owned_device) {
-		owned_device->finalize();
-		delete owned_device;
-	}
+	engine.stop();
 	return ok ? true : fail(error);
 }
 

@@ -11,9 +11,9 @@
 #include "modules/accuracy/accuracy_suite.h"
 #include "modules/metrics/image_metrics.h"
 #include "modules/reference/renderer_compositor_reference.h"
+#include "scene/main/godot_instance.h"
 #include "scene/resources/primitive_meshes.h"
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/rendering_device.h"
 #include "servers/rendering/rendering_server_default.h"
@@ -231,11 +231,14 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 		options.shadows = false;
 		options.seed = 0;
 		RendererCompositorReference *compositor = new RendererCompositorReference(options);
-		RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+		GodotInstance reference;
+		if (!reference.start_with_compositor(compositor, &error)) {
+			return fail(error);
+		}
+		RenderingServer *rs = reference.get_rendering_server();
 		for (size_t i = 0; i < scenes.size(); i++) {
 			Image img = render_accuracy_scene(rs, scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, 1, &error);
 			if (img.is_empty()) {
-				delete rs;
 				return fail("Reference: " + error);
 			}
 			references.push_back(img);
@@ -244,31 +247,17 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 				fflush(stdout);
 			}
 		}
-		delete rs;
 	}
 
-	RenderingDevice *owned_device = nullptr;
-	if (!RenderingDevice::get_singleton()) {
-		owned_device = new RenderingDevice;
-		if (!owned_device->initialize(&error)) {
-			delete owned_device;
-			return fail("No usable Vulkan device: " + error);
-		}
-	}
 	int max_lights = 64;
 	for (int n : p_options.light_counts) {
 		max_lights = std::max(max_lights, n);
 	}
-	RendererCompositorRD *compositor = new RendererCompositorRD;
-	if (!compositor->initialize(max_lights)) {
-		delete compositor;
-		if (owned_device) {
-			owned_device->finalize();
-			delete owned_device;
-		}
-		return fail("The Forward+ renderer could not be initialized (see the errors above).");
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error, uint32_t(max_lights))) {
+		return fail(error);
 	}
-	RenderingServerDefault *rs = new RenderingServerDefault(compositor);
+	RenderingServer *rs = engine.get_rendering_server();
 	bool ok = true;
 	const std::vector<String> failure_ids = failure_scene_ids();
 	if (!p_options.maps_dir.empty()) {
@@ -377,11 +366,7 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 			}
 		}
 	}
-	delete rs;
-	if (owned_device) {
-		owned_device->finalize();
-		delete owned_device;
-	}
+	engine.stop();
 	if (!ok) {
 		return fail(error);
 	}

@@ -8,39 +8,26 @@
 
 #include "core/error/error_macros.h"
 #include "core/math/math_funcs.h"
+#include "scene/resources/primitive_meshes.h"
 #include "servers/rendering/storage/light_storage.h"
 #include "servers/rendering/storage/material_storage.h"
 #include "servers/rendering/storage/mesh_storage.h"
+#include "servers/rendering_server.h"
 
 #include <algorithm>
 #include <cmath>
 
 RS::SurfaceData PenumbraScene::make_plane(float p_half) {
 	RS::SurfaceData s;
-	s.vertices = { Vector3(-p_half, 0, -p_half), Vector3(p_half, 0, -p_half), Vector3(p_half, 0, p_half), Vector3(-p_half, 0, p_half) };
-	s.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-	s.indices = { 0, 1, 2, 0, 2, 3 };
+	PlaneMesh::create_plane_arrays(s, Vector2(p_half * 2, p_half * 2), 0, 0, Vector3(), PlaneMesh::FACE_Y);
 	return s;
 }
 
 RS::SurfaceData PenumbraScene::make_box(const Vector3 &p_center, const Vector3 &p_half) {
 	RS::SurfaceData s;
-	for (int axis = 0; axis < 3; axis++) {
-		for (int sign = -1; sign <= 1; sign += 2) {
-			Vector3 n;
-			n[axis] = float(sign);
-			Vector3 u, v;
-			u[(axis + 1) % 3] = p_half[(axis + 1) % 3];
-			v[(axis + 2) % 3] = p_half[(axis + 2) % 3];
-			Vector3 c = p_center + n * p_half[axis];
-			uint32_t base = uint32_t(s.vertices.size());
-			Vector3 corners[4] = { c - u - v, c + u - v, c + u + v, c - u + v };
-			for (int i = 0; i < 4; i++) {
-				s.vertices.push_back(corners[i]);
-				s.normals.push_back(n);
-			}
-			s.indices.insert(s.indices.end(), { base, base + 2, base + 1, base, base + 3, base + 2 }); // Clockwise front faces.
-		}
+	BoxMesh::create_box_arrays(s, p_half * 2, 0, 0, 0);
+	for (Vector3 &v : s.vertices) {
+		v += p_center;
 	}
 	return s;
 }
@@ -123,7 +110,83 @@ bool PenumbraScene::create(RendererLightStorage *p_light_storage, RendererMeshSt
 	return true;
 }
 
+bool PenumbraScene::create_in_server(RenderingServer *p_rs, int p_width, int p_height, const Settings &p_settings) {
+	ERR_FAIL_NULL_V_MSG(p_rs, false, "PenumbraScene: no RenderingServer.");
+	free();
+	rs = p_rs;
+	view_width = p_width;
+	view_height = p_height;
+	scenario = rs->scenario_create();
+	environment = rs->environment_create();
+	rs->environment_set_background(environment, RS::ENV_BG_COLOR);
+	rs->environment_set_bg_color(environment, Color(0, 0, 0, 1));
+	rs->environment_set_ambient_light(environment, Color(0, 0, 0, 1), RS::ENV_AMBIENT_SOURCE_DISABLED, 0.0f);
+	rs->scenario_set_environment(scenario, environment);
+	floor_mesh = rs->mesh_create();
+	rs->mesh_add_surface(floor_mesh, make_plane(p_settings.floor_half));
+	box_mesh = rs->mesh_create();
+	rs->mesh_add_surface(box_mesh, make_box(p_settings.box_center, p_settings.box_half));
+	material = rs->material_create();
+	rs->material_set_params(material, lambert());
+	light = rs->area_light_create();
+	rs->light_area_set_size(light, p_settings.light_size);
+	rs->light_set_param(light, RS::LIGHT_PARAM_ENERGY, p_settings.light_energy);
+	rs->light_set_param(light, RS::LIGHT_PARAM_RANGE, p_settings.light_range);
+	rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+	RID *instances[3] = { &floor_instance, &box_instance, &light_instance };
+	const RID bases[3] = { floor_mesh, box_mesh, light };
+	for (int i = 0; i < 3; i++) {
+		*instances[i] = rs->instance_create();
+		rs->instance_set_base(*instances[i], bases[i]);
+		rs->instance_set_scenario(*instances[i], scenario);
+		if (i < 2) {
+			rs->instance_geometry_set_material_override(*instances[i], material);
+		}
+	}
+	rs->instance_set_transform(light_instance, light_transform(p_settings));
+	camera = rs->camera_create();
+	viewport = rs->viewport_create();
+	rs->viewport_set_size(viewport, p_width, p_height);
+	rs->viewport_set_scenario(viewport, scenario);
+	rs->viewport_attach_camera(viewport, camera);
+	rs->viewport_set_active(viewport, true);
+	set_view(make_top_view(p_width));
+	if (!viewport.is_valid() || !light.is_valid() || !floor_instance.is_valid()) {
+		free();
+		ERR_FAIL_V_MSG(false, "PenumbraScene: the RenderingServer refused to create the scene's objects.");
+	}
+	return true;
+}
+
+void PenumbraScene::set_view(const RenderSceneData &p_view) {
+	ERR_FAIL_NULL_MSG(rs, "PenumbraScene::set_view: the scene is not in a server.");
+	rs->camera_set_perspective(camera, p_view.fovy_degrees, p_view.z_near, p_view.z_far);
+	rs->camera_set_transform(camera, p_view.cam_transform);
+}
+
+void PenumbraScene::set_light_transform(const Transform3D &p_transform) {
+	ERR_FAIL_NULL_MSG(rs, "PenumbraScene::set_light_transform: the scene is not in a server.");
+	rs->instance_set_transform(light_instance, p_transform);
+}
+
+std::vector<float> PenumbraScene::render() {
+	ERR_FAIL_NULL_V_MSG(rs, std::vector<float>(), "PenumbraScene::render: the scene is not in a server.");
+	rs->draw();
+	return rs->viewport_get_texture_data(viewport).get_data();
+}
+
 void PenumbraScene::free() {
+	if (rs) {
+		const RID rids[] = { viewport, camera, light_instance, box_instance, floor_instance, light, material, box_mesh, floor_mesh, scenario, environment };
+		for (RID r : rids) {
+			if (r.is_valid()) {
+				rs->free(r);
+			}
+		}
+		rs = nullptr;
+		viewport = camera = light_instance = box_instance = floor_instance = light = material = box_mesh = floor_mesh = scenario = environment = RID();
+		return;
+	}
 	if (light.is_valid()) {
 		light_storage->light_free(light);
 	}

@@ -5,9 +5,11 @@
 /* chapter 6), shared by `bench --sweep shadows` (shadows_sweep.h) and    */
 /* `bench --sweep dolly` (dolly_sweep.h): a square area light facing down */
 /* above a Lambert floor, and a box between them that casts a wide        */
-/* penumbra. The same objects are created in any storages (the Forward+  */
-/* renderer's or the dummy ones the Embree reference reads), so the GPU   */
-/* image and the reference see one scene.                                 */
+/* penumbra. The sweeps build it through the public RenderingServer (a   */
+/* scenario, instances, a camera and a viewport), so the Forward+ image   */
+/* and the Embree reference (RendererCompositorReference) see one scene   */
+/* through the scene cull, the path users take. The renderer's own unit  */
+/* tests can also create its objects in bare storages (create()).         */
 /*                                                                        */
 /* Also the visibility error of the sweeps: visibility = shadowed /       */
 /* unshadowed image (the shading method's own error cancels), compared    */
@@ -23,6 +25,7 @@
 
 #include <vector>
 
+class RenderingServer;
 class RendererLightStorage;
 class RendererMeshStorage;
 class RendererMaterialStorage;
@@ -44,6 +47,11 @@ private:
 	RendererMeshStorage *mesh_storage = nullptr;
 	RendererMaterialStorage *material_storage = nullptr;
 	RID floor_mesh, box_mesh, material, light;
+	// Server objects (create_in_server()).
+	RenderingServer *rs = nullptr;
+	RID scenario, environment, camera, viewport, floor_instance, box_instance, light_instance;
+	int view_width = 0;
+	int view_height = 0;
 
 public:
 	static RS::SurfaceData make_plane(float p_half);
@@ -63,6 +71,16 @@ public:
 	// of r_scene.lights if it had none). False if a storage refused.
 	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene, const Settings &p_settings);
 	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene) { return create(p_light_storage, p_mesh_storage, p_material_storage, r_scene, Settings()); }
+	// Creates the scene in p_rs with a p_width x p_height viewport (black background, no ambient) that
+	// looks from the top view. False (and nothing left behind) if the server refused.
+	bool create_in_server(RenderingServer *p_rs, int p_width, int p_height, const Settings &p_settings);
+	bool create_in_server(RenderingServer *p_rs, int p_width, int p_height) { return create_in_server(p_rs, p_width, p_height, Settings()); }
+	// Server scene: the camera (transform and field of view of p_view) and the light's transform.
+	void set_view(const RenderSceneData &p_view);
+	void set_light_transform(const Transform3D &p_transform);
+	// Server scene: draws one frame and reads the viewport back (RGBA floats, row-major).
+	std::vector<float> render();
+	RID get_viewport() const { return viewport; }
 	void free();
 	RID get_light() const { return light; }
 	bool is_created() const { return light.is_valid(); }

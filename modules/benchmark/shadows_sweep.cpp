@@ -8,14 +8,9 @@
 
 #include "core/math/math_funcs.h"
 #include "modules/benchmark/penumbra_scene.h"
-#include "modules/reference/reference_renderer.h"
-#include "servers/rendering/dummy/storage/light_storage.h"
-#include "servers/rendering/dummy/storage/material_storage.h"
-#include "servers/rendering/dummy/storage/mesh_storage.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "modules/reference/renderer_compositor_reference.h"
+#include "scene/main/godot_instance.h"
+#include "servers/rendering_server.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,8 +24,8 @@ double visibility_rmse(const std::vector<float> &p_open, const std::vector<float
 	return rmse;
 }
 
-double shadow_pass_ms(const RenderForwardClustered &p_renderer) {
-	for (const std::pair<String, double> &e : p_renderer.get_last_frame_profile()) {
+double shadow_pass_ms(const std::vector<std::pair<String, double>> &p_profile) {
+	for (const std::pair<String, double> &e : p_profile) {
 		if (e.first == "area_shadows") {
 			return e.second;
 		}
@@ -60,30 +55,28 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 		return fail(vformat("resolution %d is out of range (8..1024).", res));
 	}
 
-	// 1. The reference, open and with shadow rays.
+	// 1. The reference, open and with shadow rays: the same scene through the server, drawn by the
+	// Embree reference compositor.
 	std::vector<float> ref_open, ref_shadowed;
 	if (p_options.errors) {
-		RendererDummy::LightStorage ls;
-		RendererDummy::MeshStorage ms;
-		RendererDummy::MaterialStorage mats;
 		ReferenceRenderOptions options;
 		options.threads = 0;
 		options.target_relative_error = p_options.reference_error;
 		options.max_samples = 4096;
-		ReferenceRenderer ref(&ls, &ms, &mats, options);
-		RenderSceneData d = PenumbraScene::make_top_view(res);
+		RendererCompositorReference *compositor = new RendererCompositorReference(options);
+		GodotInstance reference;
+		String error;
+		if (!reference.start_with_compositor(compositor, &error)) {
+			return fail(error);
+		}
 		PenumbraScene objects;
-		if (!objects.create(&ls, &ms, &mats, d)) {
+		if (!objects.create_in_server(reference.get_rendering_server(), res, res)) {
 			return fail("the reference scene could not be created.");
 		}
-		RID rt = ref.render_target_create(res, res);
-		ref.render_scene(d, rt);
-		ref_open = ref.render_target_get_data(rt);
+		ref_open = objects.render();
 		options.shadows = true;
-		ref.set_options(options);
-		ref.render_scene(d, rt);
-		ref_shadowed = ref.render_target_get_data(rt);
-		ref.render_target_free(rt);
+		compositor->get_reference_renderer()->set_options(options);
+		ref_shadowed = objects.render();
 		objects.free();
 		if (p_options.progress) {
 			printf("[reference] %dx%d done\n", res, res);
@@ -93,39 +86,26 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 
 	// 2. The engine.
 	String error;
-	RenderingDevice *owned_device = nullptr;
-	if (!RenderingDevice::get_singleton()) {
-		owned_device = new RenderingDevice;
-		if (!owned_device->initialize(&error)) {
-			delete owned_device;
-			return fail("No usable Vulkan device: " + error);
-		}
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error, 8)) {
+		return fail(error);
 	}
+	RenderingServer *rs = engine.get_rendering_server();
 	bool ok = true;
 	{
-		RendererRD::LightStorage light_storage;
-		RendererRD::MeshStorage mesh_storage;
-		RendererRD::MaterialStorage material_storage;
-		RenderForwardClustered renderer(&light_storage, &mesh_storage, &material_storage);
-		if (!(material_storage.initialize_gpu() && light_storage.initialize_gpu(8) && renderer.initialize(8))) {
-			ok = false;
-			error = "The Forward+ renderer could not be initialized (see the errors above).";
-		}
-		RenderSceneData scene = PenumbraScene::make_top_view(res);
 		PenumbraScene objects;
-		RID rt;
-		if (ok && !objects.create(&light_storage, &mesh_storage, &material_storage, scene)) {
+		if (!objects.create_in_server(rs, res, res)) {
 			ok = false;
 			error = "The scene could not be created.";
 		}
-		if (ok) {
-			rt = renderer.render_target_create(res, res);
-			ok = rt.is_valid();
-			error = ok ? String() : String("The render target could not be created.");
-		}
-		auto render = [&]() {
-			renderer.render_scene(scene, rt);
-			return renderer.render_target_get_data(rt);
+		const RID viewport = objects.get_viewport();
+		auto set_atlas = [&](int p_size, int p_subdivision) {
+			rs->area_shadow_atlas_set_size(viewport, p_size, p_subdivision);
+			if (rs->area_shadow_atlas_get_size(viewport) != p_size || rs->area_shadow_atlas_get_subdivision(viewport) != p_subdivision) {
+				ok = false;
+				error = vformat("atlas %d px with %d x %d tiles was rejected.", p_size, p_subdivision, p_subdivision);
+			}
+			return ok;
 		};
 		const RID light = objects.get_light();
 		const Transform3D rest = PenumbraScene::light_transform(PenumbraScene::Settings());
@@ -134,14 +114,12 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 			for (size_t g = 0; ok && g < p_options.grids.size(); g++) {
 				const int grid = p_options.grids[g];
 				const int sub = subdivision_for_grid(grid);
-				if (!renderer.area_shadow_atlas_set_size(atlas, sub)) {
-					ok = false;
-					error = vformat("atlas %d px with %d x %d tiles was rejected.", atlas, sub, sub);
+				if (!set_atlas(atlas, sub)) {
 					break;
 				}
-				light_storage.light_area_set_shadow_mode(light, RS::LIGHT_AREA_SHADOW_FIXED);
-				light_storage.light_area_set_shadow_grid(light, grid);
-				scene.lights[0].transform = rest;
+				rs->light_area_set_shadow_mode(light, RS::LIGHT_AREA_SHADOW_FIXED);
+				rs->light_area_set_shadow_grid(light, grid);
+				objects.set_light_transform(rest);
 				Row base;
 				base.mode = "FIXED";
 				base.atlas = atlas;
@@ -150,15 +128,15 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 				base.maps = grid * grid;
 				if (p_options.errors) {
 					for (float blur : p_options.blurs) {
-						light_storage.light_set_shadow(light, false);
-						std::vector<float> open = render();
-						light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, blur);
-						light_storage.light_set_shadow(light, true);
-						std::vector<float> shadowed = render();
-						uint32_t tiles = renderer.get_area_shadow_renderer().get_atlas().light_get_tile_count(light.get_id());
-						if (tiles != uint32_t(grid * grid)) {
+						rs->light_set_shadow(light, false);
+						std::vector<float> open = objects.render();
+						rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, blur);
+						rs->light_set_shadow(light, true);
+						std::vector<float> shadowed = objects.render();
+						const uint64_t maps = rs->get_rendering_info(RS::RENDERING_INFO_AREA_SHADOW_MAPS_IN_FRAME);
+						if (maps != uint32_t(grid * grid)) {
 							ok = false;
-							error = vformat("the light got %u maps instead of %d (atlas %d, subdivision %d).", tiles, grid * grid, atlas, sub);
+							error = vformat("the light got %llu maps instead of %d (atlas %d, subdivision %d).", (unsigned long long)maps, grid * grid, atlas, sub);
 							break;
 						}
 						Row row = base;
@@ -177,19 +155,19 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 					// fixed tile size (p_options.timing_subdivision), whose slope is the cost per map.
 					const int subs[2] = { sub, p_options.timing_subdivision };
 					for (int t = 0; t < 2 && ok; t++) {
-						if (!renderer.area_shadow_atlas_set_size(atlas, subs[t])) {
-							ok = false;
-							error = vformat("atlas %d px with %d x %d tiles was rejected.", atlas, subs[t], subs[t]);
+						if (!set_atlas(atlas, subs[t])) {
 							break;
 						}
-						light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f);
-						light_storage.light_set_shadow(light, true);
+						rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f);
+						rs->light_set_shadow(light, true);
 						std::vector<double> ms;
 						for (int frame = 0; frame < p_options.frames + 1; frame++) {
-							scene.lights[0].transform.origin.x = (frame % 2) ? 0.01f : 0.0f; // Every map redraws.
-							renderer.render_scene(scene, rt);
+							Transform3D moved = rest;
+							moved.origin.x = (frame % 2) ? 0.01f : 0.0f; // Every map redraws.
+							objects.set_light_transform(moved);
+							rs->draw();
 							if (frame > 0) {
-								ms.push_back(shadow_pass_ms(renderer));
+								ms.push_back(shadow_pass_ms(rs->get_frame_profile()));
 							}
 						}
 						std::sort(ms.begin(), ms.end());
@@ -210,19 +188,17 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 			// The one-map PCSS baseline, in a tile of atlas / pcss_subdivision (its blocker search and filter are
 			// capped in texels, 24 and 32, so it gets worse, not better, in bigger tiles; see doc/shadows.md).
 			if (ok && p_options.errors) {
-				if (!renderer.area_shadow_atlas_set_size(atlas, p_options.pcss_subdivision)) {
-					ok = false;
-					error = vformat("atlas %d px with %d x %d tiles was rejected.", atlas, p_options.pcss_subdivision, p_options.pcss_subdivision);
+				if (!set_atlas(atlas, p_options.pcss_subdivision)) {
 					break;
 				}
-				light_storage.light_area_set_shadow_mode(light, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
-				scene.lights[0].transform = rest;
+				rs->light_area_set_shadow_mode(light, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
+				objects.set_light_transform(rest);
 				for (float blur : p_options.blurs) {
-					light_storage.light_set_shadow(light, false);
-					std::vector<float> open = render();
-					light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, blur);
-					light_storage.light_set_shadow(light, true);
-					std::vector<float> shadowed = render();
+					rs->light_set_shadow(light, false);
+					std::vector<float> open = objects.render();
+					rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, blur);
+					rs->light_set_shadow(light, true);
+					std::vector<float> shadowed = objects.render();
 					Row row;
 					row.section = "error";
 					row.mode = "PCSS";
@@ -236,18 +212,9 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 				}
 			}
 		}
-		if (rt.is_valid()) {
-			renderer.render_target_free(rt);
-		}
 		objects.free();
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
 	}
-	if (owned_device) {
-		owned_device->finalize();
-		delete owned_device;
-	}
+	engine.stop();
 	return ok ? true : fail(error);
 }
 

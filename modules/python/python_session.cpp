@@ -6,8 +6,8 @@
 
 #include "core/error/error_macros.h"
 #include "modules/register_module_types.h"
-#include "scene/main/godot_instance.h"
 #include "scene/3d/camera_3d.h"
+#include "scene/main/godot_instance.h"
 #include "scene/main/scene_tree.h"
 #include "servers/rendering_server.h"
 

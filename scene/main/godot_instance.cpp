@@ -10,6 +10,7 @@
 #include "scene/main/scene_tree.h"
 #include "scene/register_scene_types.h"
 #include "scene/resources/resource_format_text.h"
+#include "servers/rendering/dummy/rasterizer_dummy.h"
 #include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "servers/rendering/rendering_device.h"
 #include "servers/rendering/rendering_server_default.h"
@@ -53,12 +54,7 @@ bool GodotInstance::start(Backend p_backend, String *r_error, uint32_t p_max_lig
 		return false;
 	}
 	if (p_backend == BACKEND_DUMMY) {
-		rendering_server = RenderingServerDefault::create_dummy();
-		started_compositor = nullptr;
-		backend = p_backend;
-		singleton = this;
-		register_scene_types();
-		return true;
+		return _start_server(new RasterizerDummy, BACKEND_DUMMY);
 	}
 	if (p_backend != BACKEND_RD) {
 		*r_error = "GodotInstance::start: use BACKEND_RD or BACKEND_DUMMY (start_with_compositor() for another compositor).";

@@ -439,7 +439,6 @@ void RendererSceneCull::_fill_area_shadow_casters(const Scenario &p_scenario, Re
 				}
 			}
 		}
-		light.shadow_casters_valid = true;
 		// Same frame as the renderer's shadow pass: orthonormalised light transform, light-space range box.
 		const Transform3D world_from_light(light.transform.basis.orthonormalized(), light.transform.origin);
 		const AABB box = RSG::light_storage->light_get_aabb(light.light);

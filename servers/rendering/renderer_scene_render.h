@@ -34,10 +34,8 @@ struct RenderSceneData {
 		AABB aabb; // World-space bound (empty for directional lights).
 		// Shadowed area lights: indices into RenderSceneData::shadow_geometry of the instances whose bound
 		// meets the light's influence box (a + 2r) x (b + 2r) x r, camera-visible or not
-		// (RendererSceneCull fills it). shadow_casters_valid false (hand-built scenes): the renderer
-		// falls back to the camera-visible geometry in the box.
+		// (RendererSceneCull fills it; nothing else casts).
 		std::vector<uint32_t> shadow_casters;
-		bool shadow_casters_valid = false;
 	};
 
 	// Background and ambient after resolving scenario/camera environments (camera wins).
@@ -88,6 +86,8 @@ public:
 	virtual std::vector<std::pair<String, double>> get_last_frame_profile() const = 0;
 	// ADAPTIVE area-shadow quads the last render_scene() tested (0: every adaptive light has settled, or none).
 	virtual uint32_t get_last_frame_area_shadow_tests() const { return 0; }
+	// RS::get_rendering_info() counters of the last render_scene().
+	virtual uint64_t get_last_frame_rendering_info(RS::RenderingInfo p_info) const { return 0; }
 	// When true, shade every light for every pixel instead of using clusters (test reference).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
 

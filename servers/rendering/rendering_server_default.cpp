@@ -441,6 +441,9 @@ Color RenderingServerDefault::get_default_clear_color() const {
 void RenderingServerDefault::draw() {
 	compositor->begin_frame();
 	frame_area_shadow_tests = 0;
+	for (uint64_t &info : frame_rendering_info) {
+		info = 0;
+	}
 	for (const RID &rid : viewport_order) {
 		const Viewport *viewport = viewport_owner.get_or_null(rid);
 		if (!viewport || !viewport->active || viewport->render_target.is_null()) {
@@ -451,6 +454,9 @@ void RenderingServerDefault::draw() {
 		}
 		scene_cull->render_camera(viewport->camera, viewport->scenario, viewport->width, viewport->height, default_clear_color, viewport->debug_draw, viewport->render_target, viewport->area_shadow_atlas_size, viewport->area_shadow_atlas_subdivision);
 		frame_area_shadow_tests += RSG::scene_render->get_last_frame_area_shadow_tests();
+		for (int i = 0; i < RS::RENDERING_INFO_MAX; i++) {
+			frame_rendering_info[i] += RSG::scene_render->get_last_frame_rendering_info(RS::RenderingInfo(i));
+		}
 	}
 	compositor->end_frame();
 }

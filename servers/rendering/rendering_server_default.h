@@ -37,6 +37,7 @@ class RenderingServerDefault : public RenderingServer {
 	std::vector<RID> viewport_order; // Creation order: draw() renders in this order.
 	Color default_clear_color = Color(0.3f, 0.3f, 0.3f, 1.0f); // Godot's default_clear_color.
 	uint32_t frame_area_shadow_tests = 0; // ADAPTIVE quads tested by the last draw().
+	uint64_t frame_rendering_info[RS::RENDERING_INFO_MAX] = {}; // Counters of the last draw().
 
 	RID _light_create(LightType p_type);
 
@@ -134,6 +135,9 @@ public:
 	void free(RID p_rid) override;
 	std::vector<std::pair<String, double>> get_frame_profile() const override;
 	uint32_t get_frame_area_shadow_tests() const override { return frame_area_shadow_tests; }
+	uint64_t get_rendering_info(RenderingInfo p_info) const override {
+		return p_info >= 0 && p_info < RENDERING_INFO_MAX ? frame_rendering_info[p_info] : 0;
+	}
 	void set_debug_force_all_lights(bool p_enable) override;
 
 	// The scene cull of this server (tests read its counters).

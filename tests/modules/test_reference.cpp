@@ -20,6 +20,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "servers/rendering/rendering_server_default.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -80,65 +81,16 @@ struct ReferenceFixture {
 	}
 };
 
-// Quad centred at p_center with half axes p_u, p_v; its front (normal p_u x p_v) is clockwise as seen
-// from the front (Godot's winding).
-static void add_quad(RS::SurfaceData &r_s, const Vector3 &p_center, const Vector3 &p_u, const Vector3 &p_v) {
-	uint32_t base = uint32_t(r_s.vertices.size());
-	Vector3 n = p_u.cross(p_v).normalized();
-	Vector3 corners[4] = { p_center - p_u - p_v, p_center + p_u - p_v, p_center + p_u + p_v, p_center - p_u + p_v };
-	for (int i = 0; i < 4; i++) {
-		r_s.vertices.push_back(corners[i]);
-		r_s.normals.push_back(n);
-	}
-	const uint32_t idx[6] = { 0, 2, 1, 0, 3, 2 };
-	for (int i = 0; i < 6; i++) {
-		r_s.indices.push_back(base + idx[i]);
-	}
-}
+using RenderTest::add_geometry;
+using RenderTest::add_light;
+using RenderTest::add_quad;
+using RenderTest::camera_looking_down;
+using RenderTest::make_box;
+using RenderTest::make_scene;
 
+// Square y = 0 of half side p_half_size, normal +Y.
 static RS::SurfaceData make_ground(float p_half_size) {
-	RS::SurfaceData s;
-	add_quad(s, Vector3(), Vector3(0, 0, p_half_size), Vector3(p_half_size, 0, 0)); // Normal +Y.
-	return s;
-}
-
-static RenderSceneData make_scene(const Transform3D &p_cam, float p_fovy, int p_w, int p_h, float p_z_far) {
-	RenderSceneData d;
-	d.cam_transform = p_cam;
-	d.z_near = 0.05f;
-	d.z_far = p_z_far;
-	d.fovy_degrees = p_fovy;
-	d.cam_projection = Projection::create_perspective(p_fovy, float(p_w) / float(p_h), d.z_near, d.z_far);
-	d.viewport_width = p_w;
-	d.viewport_height = p_h;
-	d.environment.has_environment = true;
-	d.environment.background = RS::ENV_BG_COLOR;
-	d.environment.bg_color = Color(0, 0, 0, 1);
-	d.environment.bg_energy = 1.0f;
-	d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
-	d.environment.ambient_color = Color(0, 0, 0, 1);
-	d.environment.ambient_energy = 0.0f;
-	return d;
-}
-
-static void add_geometry(RenderSceneData &r_d, RID p_mesh, RID p_material, const Transform3D &p_xform) {
-	RenderSceneData::GeometryInstance g;
-	g.mesh = p_mesh;
-	g.material_override = p_material;
-	g.transform = p_xform;
-	r_d.geometry.push_back(g);
-}
-
-static void add_light(RenderSceneData &r_d, RID p_light, RS::LightType p_type, const Transform3D &p_xform) {
-	RenderSceneData::LightInstance l;
-	l.light = p_light;
-	l.type = p_type;
-	l.transform = p_xform;
-	r_d.lights.push_back(l);
-}
-
-static Transform3D camera_looking_down(float p_height) {
-	return Transform3D(Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)), Vector3(0, p_height, 0));
+	return RenderTest::make_plane(p_half_size);
 }
 
 // World point seen through the centre of pixel (p_px, p_py) on the plane y = 0 (top row first),
@@ -631,17 +583,6 @@ struct CrossScene {
 		}
 	}
 };
-
-static RS::SurfaceData make_box(const Vector3 &p_half) {
-	RS::SurfaceData s;
-	add_quad(s, Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z)); // +X
-	add_quad(s, Vector3(-p_half.x, 0, 0), Vector3(0, 0, p_half.z), Vector3(0, p_half.y, 0)); // -X
-	add_quad(s, Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0)); // +Y
-	add_quad(s, Vector3(0, -p_half.y, 0), Vector3(p_half.x, 0, 0), Vector3(0, 0, p_half.z)); // -Y
-	add_quad(s, Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0)); // +Z
-	add_quad(s, Vector3(0, 0, -p_half.z), Vector3(0, p_half.y, 0), Vector3(p_half.x, 0, 0)); // -Z
-	return s;
-}
 
 // A UV sphere with smooth normals, front faces clockwise seen from outside.
 static RS::SurfaceData make_sphere(float p_radius, int p_rings, int p_segments) {

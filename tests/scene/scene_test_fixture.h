@@ -1,16 +1,18 @@
 /**************************************************************************/
 /*  scene_test_fixture.h                                                  */
 /**************************************************************************/
-/* godot-area: shared helpers for scene tests: a RenderingServerDefault   */
-/* on the dummy (CPU-only) backend with the scene classes registered,     */
-/* and an error catcher that silences and records error messages.         */
+/* godot-area: shared helpers for scene and server tests: the engine      */
+/* (GodotInstance) on the dummy (CPU-only) backend with the scene classes */
+/* registered, and an error catcher that silences and records errors.     */
 
 #pragma once
 
 #include "core/error/error_macros.h"
-#include "scene/register_scene_types.h"
+#include "scene/main/godot_instance.h"
 #include "servers/rendering/dummy/rasterizer_dummy.h"
 #include "servers/rendering/rendering_server_default.h"
+
+#include <doctest/doctest.h>
 
 #include <vector>
 
@@ -42,16 +44,17 @@ struct ErrorCatcher {
 
 // Create first in a test case; everything scene-side must be deleted before it goes.
 struct DummyServer {
-	RasterizerDummy *rasterizer = nullptr; // Owned by rs.
+	GodotInstance engine;
+	RasterizerDummy *rasterizer = nullptr; // Owned by the engine.
 	RenderingServerDefault *rs = nullptr;
 	DummyServer() {
-		rasterizer = new RasterizerDummy;
-		rs = new RenderingServerDefault(rasterizer);
-		register_scene_types();
+		String error;
+		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_DUMMY, &error), error);
+		rasterizer = static_cast<RasterizerDummy *>(engine.get_compositor());
+		rs = static_cast<RenderingServerDefault *>(engine.get_rendering_server());
 	}
 	// What the server handed to the (dummy) renderer in the last draw.
 	const RenderSceneData &last_scene() const { return rasterizer->get_scene_dummy()->get_last_scene_data(); }
-	~DummyServer() { delete rs; }
 };
 
 } // namespace SceneTest

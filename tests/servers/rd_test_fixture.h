@@ -12,6 +12,7 @@
 
 #pragma once
 
+#include "scene/main/godot_instance.h"
 #include "servers/rendering/rendering_device.h"
 
 #include <doctest/doctest.h>
@@ -26,11 +27,14 @@ inline RenderingDevice *rd_test_get_device() {
 	if (!tried) {
 		tried = true;
 		setenv("GODOT_AREA_VALIDATION", "1", 1);
-		RenderingDevice *rd = new RenderingDevice;
 		String err;
-		if (!rd->initialize(&err)) {
+		bool created = false;
+		RenderingDevice *rd = GodotInstance::acquire_rendering_device(&created, &err);
+		if (!rd) {
 			fprintf(stderr, "rd_test_get_device: RenderingDevice initialization failed: %s\n", err.c_str());
-			delete rd;
+		} else if (!created) {
+			tried = false; // A running GodotInstance owns this one: borrow it, do not keep it.
+			return rd;
 		} else {
 			device = rd;
 			atexit([]() {
@@ -46,8 +50,8 @@ inline RenderingDevice *rd_test_get_device() {
 }
 
 // Flushes pending work and asserts that the validation layer reported no error so far.
-#define RD_TEST_CHECK_NO_VALIDATION_ERRORS(m_rd)              \
-	do {                                                      \
-		(m_rd)->submit_and_sync();                            \
-		CHECK((m_rd)->get_validation_error_count() == 0);     \
+#define RD_TEST_CHECK_NO_VALIDATION_ERRORS(m_rd)          \
+	do {                                                  \
+		(m_rd)->submit_and_sync();                        \
+		CHECK((m_rd)->get_validation_error_count() == 0); \
 	} while (0)

@@ -14,6 +14,7 @@
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 
 #include "core/math/math_funcs.h"
+#include "scene/resources/primitive_meshes.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
@@ -46,15 +47,13 @@ inline RS::SurfaceData make_plane(float p_half_size) {
 	return s;
 }
 
-// Closed box of half extents p_half around the origin, normals outward.
+// Closed box of half extents p_half around the origin, normals outward (BoxMesh's arrays, without
+// tangents and UVs so add_quad() can extend it).
 inline RS::SurfaceData make_box(const Vector3 &p_half) {
 	RS::SurfaceData s;
-	add_quad(s, Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z)); // +X
-	add_quad(s, Vector3(-p_half.x, 0, 0), Vector3(0, 0, p_half.z), Vector3(0, p_half.y, 0)); // -X
-	add_quad(s, Vector3(0, p_half.y, 0), Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0)); // +Y
-	add_quad(s, Vector3(0, -p_half.y, 0), Vector3(p_half.x, 0, 0), Vector3(0, 0, p_half.z)); // -Y
-	add_quad(s, Vector3(0, 0, p_half.z), Vector3(p_half.x, 0, 0), Vector3(0, p_half.y, 0)); // +Z
-	add_quad(s, Vector3(0, 0, -p_half.z), Vector3(0, p_half.y, 0), Vector3(p_half.x, 0, 0)); // -Z
+	BoxMesh::create_box_arrays(s, p_half * 2, 0, 0, 0);
+	s.tangents.clear();
+	s.uvs.clear();
 	return s;
 }
 
@@ -117,12 +116,39 @@ inline Vector3 pixel_on_ground(const RenderSceneData &p_d, int p_px, int p_py) {
 	return o + dir * (-o.y / dir.y);
 }
 
+// What RendererSceneCull hands the renderer for shadowed area lights, for a scene built by hand: every
+// instance casts for every light (a hand-built instance has no bound to cull it by).
+inline void fill_shadow_casters(RenderSceneData &r_d) {
+	r_d.shadow_geometry = r_d.geometry;
+	for (RenderSceneData::LightInstance &l : r_d.lights) {
+		l.shadow_casters.clear();
+		for (uint32_t i = 0; i < uint32_t(r_d.shadow_geometry.size()); i++) {
+			l.shadow_casters.push_back(i);
+		}
+	}
+}
+
+// The Forward+ renderer for hand-built scenes: the caster lists are filled (fill_shadow_casters())
+// when the scene has none.
+struct SceneRenderer : public RenderForwardClustered {
+	using RenderForwardClustered::RenderForwardClustered;
+	void render_scene(const RenderSceneData &p_data, RID p_render_target) override {
+		if (!p_data.shadow_geometry.empty() || p_data.geometry.empty()) {
+			RenderForwardClustered::render_scene(p_data, p_render_target);
+			return;
+		}
+		RenderSceneData data = p_data;
+		fill_shadow_casters(data);
+		RenderForwardClustered::render_scene(data, p_render_target);
+	}
+};
+
 // Storages + Forward+ renderer; meshes, materials and lights made through it are freed with it.
 struct RenderFixture {
 	RendererRD::LightStorage light_storage;
 	RendererRD::MeshStorage mesh_storage;
 	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
+	SceneRenderer renderer{ &light_storage, &mesh_storage, &material_storage };
 	std::vector<RID> meshes;
 	std::vector<RID> materials;
 	std::vector<RID> lights;

@@ -27,6 +27,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_test_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -71,7 +72,7 @@ struct ShadowFixture {
 	RendererRD::LightStorage light_storage;
 	RendererRD::MeshStorage mesh_storage;
 	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
+	RenderTest::SceneRenderer renderer{ &light_storage, &mesh_storage, &material_storage };
 	PenumbraScene penumbra;
 	RID light, rt;
 	RenderSceneData scene;

@@ -12,6 +12,8 @@
 
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
+#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "tests/servers/rd_test_fixture.h"
 
@@ -164,6 +166,68 @@ TEST_CASE("[LightStorage] LightData, AreaLightData and ClusterElementData match 
 			{ MEMBER(ED, position), MEMBER(ED, radius), MEMBER(ED, direction), MEMBER(ED, cone_cos), MEMBER(ED, extents), MEMBER(ED, cone_sin),
 					MEMBER(ED, axis_x), MEMBER(ED, pad0) },
 			sizeof(ED));
+}
+
+// "struct p_name { ... };" as written in the embedded shader p_file ("" when absent).
+static String embedded_struct(const char *p_file, const String &p_name) {
+	const char *text = ShaderRD::get_embedded_source(p_file);
+	if (!text) {
+		return String();
+	}
+	const String source = text;
+	const size_t begin = source.find("struct " + p_name + " {");
+	const size_t end = begin == String::npos ? String::npos : source.find("\n};", begin);
+	return end == String::npos ? String() : source.substr(begin, end + 3 - begin) + "\n";
+}
+
+// The integer value of "#define p_name <n>u" in the embedded shader p_file (-1 when absent).
+static long embedded_define(const char *p_file, const String &p_name) {
+	const char *text = ShaderRD::get_embedded_source(p_file);
+	const String source = text ? String(text) : String();
+	const size_t at = source.find("#define " + p_name + " ");
+	return at == String::npos ? -1 : strtol(source.c_str() + at + p_name.size() + 9, nullptr, 10);
+}
+
+TEST_CASE("[AreaShadowRendererRD] AreaShadowData and the adaptive pass structs match their GLSL structs in the SPIR-V") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	const long max_maps = embedded_define("area_light_shadow_inc.glsl", "AREA_SHADOW_MAX_MAPS");
+	CHECK(max_maps == long(AreaShadowRendererRD::MAX_MAPS_GPU));
+	const String shadow_struct = embedded_struct("area_light_shadow_inc.glsl", "AreaShadowData");
+	const String grid_struct = embedded_struct("area_shadow_adaptive_inc.glsl", "GridData");
+	const String light_struct = embedded_struct("area_shadow_adaptive_inc.glsl", "AdaptiveLightData");
+	REQUIRE(!shadow_struct.empty());
+	REQUIRE(!grid_struct.empty());
+	REQUIRE(!light_struct.empty());
+	String source = "#version 450\n#define AREA_SHADOW_MAX_MAPS " + std::to_string(max_maps) + "u\n" + shadow_struct + grid_struct + light_struct;
+	source += R"(
+layout(local_size_x = 1) in;
+layout(set = 0, binding = 0, std430) buffer Shadows { AreaShadowData data[]; } shadows;
+layout(set = 0, binding = 1, std430) buffer Lights { AdaptiveLightData data[]; } lights;
+void main() {
+	shadows.data[1].bias += float(lights.data[1].grid.step);
+}
+)";
+	String error;
+	std::vector<uint32_t> spirv = rd->shader_compile_spirv_from_source(RenderingDevice::SHADER_STAGE_COMPUTE, source, "area_shadow_layout_probe", &error);
+	INFO("glslang: ", error.c_str());
+	REQUIRE(!spirv.empty());
+
+	using SD = AreaShadowRendererRD::AreaShadowData;
+	check_layout(spirv_struct_layout(spirv, "AreaShadowData"), "AreaShadowData",
+			{ MEMBER(SD, light_from_view), MEMBER(SD, half_size), MEMBER(SD, depth_scale), MEMBER(SD, bias), MEMBER(SD, normal_bias), MEMBER(SD, pcf_radius),
+					MEMBER(SD, map_count), MEMBER(SD, mode), MEMBER(SD, atlas_subdivision), MEMBER(SD, atlas_texel), MEMBER(SD, quadrant_size),
+					MEMBER(SD, tile_size), MEMBER(SD, maps) },
+			sizeof(SD));
+	CHECK(sizeof(SD) == 448);
+
+	using LD = AreaShadowAdaptiveRD::AdaptiveLightData;
+	check_layout(spirv_struct_layout(spirv, "AdaptiveLightData"), "AdaptiveLightData",
+			{ MEMBER(LD, light_from_view), MEMBER(LD, half_size), MEMBER(LD, depth_scale), MEMBER(LD, bias), MEMBER(LD, atlas_subdivision),
+					MEMBER(LD, quadrant_size), MEMBER(LD, tile_size), MEMBER(LD, point_offset), MEMBER(LD, point_count), MEMBER(LD, words),
+					MEMBER(LD, query_offset), MEMBER(LD, query_count), MEMBER(LD, grid) },
+			sizeof(LD));
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
 TEST_CASE("[LightStorage] the SPIR-V layout reader notices a wrong offset") {

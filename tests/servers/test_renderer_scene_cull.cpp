@@ -9,50 +9,23 @@
 
 #include "core/error/error_macros.h"
 #include "core/templates/rid_owner.h"
+#include "scene/resources/primitive_meshes.h"
 #include "servers/rendering/dummy/rasterizer_dummy.h"
 #include "servers/rendering/rendering_server_default.h"
 #include "servers/rendering/rendering_server_globals.h"
+#include "tests/scene/scene_test_fixture.h"
 
 #include <doctest/doctest.h>
 
 namespace TestRendererSceneCull {
 
-// Silences error printing and records every error/warning text while alive.
-struct ErrorCatcher {
-	ErrorHandlerList handler;
-	std::vector<String> messages;
+using SceneTest::DummyServer;
+using SceneTest::ErrorCatcher;
 
-	bool contains(const String &p_text) const {
-		for (const String &m : messages) {
-			if (m.find(p_text) != String::npos) {
-				return true;
-			}
-		}
-		return false;
-	}
-	ErrorCatcher() {
-		handler.callback = [this](ErrorHandlerType, const String &p_text) { messages.push_back(p_text); };
-		add_error_handler(&handler);
-		set_error_print_silenced(true);
-	}
-	~ErrorCatcher() {
-		set_error_print_silenced(false);
-		remove_error_handler(&handler);
-	}
-};
-
-// A server on the dummy backend; the dummy scene renderer is exposed for inspection.
-struct DummyServer {
-	RasterizerDummy *rasterizer = new RasterizerDummy;
-	RenderingServerDefault *rs = new RenderingServerDefault(rasterizer);
-	~DummyServer() { delete rs; }
-};
-
+// A square of half side p_half in the z = 0 plane, normal +Z.
 static RS::SurfaceData make_quad(real_t p_half) {
 	RS::SurfaceData s;
-	s.vertices = { Vector3(-p_half, -p_half, 0), Vector3(p_half, -p_half, 0), Vector3(p_half, p_half, 0), Vector3(-p_half, p_half, 0) };
-	s.normals = { Vector3(0, 0, 1), Vector3(0, 0, 1), Vector3(0, 0, 1), Vector3(0, 0, 1) };
-	s.indices = { 0, 1, 2, 0, 2, 3 };
+	PlaneMesh::create_plane_arrays(s, Vector2(p_half * 2, p_half * 2), 0, 0, Vector3(), PlaneMesh::FACE_Z);
 	return s;
 }
 
@@ -125,7 +98,7 @@ TEST_CASE("[RenderingServer] a RID that is never freed is reported as leaked") {
 		DummyServer server;
 		server.rs->omni_light_create();
 		server.rs->instance_create();
-		delete server.rs;
+		server.engine.stop(); // Deletes the server.
 		server.rs = nullptr;
 		CHECK(errors.contains("leaked"));
 	}

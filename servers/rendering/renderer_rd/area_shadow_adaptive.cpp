@@ -78,7 +78,7 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 	sampler = rd->sampler_create(ss);
 	query_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(QueryData));
 	rd->set_resource_name(query_buffer, "AreaShadowAdaptiveRD queries");
-	light_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(LightData));
+	light_buffer = rd->storage_buffer_create(MAX_QUERIES_PER_FRAME * sizeof(AdaptiveLightData));
 	rd->set_resource_name(light_buffer, "AreaShadowAdaptiveRD lights");
 	point_buffer = rd->storage_buffer_create(4 * MAX_QUERIES_PER_FRAME * sizeof(PointData));
 	rd->set_resource_name(point_buffer, "AreaShadowAdaptiveRD sample points");
@@ -352,7 +352,7 @@ bool AreaShadowAdaptiveRD::is_light_settled(uint64_t p_light, uint64_t p_state_h
 // One frame's input of the passes: the lights under test (grid, sample points), the corner points of their
 // tested quads (each point once per light: neighbouring quads share corners), and the quads.
 struct AreaShadowAdaptiveRD::PassData {
-	std::vector<AreaShadowAdaptiveRD::LightData> lights;
+	std::vector<AreaShadowAdaptiveRD::AdaptiveLightData> lights;
 	std::vector<AreaShadowAdaptiveRD::PointData> points;
 	std::vector<AreaShadowAdaptiveRD::QueryData> queries;
 	uint32_t words = 0; // Visibility words of all lights.
@@ -371,7 +371,7 @@ struct AreaShadowAdaptiveRD::PassData {
 	}
 
 	void add_light(const AreaShadowAdaptiveRD::LightInput &p_light, const AreaShadowAdaptiveRD::AtlasInfo &p_atlas, const AreaShadowAdaptiveRD::GridData &p_grid, const std::vector<AreaShadowQuadtree::Query> &p_queries) {
-		AreaShadowAdaptiveRD::LightData l;
+		AreaShadowAdaptiveRD::AdaptiveLightData l;
 		memset(&l, 0, sizeof(l));
 		Projection::from_transform(p_light.light_from_view).to_floats(l.light_from_view);
 		l.half_size[0] = p_light.size.x * 0.5f;
@@ -504,7 +504,7 @@ struct AreaShadowAdaptiveRD::PassResources {
 
 bool AreaShadowAdaptiveRD::_record_passes(const PassResources &p_res, const PassData &p_pass, const Projection &p_clip_from_view, const String &p_timestamp_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
-	rd->buffer_update(p_res.lights, 0, uint32_t(p_pass.lights.size() * sizeof(AreaShadowAdaptiveRD::LightData)), p_pass.lights.data());
+	rd->buffer_update(p_res.lights, 0, uint32_t(p_pass.lights.size() * sizeof(AreaShadowAdaptiveRD::AdaptiveLightData)), p_pass.lights.data());
 	rd->buffer_update(p_res.points, 0, uint32_t(p_pass.points.size() * sizeof(AreaShadowAdaptiveRD::PointData)), p_pass.points.data());
 	rd->buffer_update(p_res.queries, 0, uint32_t(p_pass.queries.size() * sizeof(AreaShadowAdaptiveRD::QueryData)), p_pass.queries.data());
 	std::vector<RD::Uniform> u1 = {
@@ -696,7 +696,7 @@ std::vector<uint32_t> AreaShadowAdaptiveRD::test_queries_blocking(RID p_depth, u
 			std::vector<uint8_t> vb = rd->buffer_get_data(values);
 			std::vector<uint32_t> words(vb.size() / sizeof(uint32_t));
 			memcpy(words.data(), vb.data(), words.size() * sizeof(uint32_t));
-			const LightData &l = pass.lights[0];
+			const AdaptiveLightData &l = pass.lights[0];
 			const uint32_t cells = grid.size[0] * grid.size[1];
 			r_values->assign(size_t(n) * cells, -1.0f);
 			for (uint32_t q = 0; q < n && words.size() >= size_t(cells) * l.words; q++) {

@@ -77,7 +77,7 @@ public:
 	};
 	static_assert(sizeof(GridData) == 32, "GridData must match shaders/area_shadow_adaptive_inc.glsl.");
 
-	struct LightData { // 144 bytes: one light under test.
+	struct AdaptiveLightData { // 144 bytes: one light under test.
 		float light_from_view[16];
 		float half_size[2];
 		float depth_scale;
@@ -92,7 +92,7 @@ public:
 		uint32_t query_count;
 		GridData grid;
 	};
-	static_assert(sizeof(LightData) == 144, "LightData must match shaders/area_shadow_adaptive_inc.glsl.");
+	static_assert(sizeof(AdaptiveLightData) == 144, "AdaptiveLightData must match shaders/area_shadow_adaptive_inc.glsl.");
 
 	struct PointData { // 16 bytes.
 		float uv[2];
@@ -103,7 +103,7 @@ public:
 
 	struct QueryData { // 32 bytes: one tested quad.
 		uint32_t corners[4]; // Indices into its light's points.
-		uint32_t light; // Index into the frame's LightData.
+		uint32_t light; // Index into the frame's AdaptiveLightData.
 		uint32_t pad[3];
 	};
 	static_assert(sizeof(QueryData) == 32, "QueryData must match shaders/area_shadow_adaptive_inc.glsl.");
@@ -179,7 +179,7 @@ private:
 	RID banding_pipeline;
 	RID sampler;
 	RID query_buffer; // QueryData[MAX_QUERIES_PER_FRAME].
-	RID light_buffer; // LightData[MAX_QUERIES_PER_FRAME] (a light has at least one query).
+	RID light_buffer; // AdaptiveLightData[MAX_QUERIES_PER_FRAME] (a light has at least one query).
 	RID point_buffer; // PointData[4 * MAX_QUERIES_PER_FRAME].
 	RID values_buffer; // Visibility words per (light, cell).
 	uint32_t values_capacity = 0; // Words.

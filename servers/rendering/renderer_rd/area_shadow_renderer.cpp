@@ -186,6 +186,16 @@ uint32_t AreaShadowRendererRD::light_get_shadow_map_count(RID p_light) const {
 	return it != current->map_counts.end() ? it->second : 0;
 }
 
+uint32_t AreaShadowRendererRD::get_shadow_map_count() const {
+	uint32_t total = 0;
+	if (current) {
+		for (const auto &e : current->map_counts) {
+			total += e.second;
+		}
+	}
+	return total;
+}
+
 bool AreaShadowRendererRD::is_reprojection_compiled() const {
 	for (const auto &e : atlases) {
 		if (e.second.adaptive && e.second.adaptive->is_reprojection_compiled()) {
@@ -370,22 +380,10 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		_hash_bytes(hash, &size, sizeof(size));
 		_hash_bytes(hash, &lf.range, sizeof(lf.range));
 		// Casters: the scene cull's list for this light (every instance in its influence box, on screen or
-		// not); hand-built scenes without one use the visible geometry in the box.
-		std::vector<const RenderSceneData::GeometryInstance *> candidates;
-		if (li.shadow_casters_valid) {
-			for (uint32_t c : li.shadow_casters) {
-				ERR_CONTINUE(c >= p_data.shadow_geometry.size());
-				candidates.push_back(&p_data.shadow_geometry[c]);
-			}
-		} else {
-			for (const RenderSceneData::GeometryInstance &gi : p_data.geometry) {
-				bool unbounded = gi.aabb.size.x <= 0.0f && gi.aabb.size.y <= 0.0f && gi.aabb.size.z <= 0.0f;
-				if (unbounded || gi.aabb.intersects(box)) {
-					candidates.push_back(&gi); // Godot's culling: only instances within the light's range box cast.
-				}
-			}
-		}
-		for (const RenderSceneData::GeometryInstance *gi : candidates) {
+		// not).
+		for (uint32_t c : li.shadow_casters) {
+			ERR_CONTINUE(c >= p_data.shadow_geometry.size());
+			const RenderSceneData::GeometryInstance *gi = &p_data.shadow_geometry[c];
 			if (!mesh_storage->owns_mesh(gi->mesh) || mesh_storage->mesh_get_surface_count(gi->mesh) == 0) {
 				continue;
 			}

@@ -191,6 +191,8 @@ public:
 	// the drawn points of its tree). p_light: the light RID for scenes built by hand (RenderSceneData
 	// without instances), the instance RID for RenderingServer scenes. 0 if unknown or unshadowed.
 	uint32_t light_get_shadow_map_count(RID p_light) const;
+	// The same summed over every light of the last prepare().
+	uint32_t get_shadow_map_count() const;
 	// The ADAPTIVE driver of the current atlas (nullptr before its first ADAPTIVE light).
 	const AreaShadowAdaptiveRD *get_adaptive() const { return current ? current->adaptive.get() : nullptr; }
 	// True once any atlas compiled the reprojection shader (an ADAPTIVE light had a quad to test).

@@ -591,3 +591,14 @@ void RenderForwardClustered::_read_profile(const String &p_prefix) {
 		prev = n;
 	}
 }
+
+uint64_t RenderForwardClustered::get_last_frame_rendering_info(RS::RenderingInfo p_info) const {
+	switch (p_info) {
+		case RS::RENDERING_INFO_AREA_SHADOW_MAPS_IN_FRAME:
+			return area_shadows.get_shadow_map_count();
+		case RS::RENDERING_INFO_AREA_SHADOW_DRAW_CALLS_IN_FRAME:
+			return area_shadows.get_last_draw_count();
+		default:
+			return 0;
+	}
+}

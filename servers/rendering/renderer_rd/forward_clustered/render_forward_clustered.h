@@ -204,6 +204,7 @@ public:
 	std::vector<float> render_target_get_data(RID p_render_target) override;
 	std::vector<std::pair<String, double>> get_last_frame_profile() const override { return last_profile; }
 	uint32_t get_last_frame_area_shadow_tests() const override { return last_area_shadow_tests; }
+	uint64_t get_last_frame_rendering_info(RS::RenderingInfo p_info) const override;
 	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
 	bool is_debug_force_all_lights() const { return force_all_lights; }
 	// Test/debug: off compiles the scene shader with AREA_LTC_NO_PRECISION_FIX (Heitz's original acos

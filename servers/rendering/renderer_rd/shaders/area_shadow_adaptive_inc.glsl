@@ -3,8 +3,8 @@
 /**************************************************************************/
 /* Shared structures of the adaptive area-shadow passes                   */
 /* (area_shadow_reprojection.glsl, area_shadow_banding.glsl). C++         */
-/* mirrors: AreaShadowAdaptiveRD::GridData / LightData / PointData /      */
-/* QueryData (servers/rendering/renderer_rd/area_shadow_adaptive.h).      */
+/* mirrors: AreaShadowAdaptiveRD::GridData / AdaptiveLightData /          */
+/* PointData / QueryData (renderer_rd/area_shadow_adaptive.h).            */
 
 #define AREA_SHADOW_ADAPTIVE_MAX_WORDS 3 // 95 points per light: a 9 x 9 tree has 81.
 
@@ -16,7 +16,7 @@ struct GridData { // std430, 32 bytes: one light's cells over the depth buffer.
 	uvec2 extent; // Depth pixels covered.
 };
 
-struct LightData { // std430, 144 bytes.
+struct AdaptiveLightData { // std430, 144 bytes.
 	mat4 light_from_view; // View space -> light space (emission along -Z).
 	vec2 half_size; // Rectangle half extents (m).
 	float depth_scale; // Stored depth = distance * depth_scale.

@@ -33,7 +33,7 @@ layout(set = 0, binding = 1, std430) restrict coherent buffer Flags {
 flags;
 
 layout(set = 0, binding = 2, std430) restrict readonly buffer Lights {
-	LightData data[];
+	AdaptiveLightData data[];
 }
 lights;
 
@@ -75,7 +75,7 @@ void main() {
 	if (id.z >= params.light_count) {
 		return;
 	}
-	LightData l = lights.data[id.z];
+	AdaptiveLightData l = lights.data[id.z];
 	GridData g = l.grid;
 	if (id.x >= g.size.x * g.size.y) {
 		return;

@@ -15,7 +15,7 @@
 /* (area_shadow_banding.glsl) forms each quad's value, the plain mean of  */
 /* its four corners' bits (0, 1/4, ..., 1). Compiled only when a light    */
 /* uses ADAPTIVE (AreaShadowAdaptiveRD creates it on demand).             */
-/* C++ mirrors: AreaShadowAdaptiveRD::LightData / PointData /             */
+/* C++ mirrors: AreaShadowAdaptiveRD::AdaptiveLightData / PointData /     */
 /* ReprojectionPushConstant (renderer_rd/area_shadow_adaptive.h).         */
 
 #[compute]
@@ -32,7 +32,7 @@ layout(set = 0, binding = 1) uniform sampler nearest_sampler;
 layout(set = 0, binding = 2) uniform texture2D shadow_atlas;
 
 layout(set = 0, binding = 3, std430) restrict readonly buffer Lights {
-	LightData data[];
+	AdaptiveLightData data[];
 }
 lights;
 
@@ -66,7 +66,7 @@ vec3 view_position(ivec2 p_pixel) {
 	return v.xyz / v.w;
 }
 
-bool point_sees(const LightData p_l, vec2 p_uv, uint p_tile, vec3 p_pos, vec3 p_normal) {
+bool point_sees(const AdaptiveLightData p_l, vec2 p_uv, uint p_tile, vec3 p_pos, vec3 p_normal) {
 	vec3 sample_pos = vec3((p_uv - 0.5) * 2.0 * p_l.half_size, 0.0);
 	vec3 v = p_pos - sample_pos;
 	if (v.z >= 0.0) {
@@ -93,7 +93,7 @@ void main() {
 	if (id.z >= params.light_count) {
 		return;
 	}
-	LightData l = lights.data[id.z];
+	AdaptiveLightData l = lights.data[id.z];
 	GridData g = l.grid;
 	if (id.x >= g.size.x * g.size.y) {
 		return;
