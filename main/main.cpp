@@ -31,6 +31,7 @@
 #include "modules/benchmark/methods_sweep_command.h"
 #include "modules/benchmark/dolly_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
+#include "modules/benchmark/targets_bench.h"
 #include "modules/gltf/register_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/metrics/image_metrics.h"
@@ -104,7 +105,7 @@ void Main::cleanup() {
 
 Node *Main::load_scene(const String &p_path, String *r_error) {
 	if (p_path.empty()) {
-		return ResourceFormatText::load_scene_from_string(DEMO_SCENE_TSCN, String(GODOT_AREA_ROOT) + "/demo/demo.tscn", r_error);
+		return ResourceFormatText::load_scene_from_string(DEMO_SCENE_TSCN, "demo/demo.tscn (built in)", r_error);
 	}
 	return ResourceFormatText::load_scene(p_path, r_error);
 }
@@ -126,6 +127,7 @@ void _print_usage() {
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
+			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
@@ -476,6 +478,10 @@ int Main::run(int p_argc, char **p_argv) {
 		if (std::find(rest.begin(), rest.end(), String("--accuracy")) != rest.end()) {
 			// The accuracy suite (modules/accuracy) makes its own servers, so it runs before Main::setup().
 			return accuracy_command(rest);
+		}
+		if (std::find(rest.begin(), rest.end(), String("--targets")) != rest.end()) {
+			// bench --targets: issue 17's cost targets, one process, interleaved (modules/benchmark/targets_bench.h).
+			return targets_bench_command(rest);
 		}
 		auto sweep = std::find(rest.begin(), rest.end(), String("--sweep"));
 		if (sweep != rest.end()) {

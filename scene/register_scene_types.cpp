@@ -12,6 +12,8 @@
 #include "scene/3d/node_3d.h"
 #include "scene/3d/visual_instance_3d.h"
 #include "scene/3d/world_environment.h"
+#include "core/io/missing_resource.h"
+#include "scene/main/missing_node.h"
 #include "scene/main/node.h"
 #include "scene/resources/environment.h"
 #include "scene/resources/sky.h"
@@ -26,6 +28,7 @@ void register_scene_types() {
 	// Nodes.
 	GDREGISTER_CLASS(Node);
 	GDREGISTER_CLASS(Node3D);
+	GDREGISTER_CLASS(MissingNode);
 	GDREGISTER_ABSTRACT_CLASS(VisualInstance3D);
 	GDREGISTER_ABSTRACT_CLASS(GeometryInstance3D);
 	GDREGISTER_CLASS(MeshInstance3D);
@@ -54,6 +57,7 @@ void register_scene_types() {
 	GDREGISTER_CLASS(Sky);
 	GDREGISTER_CLASS(Environment);
 	GDREGISTER_CLASS(World3D);
+	GDREGISTER_CLASS(MissingResource);
 }
 
 void unregister_scene_types() {

@@ -24,6 +24,7 @@
 #include "core/variant/variant_caster.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 class ClassDB;
@@ -84,12 +85,21 @@ protected:                                                                      
                                                                                                                                           \
 private:
 
+// Data a file format keeps for an object without interpreting it (the text
+// scene format's unknown properties, groups, connections...; see
+// scene/resources/resource_format_text.h), so a save writes it back.
+struct ObjectFileData {
+	virtual std::unique_ptr<ObjectFileData> clone() const = 0;
+	virtual ~ObjectFileData() {}
+};
+
 class Object {
 	friend class ClassDB;
 	friend class RefCounted;
 
 	bool _is_ref_counted = false;
 	uint32_t _property_list_changed_count = 0;
+	std::unique_ptr<ObjectFileData> _file_data;
 
 protected:
 	// Per-class hooks (see the banner). Object's versions do nothing.
@@ -162,6 +172,10 @@ public:
 	// Sends p_what to every class level's _notification (base first, or
 	// most-derived first when p_reversed).
 	void notification(int p_what, bool p_reversed = false);
+
+	// Null unless a loader kept something (see ObjectFileData).
+	ObjectFileData *get_file_data() const { return _file_data.get(); }
+	void set_file_data(std::unique_ptr<ObjectFileData> p_data) { _file_data = std::move(p_data); }
 
 	Object() {}
 	Object(const Object &) = delete;

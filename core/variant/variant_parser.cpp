@@ -164,11 +164,13 @@ bool _lex_number(VariantParser::Stream &s, Token &r_tk, String &r_err) {
 	if (s.text[s.pos] == '-' || s.text[s.pos] == '+') {
 		s.pos++;
 	}
+	// One pass, constant work per character: an 'x' seen so far makes 'e' a hex digit, not an exponent.
+	bool hex = false;
 	while (!s.is_eof()) {
 		char c = s.text[s.pos];
 		char prev = s.pos > begin ? s.text[s.pos - 1] : 0;
-		bool hex = s.pos - begin >= 2 && (s.text.find_first_of("xX", begin) < s.pos);
 		if (_is_ident_char(c) || c == '.' || ((c == '+' || c == '-') && !hex && (prev == 'e' || prev == 'E'))) {
+			hex = hex || c == 'x' || c == 'X';
 			s.pos++;
 		} else {
 			break;

@@ -4,6 +4,7 @@
 /* godot-area: 8-bit RGBA PNG writer (libpng simplified API).             */
 
 #include "drivers/png/png_writer.h"
+#include "core/io/file_io.h"
 
 #include "core/error/error_macros.h"
 
@@ -37,13 +38,24 @@ bool PNGWriter::save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int
 	image.width = (png_uint_32)p_width;
 	image.height = (png_uint_32)p_height;
 	image.format = PNG_FORMAT_RGBA; // 8-bit, sRGB-encoded.
-	const int ok = png_image_write_to_file(&image, p_path.c_str(), 0, p_rgba8.data(), 0, nullptr);
+	// Encoded in memory, then written atomically (core/io/file_io.h): a failed write leaves no partial PNG.
+	png_alloc_size_t size = 0;
+	int ok = png_image_write_get_memory_size(image, size, 0, p_rgba8.data(), 0, nullptr);
+	std::vector<uint8_t> encoded;
+	if (ok) {
+		encoded.resize(size);
+		ok = png_image_write_to_memory(&image, encoded.data(), &size, 0, p_rgba8.data(), 0, nullptr);
+	}
 	if (!ok) {
 		const String reason = image.message[0] ? String(image.message) : String("unknown libpng error");
 		png_image_free(&image);
 		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": %s.", p_path.c_str(), reason.c_str()));
 	}
 	png_image_free(&image);
+	String error;
+	if (!file_write_atomic(p_path, encoded.data(), size, &error)) {
+		return _png_write_fail(r_error, vformat("Cannot write PNG: %s", error.c_str()));
+	}
 	return true;
 }
 

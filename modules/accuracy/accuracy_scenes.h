@@ -27,7 +27,8 @@
 /* Energy: chosen per scene so that a Lambert surface at p would have     */
 /* radiance 0.5 (the irradiance at p integrated by a 64 x 64 midpoint     */
 /* rule), so every scene is well exposed for the LDR metrics. Range is    */
-/* large and attenuation 0: W(d) = 1, the purely physical integral.       */
+/* ten times the lit distance and attenuation 2 (physical): W(d) >= 1 -    */
+/* 2e-4, the purely physical integral.                                    */
 
 #pragma once
 

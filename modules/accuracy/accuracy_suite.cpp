@@ -4,6 +4,7 @@
 /* godot-area: the area-light accuracy suite runner (see the header).     */
 
 #include "modules/accuracy/accuracy_suite.h"
+#include "core/io/file_io.h"
 
 #include "core/error/error_macros.h"
 #include "core/io/tonemap.h"
@@ -258,10 +259,11 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 }
 
 bool AccuracySuite::write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error) {
-	FILE *f = fopen(p_path.c_str(), "w");
+	FileWriteBuffer out; // Written atomically by commit(): no partial CSV on a full disk.
+	FILE *f = out.file();
 	if (!f) {
 		if (r_error) {
-			*r_error = "Cannot open '" + p_path + "' for writing the accuracy CSV.";
+			*r_error = "Cannot write the accuracy CSV '" + p_path + "': out of memory.";
 		}
 		return false;
 	}
@@ -271,11 +273,7 @@ bool AccuracySuite::write_csv(const String &p_path, const std::vector<Row> &p_ro
 				csv_field(r.placement).c_str(), r.method, csv_field(r.method_name).c_str(), r.resolution, r.rmse, r.relative_mse, r.mae, r.pearson, r.ssim, r.flip, r.hdr_flip, r.engine_ms, r.engine_gpu_ms,
 				r.reference_ms, r.reference_samples_per_pixel);
 	}
-	bool ok = fclose(f) == 0;
-	if (!ok && r_error) {
-		*r_error = "Writing the accuracy CSV '" + p_path + "' failed.";
-	}
-	return ok;
+	return out.commit(p_path, r_error);
 }
 
 String AccuracySuite::summary_table(const std::vector<Row> &p_rows) {

@@ -10,10 +10,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#ifndef GODOT_AREA_ROOT
-#define GODOT_AREA_ROOT "."
-#endif
-
 namespace {
 
 bool file_exists(const String &p_path) {
@@ -26,10 +22,11 @@ String chart_python() {
 	return env_python != nullptr && env_python[0] != '\0' ? String(env_python) : String("/usr/bin/python3");
 }
 
-// The script under GODOT_AREA_ROOT, else relative to the working directory.
+// The chart scripts are development tools of the source tree: run from its root, or point
+// $GODOT_AREA_SOURCE at it.
 String chart_script(const String &p_script) {
-	const String script = String(GODOT_AREA_ROOT) + "/misc/scripts/" + p_script;
-	return file_exists(script) ? script : "misc/scripts/" + p_script;
+	const char *source = getenv("GODOT_AREA_SOURCE");
+	return (source != nullptr && source[0] != '\0' ? String(source) + "/" : String()) + "misc/scripts/" + p_script;
 }
 
 bool fail(String *r_error, const String &p_message) {

@@ -4,7 +4,7 @@
 /* godot-area: runs a sweep's chart script (misc/scripts/<name>.py) with  */
 /* matplotlib at the end of a `bench --sweep` command. The interpreter is */
 /* /usr/bin/python3 (GODOT_AREA_PYTHON picks another); the script is      */
-/* looked up under GODOT_AREA_ROOT, then relative to the working          */
+/* looked up under $GODOT_AREA_SOURCE, else relative to the working      */
 /* directory. Charts go next to the CSV (--out <CSV directory>).          */
 
 #pragma once

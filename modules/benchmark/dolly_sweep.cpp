@@ -4,6 +4,7 @@
 /* godot-area: the adaptive-shadow dolly benchmark (see the header).      */
 
 #include "modules/benchmark/dolly_sweep.h"
+#include "core/io/file_io.h"
 
 #include "core/math/math_funcs.h"
 #include "modules/benchmark/penumbra_scene.h"
@@ -382,10 +383,11 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 }
 
 bool DollySweep::write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error) {
-	FILE *f = fopen(p_path.c_str(), "w");
+	FileWriteBuffer out; // Written atomically by commit(): no partial CSV on a full disk.
+	FILE *f = out.file();
 	if (!f) {
 		if (r_error) {
-			*r_error = "cannot write " + p_path;
+			*r_error = "cannot write " + p_path + ": out of memory";
 		}
 		return false;
 	}
@@ -395,8 +397,7 @@ bool DollySweep::write_csv(const String &p_path, const std::vector<Row> &p_rows,
 				r.atlas, r.subdivision, r.tile, r.maps, r.draws, r.converge_frames, r.shadow_maps_ms, r.reprojection_ms, r.banding_ms, r.total_ms, r.cpu_ms,
 				r.visibility_rmse, r.penumbra_rmse);
 	}
-	fclose(f);
-	return true;
+	return out.commit(p_path, r_error);
 }
 
 DollySweep::Targets DollySweep::compute_targets(const std::vector<Row> &p_rows) {

@@ -4,6 +4,7 @@
 /* godot-area: the shading-method sweep (see methods_sweep.h).            */
 
 #include "modules/benchmark/methods_sweep.h"
+#include "core/io/file_io.h"
 
 #include "core/error/error_macros.h"
 #include "modules/accuracy/accuracy_scenes.h"
@@ -391,10 +392,11 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 }
 
 bool MethodsSweep::write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error) {
-	FILE *f = fopen(p_path.c_str(), "w");
+	FileWriteBuffer out; // Written atomically by commit(): no partial CSV on a full disk.
+	FILE *f = out.file();
 	if (!f) {
 		if (r_error) {
-			*r_error = "Cannot write the sweep CSV '" + p_path + "'.";
+			*r_error = "Cannot write the sweep CSV '" + p_path + "': out of memory.";
 		}
 		return false;
 	}
@@ -403,11 +405,7 @@ bool MethodsSweep::write_csv(const String &p_path, const std::vector<Row> &p_row
 		fprintf(f, "%s,%s,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%s,%.6g,%.6g,%.6g,%.6g\n", r.section.c_str(), r.config.c_str(), r.method, r.samples, r.lights, r.width, r.height,
 				r.gpu_ms_opaque, r.gpu_ms_total, r.wall_ms, r.scene.c_str(), r.flip, r.rmse, r.ssim, r.hdr_flip);
 	}
-	const bool ok = fclose(f) == 0;
-	if (!ok && r_error) {
-		*r_error = "Writing the sweep CSV '" + p_path + "' failed.";
-	}
-	return ok;
+	return out.commit(p_path, r_error);
 }
 
 bool MethodsSweep::write_shader_sources(const String &p_dir, String *r_error) {
@@ -427,12 +425,8 @@ bool MethodsSweep::write_shader_sources(const String &p_dir, String *r_error) {
 	std::filesystem::create_directories(p_dir, ec);
 	auto write = [&](const String &p_name, const String &p_text) {
 		const String path = p_dir + "/" + p_name;
-		FILE *f = fopen(path.c_str(), "w");
-		if (!f) {
-			return false;
-		}
-		fwrite(p_text.data(), 1, p_text.size(), f);
-		return fclose(f) == 0;
+		String error;
+		return file_write_atomic(path, p_text, &error);
 	};
 	if (!write("base.frag", shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, RenderForwardClustered::SCENE_SHADER_COLOR))) {
 		return fail("Cannot write shader sources under '" + p_dir + "'.");

@@ -108,7 +108,7 @@ bool PenumbraScene::create(RendererLightStorage *p_light_storage, RendererMeshSt
 	light_storage->light_area_set_size(light, p_settings.light_size);
 	light_storage->light_set_param(light, RS::LIGHT_PARAM_ENERGY, p_settings.light_energy);
 	light_storage->light_set_param(light, RS::LIGHT_PARAM_RANGE, p_settings.light_range);
-	light_storage->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+	light_storage->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
 	RenderSceneData::GeometryInstance g;
 	g.mesh = floor_mesh;
 	g.material_override = material;

@@ -4,6 +4,7 @@
 /* godot-area: the area soft-shadow sweep (see the header).               */
 
 #include "modules/benchmark/shadows_sweep.h"
+#include "core/io/file_io.h"
 
 #include "core/math/math_funcs.h"
 #include "modules/benchmark/penumbra_scene.h"
@@ -251,10 +252,11 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 }
 
 bool ShadowsSweep::write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error) {
-	FILE *f = fopen(p_path.c_str(), "w");
+	FileWriteBuffer out; // Written atomically by commit(): no partial CSV on a full disk.
+	FILE *f = out.file();
 	if (!f) {
 		if (r_error) {
-			*r_error = "cannot write " + p_path;
+			*r_error = "cannot write " + p_path + ": out of memory";
 		}
 		return false;
 	}
@@ -262,6 +264,5 @@ bool ShadowsSweep::write_csv(const String &p_path, const std::vector<Row> &p_row
 	for (const Row &r : p_rows) {
 		fprintf(f, "%s,%s,%d,%d,%d,%d,%g,%.6f,%.4f\n", r.section.c_str(), r.mode.c_str(), r.atlas, r.subdivision, r.tile, r.maps, double(r.blur), r.visibility_rmse, r.shadow_ms);
 	}
-	fclose(f);
-	return true;
+	return out.commit(p_path, r_error);
 }

@@ -18,12 +18,32 @@
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #include <tiny_gltf.h>
 
+#include <filesystem>
 #include <fstream>
+#include <new>
+#include <stdexcept>
 
 namespace {
 
-bool _load_image(tinygltf::Image *r_image, const int p_index, std::string *r_err, std::string *r_warn, int p_req_w, int p_req_h, const unsigned char *p_bytes, int p_size, void *) {
+// Largest glTF/GLB file read (the JSON or GLB container; external buffers are bounded the same way).
+constexpr uint64_t MAX_GLTF_FILE_BYTES = uint64_t(1) << 30;
+// Largest decoded image (pixels); stb's own limit is per side.
+constexpr uint64_t MAX_IMAGE_PIXELS = uint64_t(1) << 28;
+
+bool _decode_image(tinygltf::Image *r_image, const int p_index, std::string *r_err, const unsigned char *p_bytes, int p_size) {
 	int w = 0, h = 0, comp = 0;
+	if (p_size <= 0 || !stbi_info_from_memory(p_bytes, p_size, &w, &h, &comp)) {
+		if (r_err) {
+			*r_err += vformat("image %d could not be decoded (%s).\n", p_index, stbi_failure_reason() ? stbi_failure_reason() : "empty");
+		}
+		return false;
+	}
+	if (w <= 0 || h <= 0 || uint64_t(w) * uint64_t(h) > MAX_IMAGE_PIXELS) {
+		if (r_err) {
+			*r_err += vformat("image %d is %d x %d pixels, larger than the %llu-pixel limit.\n", p_index, w, h, (unsigned long long)MAX_IMAGE_PIXELS);
+		}
+		return false;
+	}
 	unsigned char *pixels = stbi_load_from_memory(p_bytes, p_size, &w, &h, &comp, 4);
 	if (!pixels) {
 		if (r_err) {
@@ -41,10 +61,145 @@ bool _load_image(tinygltf::Image *r_image, const int p_index, std::string *r_err
 	return true;
 }
 
+bool _load_image(tinygltf::Image *r_image, const int p_index, std::string *r_err, std::string *r_warn, int p_req_w, int p_req_h, const unsigned char *p_bytes, int p_size, void *) {
+	if (r_image->bufferView >= 0) {
+		// tinygltf passes a buffer view's bytes without checking the view against its buffer; such images are
+		// decoded in _convert() once the view's bounds are validated.
+		return true;
+	}
+	return _decode_image(r_image, p_index, r_err, p_bytes, p_size);
+}
+
+// File access for tinygltf (external buffers and images): a URI must resolve inside the folder of the glTF file
+// (glTF 2.0 §3.3.2 allows relative URIs; nothing requires reaching above the asset's folder).
+struct ConfinedFs {
+	std::filesystem::path root;
+
+	bool contains(const std::string &p_path) const {
+		std::error_code ec;
+		std::filesystem::path abs = std::filesystem::weakly_canonical(std::filesystem::absolute(p_path, ec), ec);
+		if (ec) {
+			return false;
+		}
+		auto r = root.begin(), a = abs.begin();
+		for (; r != root.end(); ++r, ++a) {
+			if (a == abs.end() || *a != *r) {
+				return false;
+			}
+		}
+		return true;
+	}
+};
+
+bool _fs_exists(const std::string &p_path, void *p_user) {
+	// Existence only: _fs_read() refuses a file outside the folder with an error saying so.
+	std::error_code ec;
+	return std::filesystem::is_regular_file(p_path, ec);
+}
+
+std::string _fs_expand(const std::string &p_path, void *) {
+	return p_path; // No '~' or environment expansion: a URI is a path relative to the asset.
+}
+
+bool _read_bounded(const std::string &p_path, std::vector<unsigned char> *r_out, std::string *r_err) {
+	std::ifstream f(p_path, std::ios::binary);
+	if (!f) {
+		*r_err = "cannot open";
+		return false;
+	}
+	r_out->clear();
+	char chunk[65536];
+	while (f) {
+		f.read(chunk, sizeof(chunk));
+		r_out->insert(r_out->end(), chunk, chunk + f.gcount());
+		if (r_out->size() > MAX_GLTF_FILE_BYTES) {
+			*r_err = vformat("larger than the %llu-byte limit", (unsigned long long)MAX_GLTF_FILE_BYTES);
+			return false;
+		}
+	}
+	if (f.bad()) {
+		*r_err = "read error";
+		return false;
+	}
+	return true;
+}
+
+bool _fs_read(std::vector<unsigned char> *r_out, std::string *r_err, const std::string &p_path, void *p_user) {
+	const ConfinedFs *fs = static_cast<const ConfinedFs *>(p_user);
+	if (!fs->contains(p_path)) {
+		*r_err = vformat("URI resolves outside the glTF file's folder '%s'", fs->root.string().c_str());
+		return false;
+	}
+	return _read_bounded(p_path, r_out, r_err);
+}
+
+bool _fs_write(std::string *r_err, const std::string &, const std::vector<unsigned char> &, void *) {
+	*r_err = "writing is not supported";
+	return false;
+}
+
+void _setup_loader(tinygltf::TinyGLTF &r_loader, ConfinedFs &r_fs, const String &p_base_dir) {
+	std::error_code ec;
+	r_fs.root = std::filesystem::weakly_canonical(std::filesystem::absolute(p_base_dir.empty() ? String(".") : p_base_dir, ec), ec);
+	r_loader.SetImageLoader(_load_image, nullptr);
+	tinygltf::FsCallbacks cb;
+	cb.FileExists = _fs_exists;
+	cb.ExpandFilePath = _fs_expand;
+	cb.ReadWholeFile = _fs_read;
+	cb.WriteWholeFile = _fs_write;
+	cb.user_data = &r_fs;
+	r_loader.SetFsCallbacks(cb);
+}
+
+// Validates that accessor p_acc (elements of p_elem_size bytes) lies inside its buffer view and buffer, with
+// every sum and product checked for overflow before it is used (glTF 2.0 §3.6.2.4 "Data alignment" and
+// §5.1/§5.11 limits). On success r_start is the first byte and r_stride the distance between elements.
+bool _accessor_span(const tinygltf::Model &p_model, int p_index, const char *p_what, size_t p_elem_size, size_t *r_start, size_t *r_stride, String *r_error) {
+	const tinygltf::Accessor &acc = p_model.accessors[p_index];
+	if (acc.bufferView < 0 || size_t(acc.bufferView) >= p_model.bufferViews.size()) {
+		*r_error = vformat("%s accessor %d: field 'bufferView' = %d is out of range (%d buffer views; sparse accessors are not supported)", p_what, p_index, acc.bufferView, int(p_model.bufferViews.size()));
+		return false;
+	}
+	const tinygltf::BufferView &view = p_model.bufferViews[acc.bufferView];
+	if (view.buffer < 0 || size_t(view.buffer) >= p_model.buffers.size()) {
+		*r_error = vformat("%s accessor %d: bufferView %d field 'buffer' = %d is out of range (%d buffers)", p_what, p_index, acc.bufferView, view.buffer, int(p_model.buffers.size()));
+		return false;
+	}
+	const size_t buffer_size = p_model.buffers[view.buffer].data.size();
+	// The view must lie inside its buffer.
+	if (view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset) {
+		*r_error = vformat("%s accessor %d: bufferView %d (byteOffset %llu, byteLength %llu) lies outside buffer %d (%llu bytes)", p_what, p_index, acc.bufferView,
+				(unsigned long long)view.byteOffset, (unsigned long long)view.byteLength, view.buffer, (unsigned long long)buffer_size);
+		return false;
+	}
+	const size_t stride = view.byteStride ? view.byteStride : p_elem_size;
+	if (stride < p_elem_size) {
+		*r_error = vformat("%s accessor %d: bufferView %d field 'byteStride' = %d is smaller than an element (%d bytes)", p_what, p_index, acc.bufferView, int(view.byteStride), int(p_elem_size));
+		return false;
+	}
+	if (acc.byteOffset > view.byteLength) {
+		*r_error = vformat("%s accessor %d: field 'byteOffset' = %llu is past the end of bufferView %d (%llu bytes)", p_what, p_index, (unsigned long long)acc.byteOffset, acc.bufferView, (unsigned long long)view.byteLength);
+		return false;
+	}
+	if (acc.count > 0) {
+		// Bytes the accessor reads inside the view: stride * (count - 1) + element, overflow-checked.
+		const size_t room = view.byteLength - acc.byteOffset;
+		const size_t last = acc.count - 1;
+		if (room < p_elem_size || last > (room - p_elem_size) / stride) {
+			*r_error = vformat("%s accessor %d: field 'count' = %llu reads past the end of bufferView %d (%llu bytes from byteOffset %llu, stride %llu)", p_what, p_index,
+					(unsigned long long)acc.count, acc.bufferView, (unsigned long long)view.byteLength, (unsigned long long)acc.byteOffset, (unsigned long long)stride);
+			return false;
+		}
+	}
+	*r_start = view.byteOffset + acc.byteOffset;
+	*r_stride = stride;
+	return true;
+}
+
 // Reads accessor p_index as p_comps floats per element. Returns false (with r_error) for unsupported layouts.
 bool _read_floats(const tinygltf::Model &p_model, int p_index, int p_comps, std::vector<float> &r_out, String *r_error) {
 	if (p_index < 0 || p_index >= int(p_model.accessors.size())) {
-		*r_error = vformat("accessor index %d is out of range", p_index);
+		*r_error = vformat("accessor index %d is out of range (%d accessors)", p_index, int(p_model.accessors.size()));
 		return false;
 	}
 	const tinygltf::Accessor &acc = p_model.accessors[p_index];
@@ -56,19 +211,12 @@ bool _read_floats(const tinygltf::Model &p_model, int p_index, int p_comps, std:
 		*r_error = vformat("accessor %d has %d components, expected %d", p_index, tinygltf::GetNumComponentsInType(acc.type), p_comps);
 		return false;
 	}
-	if (acc.bufferView < 0 || acc.bufferView >= int(p_model.bufferViews.size())) {
-		*r_error = vformat("accessor %d has no valid buffer view (sparse accessors are not supported)", p_index);
+	size_t start = 0, stride = 0;
+	if (!_accessor_span(p_model, p_index, "attribute", sizeof(float) * p_comps, &start, &stride, r_error)) {
 		return false;
 	}
-	const tinygltf::BufferView &view = p_model.bufferViews[acc.bufferView];
-	const tinygltf::Buffer &buffer = p_model.buffers[view.buffer];
-	size_t stride = view.byteStride ? view.byteStride : sizeof(float) * p_comps;
-	size_t start = view.byteOffset + acc.byteOffset;
-	size_t needed = acc.count == 0 ? 0 : start + stride * (acc.count - 1) + sizeof(float) * p_comps;
-	if (needed > buffer.data.size()) {
-		*r_error = vformat("accessor %d reads past the end of buffer %d", p_index, view.buffer);
-		return false;
-	}
+	const tinygltf::Buffer &buffer = p_model.buffers[p_model.bufferViews[acc.bufferView].buffer];
+	// count fits in the buffer (checked above), so count * p_comps floats cannot overflow.
 	r_out.resize(acc.count * p_comps);
 	for (size_t i = 0; i < acc.count; i++) {
 		memcpy(&r_out[i * p_comps], buffer.data.data() + start + i * stride, sizeof(float) * p_comps);
@@ -78,7 +226,7 @@ bool _read_floats(const tinygltf::Model &p_model, int p_index, int p_comps, std:
 
 bool _read_indices(const tinygltf::Model &p_model, int p_index, std::vector<uint32_t> &r_out, String *r_error) {
 	if (p_index < 0 || p_index >= int(p_model.accessors.size())) {
-		*r_error = vformat("index accessor %d is out of range", p_index);
+		*r_error = vformat("field 'indices' = %d is out of range (%d accessors)", p_index, int(p_model.accessors.size()));
 		return false;
 	}
 	const tinygltf::Accessor &acc = p_model.accessors[p_index];
@@ -97,18 +245,11 @@ bool _read_indices(const tinygltf::Model &p_model, int p_index, std::vector<uint
 			*r_error = vformat("index accessor %d has unsupported component type %d", p_index, acc.componentType);
 			return false;
 	}
-	if (acc.bufferView < 0 || acc.bufferView >= int(p_model.bufferViews.size())) {
-		*r_error = vformat("index accessor %d has no valid buffer view", p_index);
+	size_t start = 0, stride = 0;
+	if (!_accessor_span(p_model, p_index, "index", size, &start, &stride, r_error)) {
 		return false;
 	}
-	const tinygltf::BufferView &view = p_model.bufferViews[acc.bufferView];
-	const tinygltf::Buffer &buffer = p_model.buffers[view.buffer];
-	size_t stride = view.byteStride ? view.byteStride : size;
-	size_t start = view.byteOffset + acc.byteOffset;
-	if (acc.count && start + stride * (acc.count - 1) + size > buffer.data.size()) {
-		*r_error = vformat("index accessor %d reads past the end of buffer %d", p_index, view.buffer);
-		return false;
-	}
+	const tinygltf::Buffer &buffer = p_model.buffers[p_model.bufferViews[acc.bufferView].buffer];
 	r_out.resize(acc.count);
 	for (size_t i = 0; i < acc.count; i++) {
 		const uint8_t *p = buffer.data.data() + start + i * stride;
@@ -141,27 +282,19 @@ Basis _basis_from_quaternion(double p_x, double p_y, double p_z, double p_w) {
 } // namespace
 
 bool GLTFDocument::parse_file(const String &p_path, String *r_error) {
-	std::ifstream f(p_path, std::ios::binary);
-	if (!f) {
-		*r_error = vformat("Cannot open glTF file '%s'.", p_path.c_str());
+	std::vector<unsigned char> bytes;
+	std::string read_err;
+	if (!_read_bounded(p_path, &bytes, &read_err)) {
+		*r_error = vformat("Cannot read glTF file '%s' (%s).", p_path.c_str(), read_err.c_str());
 		return false;
 	}
-	String data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 	String base_dir = p_path.find('/') == String::npos ? String(".") : p_path.substr(0, p_path.rfind('/'));
 	String error;
 	bool ok = false;
-	if (data.size() >= 4 && data.compare(0, 4, "glTF") == 0) {
-		tinygltf::TinyGLTF loader;
-		loader.SetImageLoader(_load_image, nullptr);
-		tinygltf::Model model;
-		std::string err, warn;
-		if (!loader.LoadBinaryFromMemory(&model, &err, &warn, (const unsigned char *)data.data(), (unsigned int)data.size(), base_dir)) {
-			error = "invalid glTF binary: " + string_strip_edges(err);
-		} else {
-			ok = _convert(&model, &error);
-		}
+	if (bytes.size() >= 4 && memcmp(bytes.data(), "glTF", 4) == 0) {
+		ok = _parse(bytes.data(), bytes.size(), true, base_dir, &error);
 	} else {
-		ok = parse_string(data, base_dir, &error);
+		ok = _parse(bytes.data(), bytes.size(), false, base_dir, &error);
 	}
 	if (!ok) {
 		*r_error = vformat("'%s': %s", p_path.c_str(), error.c_str());
@@ -170,28 +303,78 @@ bool GLTFDocument::parse_file(const String &p_path, String *r_error) {
 }
 
 bool GLTFDocument::parse_string(const String &p_text, const String &p_base_dir, String *r_error) {
-	tinygltf::TinyGLTF loader;
-	loader.SetImageLoader(_load_image, nullptr);
-	tinygltf::Model model;
-	std::string err, warn;
-	if (!loader.LoadASCIIFromString(&model, &err, &warn, p_text.c_str(), (unsigned int)p_text.size(), p_base_dir)) {
-		*r_error = "invalid glTF: " + string_strip_edges(err);
-		return false;
-	}
-	return _convert(&model, r_error);
+	return _parse(reinterpret_cast<const uint8_t *>(p_text.data()), p_text.size(), false, p_base_dir, r_error);
 }
 
-bool GLTFDocument::_convert(const void *p_model, String *r_error) {
-	const tinygltf::Model &model = *static_cast<const tinygltf::Model *>(p_model);
+bool GLTFDocument::parse_glb(const uint8_t *p_data, size_t p_size, const String &p_base_dir, String *r_error) {
+	return _parse(p_data, p_size, true, p_base_dir, r_error);
+}
+
+bool GLTFDocument::_parse(const uint8_t *p_data, size_t p_size, bool p_binary, const String &p_base_dir, String *r_error) {
 	meshes.clear();
 	materials.clear();
 	images.clear();
 	nodes.clear();
 	root_nodes.clear();
+	if (p_size > MAX_GLTF_FILE_BYTES) {
+		*r_error = vformat("%llu bytes is larger than the %llu-byte limit", (unsigned long long)p_size, (unsigned long long)MAX_GLTF_FILE_BYTES);
+		return false;
+	}
+	// Nothing thrown by tinygltf, its JSON parser or an allocation escapes: it becomes an error.
+	try {
+		tinygltf::TinyGLTF loader;
+		ConfinedFs fs;
+		_setup_loader(loader, fs, p_base_dir);
+		tinygltf::Model model;
+		std::string err, warn;
+		bool loaded = p_binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, p_data, (unsigned int)p_size, p_base_dir)
+							   : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char *>(p_data), (unsigned int)p_size, p_base_dir);
+		if (!loaded) {
+			*r_error = String(p_binary ? "invalid glTF binary: " : "invalid glTF: ") + string_strip_edges(err);
+			return false;
+		}
+		if (_convert(&model, r_error)) {
+			return true;
+		}
+	} catch (const std::bad_alloc &) {
+		*r_error = "out of memory while reading the file";
+	} catch (const std::exception &e) {
+		*r_error = vformat("malformed content (%s)", e.what());
+	}
+	meshes.clear();
+	materials.clear();
+	images.clear();
+	nodes.clear();
+	root_nodes.clear();
+	return false;
+}
 
-	for (const tinygltf::Image &img : model.images) {
+bool GLTFDocument::_convert(const void *p_model, String *r_error) {
+	const tinygltf::Model &model = *static_cast<const tinygltf::Model *>(p_model);
+
+	for (size_t ii = 0; ii < model.images.size(); ii++) {
+		const tinygltf::Image &src = model.images[ii];
+		tinygltf::Image decoded;
+		const tinygltf::Image *use = &src;
+		if (src.bufferView >= 0) {
+			// tinygltf checked the view and buffer indices, not the view's bytes against the buffer.
+			const tinygltf::BufferView &view = model.bufferViews[src.bufferView];
+			const size_t buffer_size = model.buffers[view.buffer].data.size();
+			if (view.byteOffset > buffer_size || view.byteLength > buffer_size - view.byteOffset || view.byteLength > size_t(INT32_MAX)) {
+				*r_error = vformat("image %d: bufferView %d (byteOffset %llu, byteLength %llu) lies outside buffer %d (%llu bytes)", int(ii), src.bufferView,
+						(unsigned long long)view.byteOffset, (unsigned long long)view.byteLength, view.buffer, (unsigned long long)buffer_size);
+				return false;
+			}
+			std::string err;
+			if (!_decode_image(&decoded, int(ii), &err, model.buffers[view.buffer].data.data() + view.byteOffset, int(view.byteLength))) {
+				*r_error = string_strip_edges(err);
+				return false;
+			}
+			use = &decoded;
+		}
+		const tinygltf::Image &img = *use;
 		GLTFImageData d;
-		d.name = img.name;
+		d.name = src.name;
 		if (img.component == 4 && img.bits == 8) {
 			d.width = img.width;
 			d.height = img.height;

@@ -65,12 +65,16 @@ class GLTFDocument {
 
 	// p_model is a tinygltf::Model (kept out of this header so users need not include tinygltf).
 	bool _convert(const void *p_model, String *r_error);
+	bool _parse(const uint8_t *p_data, size_t p_size, bool p_binary, const String &p_base_dir, String *r_error);
 
 public:
 	// Reads a .gltf (JSON) or .glb file. On failure returns false and names the file and problem in r_error.
 	bool parse_file(const String &p_path, String *r_error);
 	// Parses glTF JSON text; external buffers/images are resolved relative to p_base_dir.
+	// External URIs must resolve inside p_base_dir. No exception escapes either call; on failure the document is empty.
 	bool parse_string(const String &p_text, const String &p_base_dir, String *r_error);
+	// Parses a GLB container held in memory (the fuzz harness uses this).
+	bool parse_glb(const uint8_t *p_data, size_t p_size, const String &p_base_dir, String *r_error);
 
 	const std::vector<GLTFMeshData> &get_meshes() const { return meshes; }
 	const std::vector<GLTFMaterialData> &get_materials() const { return materials; }

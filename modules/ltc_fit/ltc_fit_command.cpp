@@ -19,10 +19,6 @@
 #include <thread>
 #include <unistd.h>
 
-#ifndef GODOT_AREA_ROOT
-#define GODOT_AREA_ROOT "."
-#endif
-
 namespace {
 
 void _print_usage() {
@@ -54,10 +50,10 @@ int _polynomial_command(const std::vector<String> &p_args, size_t p_first) {
 		command += " " + a + " " + p_args[i];
 	}
 	if (out_path.empty()) {
-		out_path = String(GODOT_AREA_ROOT) + "/" + LTCPolynomial::DEFAULT_INC_PATH;
+		out_path = String(LTCPolynomial::DEFAULT_INC_PATH);
 	}
 	if (glsl_path.empty()) {
-		glsl_path = String(GODOT_AREA_ROOT) + "/" + LTCPolynomial::DEFAULT_GLSL_PATH;
+		glsl_path = String(LTCPolynomial::DEFAULT_GLSL_PATH);
 	}
 	LTCPolynomial::Fit fit;
 	if (!LTCPolynomial::fit_table(LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX), LTCTableIO::get_builtin_size(), fit)) {
@@ -331,7 +327,7 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 		return 0;
 	}
 	if (out_path.empty()) {
-		out_path = String(GODOT_AREA_ROOT) + "/" + LTCTableIO::DEFAULT_INC_PATH;
+		out_path = String(LTCTableIO::DEFAULT_INC_PATH);
 	}
 	const String text = LTCTableIO::format_inc(size, tables[LTC_BRDF_ENGINE_GGX], tables[LTC_BRDF_SMITH_GGX], command, stats_text);
 	if (!LTCTableIO::save_inc(out_path, text)) {

@@ -8,9 +8,9 @@
 /*   godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH]   */
 /*                      [--cells r0:r1,t0:t1] [--threads N]               */
 /*                                                                        */
-/* Defaults: --size 64, --brdf both, -o <GODOT_AREA_ROOT>/servers/        */
-/* rendering/renderer_rd/ltc_lut_data.inc, --threads 0 (= hardware        */
-/* concurrency). A variant that is not fitted keeps its built-in table.   */
+/* Defaults: --size 64, --brdf both, -o servers/rendering/renderer_rd/    */
+/* ltc_lut_data.inc (relative: run from the source root), --threads 0    */
+/* (= hardware concurrency). A variant that is not fitted keeps its built-in table.   */
 /* --cells fits only roughness indices r0..r1 and view-angle indices      */
 /* t0..t1 (inclusive), starting each chain from the built-in table, and   */
 /* prints them with their difference to the built-in table; it writes a   */

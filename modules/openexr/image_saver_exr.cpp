@@ -5,17 +5,40 @@
 /* exceptions; all of them are caught here and turned into messages.      */
 
 #include "modules/openexr/image_saver_exr.h"
+#include "core/io/file_io.h"
 
 #include "core/error/error_macros.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <Imath/half.h>
 
+#include <cstring>
 #include <exception>
 #include <vector>
+
+// Collects the encoded file in memory; ImageSaverEXR::save() then writes it atomically.
+class _EXRMemoryStream : public Imf::OStream {
+	std::vector<char> bytes;
+	uint64_t position = 0;
+
+public:
+	_EXRMemoryStream() :
+			Imf::OStream("memory") {}
+	void write(const char p_c[], int p_n) override {
+		if (position + uint64_t(p_n) > bytes.size()) {
+			bytes.resize(position + p_n);
+		}
+		memcpy(bytes.data() + position, p_c, p_n);
+		position += p_n;
+	}
+	uint64_t tellp() override { return position; }
+	void seekp(uint64_t p_pos) override { position = p_pos; }
+	const std::vector<char> &get_bytes() const { return bytes; }
+};
 
 static bool _exr_save_fail(String *r_error, const String &p_message) {
 	if (r_error) {
@@ -62,9 +85,16 @@ bool ImageSaverEXR::save(const Image &p_image, const String &p_path, bool p_half
 			}
 		}
 
-		Imf::OutputFile file(p_path.c_str(), header);
-		file.setFrameBuffer(frame_buffer);
-		file.writePixels(height);
+		_EXRMemoryStream stream;
+		{
+			Imf::OutputFile file(stream, header);
+			file.setFrameBuffer(frame_buffer);
+			file.writePixels(height);
+		} // The destructor writes the line offset table.
+		String error;
+		if (!file_write_atomic(p_path, stream.get_bytes().data(), stream.get_bytes().size(), &error)) {
+			return _exr_save_fail(r_error, vformat("Cannot write EXR: %s", error.c_str()));
+		}
 	} catch (const std::exception &e) {
 		return _exr_save_fail(r_error, vformat("Cannot write EXR \"%s\": %s", p_path.c_str(), e.what()));
 	} catch (...) {

@@ -9,8 +9,9 @@
 /*         normalize_energy, else 1; a * b == 0 emits exactly 0;          */
 /*   L_o(x) = W(d) * integral over the rectangle of f(l, v) L_e (n.l) dw, */
 /*         one-sided: only points strictly in front (local -Z) are lit;   */
-/*   W(d) = (max(1 - (d / r)^4, 0)^2)^attenuation, d = distance from x to */
-/*         the closest point of the rectangle, d >= r gives exactly 0.    */
+/*   W(d) = max(1 - (d / r)^4, 0)^2 * max(d, 1e-4)^(2 - attenuation),     */
+/*         d = distance from x to the closest point of the rectangle,     */
+/*         d >= r gives exactly 0 (upstream Godot 4.7's area light).      */
 /* The integral itself (solid-angle and GGX samples combined by MIS,      */
 /* shadow rays by callback) is area_light_integrate() in                  */
 /* area_light_integrator.h.                                               */
@@ -39,7 +40,7 @@ struct AreaLightData {
 	float size_y = 0.0f; // Metres.
 	Vector3 radiance; // L_e per channel (W / (m^2 sr) in engine units), negative for negative lights.
 	float range = 0.0f; // Metres from the closest point of the rectangle.
-	float attenuation = 1.0f; // Exponent of the range window (>= 0; 0 = no window).
+	float attenuation = 1.0f; // area_attenuation: distance exponent (2 = physical, window only).
 	float specular_amount = 1.0f; // "light_specular".
 	uint32_t cull_mask = 0xFFFFFFFF;
 
@@ -89,20 +90,23 @@ inline float area_light_closest_distance(const AreaLightData &p_light, const Vec
 	return std::sqrt(du * du + dv * dv + w * w);
 }
 
-// Range window W(d) = (max(1 - (d / r)^4, 0)^2)^attenuation: exactly 0 for d >= r (and for r <= 0),
-// exactly 1 for attenuation 0 inside the range. Unitless, in [0, 1].
+// Distance attenuation of upstream Godot 4.7's area light, a = area_attenuation a distance exponent:
+// W(d) = max(1 - (d / r)^4, 0)^2 * max(d, 1e-4)^(2 - a). The integral over the rectangle already
+// falls off as the inverse square, so a = 2 is physical (window only). Exactly 0 for d >= r (and for
+// r <= 0). Unitless.
 inline float area_light_window(float p_distance, float p_range, float p_attenuation) {
 	if (!(p_range > 0.0f) || !(p_distance < p_range)) {
 		return 0.0f;
 	}
-	if (p_attenuation == 0.0f) {
-		return 1.0f;
-	}
 	float nd = p_distance / p_range;
 	nd *= nd;
 	nd *= nd; // (d / r)^4
-	const float window = std::max(1.0f - nd, 0.0f);
-	return std::pow(window * window, p_attenuation);
+	float window = std::max(1.0f - nd, 0.0f);
+	window *= window;
+	if (p_attenuation == 2.0f) {
+		return window;
+	}
+	return window * std::pow(std::max(p_distance, 1e-4f), 2.0f - p_attenuation);
 }
 
 } // namespace ReferenceBRDF

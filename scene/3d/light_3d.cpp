@@ -6,6 +6,7 @@
 
 #include "core/error/error_macros.h"
 
+#include <algorithm>
 #include <cmath>
 
 // The server to forward to, or null when this light has no RS light (ClassDB's default constructor).
@@ -259,8 +260,12 @@ std::vector<String> Light3D::get_configuration_warnings() const {
 		if (area->get_area_size().x <= 0.0f || area->get_area_size().y <= 0.0f) {
 			warnings.push_back("An AreaLight3D with a zero area_size component emits no light.");
 		}
+		if (projector.is_valid()) {
+			// Upstream Godot 4.7 warns the same way: area lights take their texture from area_texture.
+			warnings.push_back("An AreaLight3D does not use light_projector; an area light's texture is area_texture.");
+		}
 	}
-	if (type != RS::LIGHT_DIRECTIONAL && !shadow && projector.is_valid()) {
+	if (type != RS::LIGHT_DIRECTIONAL && type != RS::LIGHT_AREA && !shadow && projector.is_valid()) {
 		warnings.push_back("Projector texture only works with shadows active.");
 	}
 	return warnings;
@@ -272,9 +277,10 @@ void Light3D::_validate_property(PropertyInfo &p_property) const {
 		// Saved, but not shown while shadows are off.
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
-	// An area light's extent is area_size; the punctual light_size (soft shadows) does not apply.
-	if (type == RS::LIGHT_AREA && n == "light_size") {
-		p_property.usage = PROPERTY_USAGE_NONE;
+	// Upstream Godot 4.7: an area light shows light_size (default 0.5, its PCSS size) and hides
+	// light_projector (still saved when set, so nothing is lost; a configuration warning says why).
+	if (type == RS::LIGHT_AREA && n == "light_projector") {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
 	if (type != RS::LIGHT_DIRECTIONAL && (n == "light_angular_distance" || n == "light_intensity_lux")) {
 		p_property.usage = PROPERTY_USAGE_NONE;
@@ -584,8 +590,13 @@ SpotLight3D::SpotLight3D() :
 /* AreaLight3D */
 
 void AreaLight3D::set_area_size(const Vector2 &p_size) {
-	ERR_FAIL_COND_MSG(!p_size.is_finite() || p_size.x < 0.0f || p_size.y < 0.0f, vformat("AreaLight3D \"%s\": area_size must be finite and not negative in both components (got (%s, %s)); the old value (%s, %s) is kept.", get_name().c_str(), rtos(p_size.x).c_str(), rtos(p_size.y).c_str(), rtos(area_size.x).c_str(), rtos(area_size.y).c_str()));
-	area_size = p_size;
+	ERR_FAIL_COND_MSG(!p_size.is_finite(), vformat("AreaLight3D \"%s\": area_size must be finite in both components (got (%s, %s)); the old value (%s, %s) is kept.", get_name().c_str(), rtos(p_size.x).c_str(), rtos(p_size.y).c_str(), rtos(area_size.x).c_str(), rtos(area_size.y).c_str()));
+	// Upstream Godot 4.7 clamps negative components to 0; we do too, and say so.
+	const Vector2 clamped(std::max(p_size.x, real_t(0)), std::max(p_size.y, real_t(0)));
+	if (clamped != p_size) {
+		WARN_PRINT(vformat("AreaLight3D \"%s\": area_size (%s, %s) has a negative component; clamped to (%s, %s).", get_name().c_str(), rtos(p_size.x).c_str(), rtos(p_size.y).c_str(), rtos(clamped.x).c_str(), rtos(clamped.y).c_str()));
+	}
+	area_size = clamped;
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_size(get_light(), area_size);
 	}
@@ -691,7 +702,10 @@ void AreaLight3D::_bind_methods() {
 
 AreaLight3D::AreaLight3D() :
 		Light3D(RS::LIGHT_AREA) {
-	// The contract's defaults (range 5 and attenuation 1 come from Light3D), pushed to the server.
+	// Upstream Godot 4.7's AreaLight3D defaults (range 5, attenuation 1, shadow_bias 0.1 and
+	// shadow_normal_bias 1 come from Light3D), pushed to the server.
+	set_param(PARAM_SPECULAR, 1.0f);
+	set_param(PARAM_SIZE, 0.5f);
 	set_area_size(Vector2(1, 1));
 	set_area_normalize_energy(true);
 	set_area_shading_method(AREA_SHADING_LTC);

@@ -219,8 +219,9 @@ public:
 // A rectangular area light: area_size.x along local +X by area_size.y along +Y, centred at the
 // origin; it emits uniform radiance along local -Z only (nothing behind it, z > 0, is lit):
 //   L_e = srgb_to_linear(light_color) * light_energy * pi / A_n,  A_n = x * y if area_normalize_energy else 1,
-// windowed by W(d) = (max(1 - (d / area_range)^4, 0)^2)^area_attenuation, d = distance to the closest
-// point of the rectangle. A zero area emits nothing.
+// attenuated by W(d) = max(1 - (d / area_range)^4, 0)^2 * max(d, 1e-4)^(2 - area_attenuation), d = distance
+// to the closest point of the rectangle (upstream Godot 4.7's meaning: area_attenuation is a distance
+// exponent, 2 = physically correct inverse square, default 1). A zero area emits nothing.
 class AreaLight3D : public Light3D {
 	GDCLASS(AreaLight3D, Light3D);
 

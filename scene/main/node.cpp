@@ -25,6 +25,8 @@ void Node::set_name(const String &p_name) {
 	}
 	if (parent) {
 		fixed = parent->_validate_child_name(fixed, this);
+		parent->children_by_name.erase(name);
+		parent->children_by_name[fixed] = this;
 	}
 	name = fixed;
 }
@@ -34,14 +36,8 @@ String Node::_validate_child_name(const String &p_name, const Node *p_child) con
 	String candidate = base;
 	int number = 2;
 	while (true) {
-		bool taken = false;
-		for (const Node *c : children) {
-			if (c != p_child && c->name == candidate) {
-				taken = true;
-				break;
-			}
-		}
-		if (!taken) {
+		auto it = children_by_name.find(candidate);
+		if (it == children_by_name.end() || it->second == p_child) {
 			return candidate;
 		}
 		candidate = base + itos(number++);
@@ -58,6 +54,7 @@ void Node::add_child(Node *p_child) {
 	p_child->name = _validate_child_name(p_child->name, p_child);
 	p_child->parent = this;
 	children.push_back(p_child);
+	children_by_name[p_child->name] = p_child;
 	p_child->notification(NOTIFICATION_PARENTED);
 	if (tree) {
 		p_child->_propagate_enter_tree(tree);
@@ -77,6 +74,7 @@ void Node::remove_child(Node *p_child) {
 			break;
 		}
 	}
+	children_by_name.erase(p_child->name);
 	p_child->parent = nullptr;
 	p_child->notification(NOTIFICATION_UNPARENTED);
 }
@@ -282,6 +280,7 @@ Node::~Node() {
 		}
 	}
 	children.clear();
+	children_by_name.clear();
 	for (Node *c : list) {
 		c->parent = nullptr;
 		delete c;
@@ -294,6 +293,7 @@ Node::~Node() {
 				break;
 			}
 		}
+		parent->children_by_name.erase(name);
 		parent = nullptr;
 	}
 }

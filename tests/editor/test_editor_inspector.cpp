@@ -14,6 +14,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 namespace TestEditorInspector {
 
 using SceneTest::DummyServer;
@@ -80,7 +82,8 @@ TEST_CASE("[EditorInspector] AreaLight3D rows follow its ClassDB property list, 
 
 	// Hidden properties are not rows.
 	CHECK(inspector.find_row("name") == -1);
-	CHECK(inspector.find_row("light_size") == -1); // Punctual size, hidden on area lights.
+	CHECK(inspector.find_row("light_projector") == -1); // Hidden on area lights (upstream: area_texture instead).
+	CHECK(inspector.find_row("light_size") >= 0); // Shown on area lights, as upstream Godot 4.7 does.
 	CHECK(inspector.find_row("shadow_bias") == -1); // Shadows are off.
 	CHECK(inspector.find_row("area_shadow_mode") == -1);
 	CHECK(inspector.find_row("no_such_property") == -1);
@@ -241,7 +244,7 @@ TEST_CASE("[EditorInspector] A rejected value keeps the old value and leaves the
 
 	{
 		ErrorCatcher errors;
-		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(-1, 1)));
+		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(NAN, 1))); // Negative components are clamped (upstream); NaN is refused.
 		CHECK(errors.contains("area_size"));
 		CHECK(inspector.get_last_error().find("area_size") != String::npos);
 	}
@@ -315,7 +318,7 @@ TEST_CASE("[EditorInspector] A slider drag merges into one action") {
 	// A rejected value in a drag changes nothing.
 	{
 		ErrorCatcher errors;
-		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(-2, -2), true));
+		CHECK_FALSE(inspector.set_row_value(inspector.find_row("area_size"), Vector2(INFINITY, -2), true));
 	}
 	CHECK(undo_redo.get_history_count() == 4);
 

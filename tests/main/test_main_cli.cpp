@@ -124,4 +124,55 @@ TEST_CASE("[CLI][Render] render draws until ADAPTIVE area shadows settle (--sett
 	std::filesystem::remove_all(dir);
 }
 
+// Runs bin/godot-area and returns its exit status; stdout and stderr together in r_output.
+int run_cli_capture(const String &p_args, String *r_output) {
+	std::filesystem::path log = std::filesystem::temp_directory_path() / "godot_area_test_cli_capture.log";
+	String cmd = String("'") + GODOT_AREA_CLI_PATH + "' " + p_args + " > '" + log.string() + "' 2>&1";
+	int status = std::system(cmd.c_str());
+	std::ifstream f(log);
+	std::stringstream ss;
+	ss << f.rdbuf();
+	*r_output = ss.str();
+	std::filesystem::remove(log);
+	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST_CASE("[CLI] a failed write exits non-zero, names the path and never says \"wrote\"") {
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	if (!std::filesystem::exists("/dev/full")) {
+		MESSAGE("skipped: /dev/full is not available");
+		return;
+	}
+	String out;
+	CHECK(run_cli_capture("render --width 16 --height 16 -o /dev/full", &out) == 1);
+	CHECK_MESSAGE(out.find("Cannot write \"/dev/full\": write failed (No space left on device)") != String::npos, out);
+	CHECK_MESSAGE(out.find("wrote /dev/full") == String::npos, out);
+	CHECK(run_cli_capture("reference --width 16 --height 16 --spp 1 --shadows off -o /dev/full", &out) == 1);
+	CHECK_MESSAGE(out.find("\"/dev/full\"") != String::npos, out);
+	CHECK_MESSAGE(out.find("wrote /dev/full") == String::npos, out);
+
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_full";
+	std::filesystem::create_directories(dir);
+	String exr = (dir / "ok.exr").string();
+	CHECK(run_cli_capture("render --width 16 --height 16 -o '" + exr + "' --png /dev/full", &out) == 1);
+	CHECK_MESSAGE(out.find("Cannot write \"/dev/full\"") != String::npos, out);
+	CHECK_MESSAGE(out.find("wrote /dev/full") == String::npos, out);
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[CLI] a malformed scene file exits 2 with an error naming file and line") {
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_bad_scene";
+	std::filesystem::create_directories(dir);
+	const String bad = (dir / "bad.tscn").string();
+	{
+		std::ofstream f(bad);
+		f << "[gd_scene format=3]\n\n[node name=\"Root\" type=\"Node3D\"]\n\n[node name=\"L\" type=\"OmniLight3D\" parent=\".\"]\nomni_range = Vector3(1, 2\n";
+	}
+	String out;
+	CHECK(run_cli_capture("render '" + bad + "' --width 16 --height 16 -o '" + (dir / "x.exr").string() + "'", &out) == 2);
+	CHECK_MESSAGE(out.find(bad + ":6:") != String::npos, out);
+	CHECK_FALSE(std::filesystem::exists(dir / "x.exr"));
+	std::filesystem::remove_all(dir);
+}
+
 } // namespace TestMainCLI

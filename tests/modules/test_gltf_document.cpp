@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <cstring>
+
 namespace TestGLTFDocument {
 
 // One triangle (positions, normals, u16 indices) in an embedded base64 buffer.
@@ -66,7 +68,105 @@ TEST_CASE("[GLTF] malformed or missing files give a clear error") {
 	// Normals (count 3) now disagree with positions (count 2) and index 2 is out of range.
 	error.clear();
 	CHECK_FALSE(doc.parse_string(bad, ".", &error));
-	CHECK_MESSAGE(!error.empty(), "an inconsistent mesh must be reported");
+	// The first problem found is the index past the two vertices; the message names it and the counts.
+	CHECK_MESSAGE(error.find("mesh 0 primitive 0: index 2 is out of range (2 vertices)") != String::npos, error);
+}
+
+// TRIANGLE_GLTF with p_from replaced by p_to (which must occur exactly once).
+static String _patched(const char *p_from, const char *p_to) {
+	String s = TRIANGLE_GLTF;
+	size_t at = s.find(p_from);
+	REQUIRE_MESSAGE(at != String::npos, p_from);
+	REQUIRE_MESSAGE(s.find(p_from, at + 1) == String::npos, p_from);
+	s.replace(at, strlen(p_from), p_to);
+	return s;
+}
+
+// Each case is a reproducer from issue 20 (heap overflow, use-after-free, wrapped sums, a thrown length_error):
+// the load fails with an error naming the accessor / view and field, and nothing is read out of bounds (the
+// sanitizer job runs this file under ASan+UBSan).
+TEST_CASE("[GLTF] out-of-range indices, wrapping offsets and huge counts are rejected with a clear error") {
+	struct Case {
+		const char *from;
+		const char *to;
+		const char *expect;
+	};
+	const Case cases[] = {
+		{ "{\"buffer\": 0, \"byteOffset\": 0,", "{\"buffer\": 5, \"byteOffset\": 0,", "bufferView 0 field 'buffer' = 5 is out of range (1 buffers)" },
+		{ "{\"buffer\": 0, \"byteOffset\": 0,", "{\"buffer\": -1, \"byteOffset\": 0,", "field 'buffer' = -1 is out of range" },
+		{ "\"byteOffset\": 36, \"byteLength\": 36", "\"byteOffset\": 18446744073709551600, \"byteLength\": 36", "lies outside buffer 0 (80 bytes)" },
+		{ "\"byteOffset\": 72, \"byteLength\": 6", "\"byteOffset\": 72, \"byteLength\": 4000000000", "lies outside buffer 0" },
+		{ "{\"bufferView\": 1, \"componentType\": 5126, \"count\": 3,", "{\"bufferView\": 1, \"componentType\": 5126, \"count\": 3, \"byteOffset\": 18446744073709551612,", "field 'byteOffset'" },
+		{ "{\"bufferView\": 1, \"componentType\": 5126, \"count\": 3,", "{\"bufferView\": 1, \"componentType\": 5126, \"count\": 4611686018427387904,", "attribute accessor 1: field 'count' = 4611686018427387904 reads past the end of bufferView 1" },
+		{ "{\"bufferView\": 2, \"componentType\": 5123, \"count\": 3,", "{\"bufferView\": 2, \"componentType\": 5123, \"count\": 9223372036854775807,", "index accessor 2: field 'count'" },
+		{ "{\"bufferView\": 2, \"componentType\": 5123, \"count\": 3,", "{\"bufferView\": 7, \"componentType\": 5123, \"count\": 3,", "accessor[2] invalid bufferView" }, // tinygltf's own check.
+		{ "\"indices\": 2,", "\"indices\": 9,", "primitive indices accessor out of bounds" }, // tinygltf's own check.
+		{ "{\"buffer\": 0, \"byteOffset\": 0, \"byteLength\": 36}", "{\"buffer\": 0, \"byteOffset\": 0, \"byteLength\": 36, \"byteStride\": 4}", "field 'byteStride' = 4 is smaller than an element (12 bytes)" },
+	};
+	for (const Case &c : cases) {
+		GLTFDocument doc;
+		String error;
+		bool ok = true;
+		CHECK_NOTHROW(ok = doc.parse_string(_patched(c.from, c.to), ".", &error));
+		CHECK_FALSE_MESSAGE(ok, c.to);
+		CHECK_MESSAGE(error.find(c.expect) != String::npos, "got: ", error, "\nexpected: ", String(c.expect));
+		CHECK(doc.get_meshes().empty());
+	}
+}
+
+TEST_CASE("[GLTF] an image's buffer view outside its buffer is rejected before decoding") {
+	// tinygltf checks the image's view and buffer indices but hands the view's bytes over unchecked.
+	String s = _patched("\"materials\":", "\"images\": [{\"bufferView\": 2, \"mimeType\": \"image/png\"}], \"materials\":");
+	s.replace(s.find("\"byteOffset\": 72, \"byteLength\": 6"), 33, "\"byteOffset\": 72, \"byteLength\": 100000");
+	GLTFDocument doc;
+	String error;
+	CHECK_FALSE(doc.parse_string(s, ".", &error));
+	CHECK_MESSAGE(error.find("image 0: bufferView 2 (byteOffset 72, byteLength 100000) lies outside buffer 0 (80 bytes)") != String::npos, error);
+}
+
+} // namespace TestGLTFDocument
+
+#include <filesystem>
+#include <fstream>
+
+namespace TestGLTFDocument {
+
+TEST_CASE("[GLTF] buffer URIs resolve only inside the glTF file's folder") {
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_gltf_uri";
+	std::filesystem::create_directories(dir / "asset" / "sub");
+	// 80 bytes: the same data as the embedded buffer, as a file beside the glTF and one above it.
+	const String embedded = TRIANGLE_GLTF;
+	const String b64_head = "data:application/octet-stream;base64,";
+	size_t uri_at = embedded.find(b64_head);
+	REQUIRE(uri_at != String::npos);
+	std::vector<uint8_t> bin(80, 0);
+	{
+		std::ofstream f(dir / "asset" / "tri.bin", std::ios::binary);
+		f.write(reinterpret_cast<const char *>(bin.data()), bin.size());
+		std::ofstream g(dir / "secret.bin", std::ios::binary);
+		g.write(reinterpret_cast<const char *>(bin.data()), bin.size());
+	}
+	size_t uri_end = embedded.find('"', uri_at);
+	auto with_uri = [&](const char *p_uri) {
+		String s = embedded;
+		s.replace(uri_at, uri_end - uri_at, p_uri);
+		return s;
+	};
+	GLTFDocument doc;
+	String error;
+	const String asset = (dir / "asset").string();
+	CHECK_MESSAGE(doc.parse_string(with_uri("tri.bin"), asset, &error), error);
+	error.clear();
+	CHECK_FALSE(doc.parse_string(with_uri("../secret.bin"), asset, &error));
+	CHECK_MESSAGE(error.find("outside the glTF file's folder") != String::npos, error);
+	error.clear();
+	// An absolute URI is joined to the folder (tinygltf), so it names a file that does not exist there.
+	CHECK_FALSE(doc.parse_string(with_uri((dir / "secret.bin").string().c_str()), asset, &error));
+	CHECK_MESSAGE(error.find("File not found : " + (dir / "secret.bin").string()) != String::npos, error);
+	error.clear();
+	CHECK_FALSE(doc.parse_string(with_uri("sub/../../secret.bin"), asset, &error));
+	CHECK_MESSAGE(error.find("outside the glTF file's folder") != String::npos, error);
+	std::filesystem::remove_all(dir);
 }
 
 } // namespace TestGLTFDocument
@@ -119,12 +219,16 @@ TEST_CASE("[GLTF][SceneTree] a .tscn instances a glTF file as MeshInstance3D nod
 	CHECK(Math::is_equal_approx(mat->get_roughness(), 0.4f));
 
 	delete root;
-	// A missing glTF file is a warning naming it; the rest of the scene still loads.
+	// A missing glTF file is a warning naming it; the rest of the scene still loads and the
+	// instance is kept as a placeholder (written back on save) with nothing under it.
 	set_error_print_silenced(true);
 	Node *partial = ResourceFormatText::load_scene_from_string(tscn, (dir / "missing" / "scene.tscn").string(), &error);
 	set_error_print_silenced(false);
 	REQUIRE(partial != nullptr);
-	CHECK(partial->get_node_or_null("Model") == nullptr);
+	REQUIRE(partial->get_node_or_null("Model") != nullptr);
+	CHECK(partial->get_node_or_null("Model")->get_class() == "MissingNode");
+	CHECK(partial->get_node_or_null("Model")->get_child_count() == 0);
+	CHECK(ResourceFormatText::save_scene_to_string(partial).find("instance=ExtResource(") != String::npos);
 	delete partial;
 	uninitialize_gltf_module();
 	std::filesystem::remove_all(dir);

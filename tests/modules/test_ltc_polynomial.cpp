@@ -298,7 +298,7 @@ void main() {
 	l.position = vec3(0.3, 1.0, -0.5);
 	l.inv_radius = 0.001;
 	l.half_axis_x = vec3(0.5, 0.0, 0.0);
-	l.attenuation = 0.0;
+	l.attenuation = 2.0;
 	l.half_axis_y = vec3(0.0, 0.0, 0.25);
 	l.specular_amount = 1.0;
 	l.normal = vec3(0.0, -1.0, 0.0);
@@ -416,7 +416,7 @@ static std::vector<float> render_plane(RS::LightAreaShadingMethod p_method, floa
 		light_storage.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 1.0f);
 		light_storage.light_set_param(light, RS::LIGHT_PARAM_SPECULAR, 1.0f);
 		light_storage.light_set_param(light, RS::LIGHT_PARAM_RANGE, 100.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+		light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
 		light_storage.light_area_set_shading_method(light, p_method);
 
 		RenderSceneData d;

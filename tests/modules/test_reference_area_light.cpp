@@ -155,7 +155,7 @@ TEST_CASE("[Reference][AreaLight3D] a Lambert plane under a corner of a parallel
 	// Corner = centre - a/2 X - b/2 Y with X = +x, Y = -z: centre = g + (a/2, h, -b/2).
 	const Transform3D xform(facing_down(), g + Vector3(float(a / 2), float(h), float(-b / 2)));
 	// Attenuation 0 (W = 1) and a huge range: the purely physical integral. Not normalised: L_e = E * pi.
-	f.add_area(float(energy), Vector2(float(a), float(b)), 1000.0f, 0.0f, false, xform);
+	f.add_area(float(energy), Vector2(float(a), float(b)), 1000.0f, 2.0f, false, xform);
 	const std::vector<float> image = f.render();
 
 	// Lambert: L_o = albedo/pi * E_irr, E_irr = L_e * pi * F, L_e = colour(1) * energy * pi (/ A_n = 1), so
@@ -180,7 +180,7 @@ TEST_CASE("[Reference][AreaLight3D] nothing behind the light is lit (one-sided),
 	// A 1 x 1 light standing on edge 1 m above the ground at x = 0, emitting along world +X:
 	// local -Z = +X, so local Z = -X; local X = +Z, local Y = +Y.
 	const Transform3D xform(Basis::from_columns(Vector3(0, 0, 1), Vector3(0, 1, 0), Vector3(-1, 0, 0)), Vector3(0, 1, 0));
-	RID light = f.add_area(5.0f, Vector2(1, 1), 1000.0f, 0.0f, true, xform);
+	RID light = f.add_area(5.0f, Vector2(1, 1), 1000.0f, 2.0f, true, xform);
 	const std::vector<float> image = f.render();
 	int behind = 0, lit = 0;
 	for (int y = 0; y < 16; y++) {
@@ -198,10 +198,11 @@ TEST_CASE("[Reference][AreaLight3D] nothing behind the light is lit (one-sided),
 	CHECK(behind > 20);
 	CHECK(lit > 20);
 
-	SUBCASE("W(d) = (1 - (d/r)^4)^2 with attenuation 1 scales the physical integral; d >= r is exactly 0") {
+	// Upstream Godot 4.7's meaning: area_attenuation a is a distance exponent, W(d) = window * d^(2 - a).
+	auto check_window = [&](float p_attenuation) {
 		const float range = 3.0f;
 		f.light_storage.light_set_param(light, RS::LIGHT_PARAM_RANGE, range);
-		f.light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 1.0f);
+		f.light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, p_attenuation);
 		const std::vector<float> windowed = f.render();
 		ReferenceBRDF::AreaLightData rect;
 		ReferenceBRDF::area_light_set_frame(rect, xform);
@@ -222,13 +223,23 @@ TEST_CASE("[Reference][AreaLight3D] nothing behind the light is lit (one-sided),
 					continue;
 				}
 				const double q = std::pow(d / range, 4.0);
-				// Same seed and the same samples: only the window differs.
-				CHECK(w == doctest::Approx(full * (1.0 - q) * (1.0 - q)).epsilon(1e-4));
+				// Same seed and the same samples: only W differs (the full image has range 1000, W = 1 - 1e-11).
+				const double expected = full * (1.0 - q) * (1.0 - q) * std::pow(std::max(d, 1e-4), 2.0 - p_attenuation);
+				CHECK(w == doctest::Approx(expected).epsilon(1e-4));
 				checked++;
 			}
 		}
 		CHECK(checked > 10);
 		CHECK(outside > 10);
+	};
+	SUBCASE("attenuation 2 (physical): W(d) = (1 - (d/r)^4)^2 scales the physical integral; d >= r is exactly 0") {
+		check_window(2.0f);
+	}
+	SUBCASE("attenuation 1 (the default): W(d) = (1 - (d/r)^4)^2 * d, as upstream's d^-a times the integral's d^2") {
+		check_window(1.0f);
+	}
+	SUBCASE("attenuation 3.5: W(d) = (1 - (d/r)^4)^2 * d^-1.5") {
+		check_window(3.5f);
 	}
 }
 
@@ -247,7 +258,7 @@ TEST_CASE("[Reference][AreaLight3D] with shadows on, each sample is shadow-teste
 	g.mesh = mesh;
 	g.material_override = f.materials[0];
 	f.scene.geometry.push_back(g);
-	f.add_area(5.0f, Vector2(0.5f, 0.5f), 100.0f, 0.0f, true, Transform3D(facing_down(), Vector3(0, 1, 0)));
+	f.add_area(5.0f, Vector2(0.5f, 0.5f), 100.0f, 2.0f, true, Transform3D(facing_down(), Vector3(0, 1, 0)));
 
 	const std::vector<float> open = f.render();
 	CHECK(f.renderer.get_last_stats().shadow_rays == 0);
@@ -283,7 +294,7 @@ TEST_CASE("[Reference][AreaLight3D] a zero-size light contributes exactly 0 and 
 		f.add_area(10.0f, Vector2(0, 2), 100.0f, 1.0f, true, xform);
 	}
 	SUBCASE("not normalised, zero height") {
-		f.add_area(10.0f, Vector2(2, 0), 100.0f, 0.0f, false, xform);
+		f.add_area(10.0f, Vector2(2, 0), 100.0f, 2.0f, false, xform);
 	}
 	const std::vector<float> image = f.render();
 	for (size_t i = 0; i < image.size(); i += 4) {
@@ -306,7 +317,7 @@ TEST_CASE("[Reference][AreaLight3D] normalize_energy: doubling the size at fixed
 	for (int i = 0; i < 2; i++) {
 		AreaFixture f(20.0f, size);
 		const float side = i == 0 ? 0.2f : 0.4f;
-		f.add_area(float(energy), Vector2(side, side), 1000.0f, 0.0f, true, Transform3D(facing_down(), Vector3(0, float(h), 0)));
+		f.add_area(float(energy), Vector2(side, side), 1000.0f, 2.0f, true, Transform3D(facing_down(), Vector3(0, float(h), 0)));
 		images[i] = f.render();
 		if (i == 0) {
 			albedo = f.albedo();
@@ -355,7 +366,7 @@ struct GlossyFixture : AreaFixture {
 		scene.fovy_degrees = 55.0f;
 		scene.cam_projection = Projection::create_perspective(55.0f, 1.0f, scene.z_near, scene.z_far);
 		light_xform = Transform3D(facing_down(), Vector3(0, 0.4f, 0));
-		light = add_area(energy, light_size, 1000.0f, 0.0f, true, light_xform);
+		light = add_area(energy, light_size, 1000.0f, 2.0f, true, light_xform);
 		ReferenceRenderOptions options = renderer.get_options();
 		options.target_relative_error = 0.002f; // The reference's defaults.
 		options.max_samples = 4096;
@@ -369,7 +380,7 @@ struct GlossyFixture : AreaFixture {
 		d.size_y = light_size.y;
 		d.radiance = ReferenceBRDF::area_light_emitted_radiance(Color(1, 1, 1), energy, false, light_size, true);
 		d.range = 1000.0f;
-		d.attenuation = 0.0f;
+		d.attenuation = 2.0f;
 		d.specular_amount = light_storage.light_get_param(light, RS::LIGHT_PARAM_SPECULAR);
 		return d;
 	}

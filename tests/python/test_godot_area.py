@@ -198,7 +198,7 @@ def test_values_without_an_engine_form_raise_type_error():
 
 
 @pytest.mark.parametrize("name, value, engine_message", [
-	("area_size", (-1, 2), 'AreaLight3D "Key": area_size must be finite and not negative in both components (got (-1, 2)); the old value (2, 1) is kept.'),
+	("area_size", (float("nan"), 2), 'AreaLight3D "Key": area_size must be finite in both components (got (nan, 2)); the old value (2, 1) is kept.'),
 	("area_range", float("nan"), 'AreaLight3D "Key": area_range must be finite (not NaN or infinity) (got nan); the old value 5 is kept.'),
 	("area_shading_method", 9, 'AreaLight3D "Key": area_shading_method must be 0..4 (LTC, LTC Polynomial, MRP, Stochastic, Auto); got 9. The old value is kept.'),
 	("area_stochastic_samples", 0, 'AreaLight3D "Key": area_stochastic_samples must be 1..256; got 0. The old value is kept.'),

@@ -10,6 +10,7 @@
 
 #include "scene/main/scene_tree.h"
 #include "scene/resources/resource_format_text.h"
+#include "scene/resources/texture.h"
 #include "servers/rendering/rendering_server_globals.h"
 #include "servers/rendering/storage/light_storage.h"
 #include "tests/scene/scene_test_fixture.h"
@@ -61,7 +62,12 @@ TEST_CASE("[AreaLight3D] defaults follow the contract and reach the server") {
 	CHECK(light->get("area_attenuation").to_float() == doctest::Approx(1.0));
 	CHECK(light->get("area_normalize_energy").to_bool() == true);
 	CHECK(light->get("area_shading_method").to_int() == AreaLight3D::AREA_SHADING_LTC);
-	// Light3D's defaults are unchanged.
+	// Upstream Godot 4.7's AreaLight3D overrides of Light3D's defaults.
+	CHECK(light->get("light_specular").to_float() == doctest::Approx(1.0));
+	CHECK(light->get("light_size").to_float() == doctest::Approx(0.5));
+	CHECK(light->get("shadow_bias").to_float() == doctest::Approx(0.1));
+	CHECK(light->get("shadow_normal_bias").to_float() == doctest::Approx(1.0));
+	// Light3D's other defaults are unchanged.
 	CHECK(light->get("light_energy").to_float() == doctest::Approx(1.0));
 	CHECK(light->get("shadow_enabled").to_bool() == false);
 	CHECK(light->get_configuration_warnings().empty());
@@ -74,6 +80,8 @@ TEST_CASE("[AreaLight3D] defaults follow the contract and reach the server") {
 	CHECK(RSG::light_storage->light_area_get_shading_method(rid) == RS::LIGHT_AREA_SHADING_LTC);
 	CHECK(RSG::light_storage->light_get_param(rid, RS::LIGHT_PARAM_RANGE) == doctest::Approx(5.0));
 	CHECK(RSG::light_storage->light_get_param(rid, RS::LIGHT_PARAM_ATTENUATION) == doctest::Approx(1.0));
+	CHECK(RSG::light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR) == doctest::Approx(1.0));
+	CHECK(RSG::light_storage->light_get_param(rid, RS::LIGHT_PARAM_SIZE) == doctest::Approx(0.5));
 	delete light;
 }
 
@@ -119,14 +127,15 @@ TEST_CASE("[AreaLight3D] invalid values are rejected with a message naming the p
 	light->set("area_size", Vector2(2, 3));
 	RID rid = light->get_light();
 
-	SUBCASE("negative size component") {
+	SUBCASE("negative size components are clamped to 0 as upstream does, with a warning naming the value") {
 		light->set("area_size", Vector2(-1, 3));
-		CHECK(light->get_area_size() == Vector2(2, 3));
+		CHECK(light->get_area_size() == Vector2(0, 3));
 		CHECK(errors.contains("area_size"));
-		CHECK(errors.contains("(2, 3)"));
+		CHECK(errors.contains("(-1, 3)"));
+		CHECK(errors.contains("clamped to (0, 3)"));
 		light->set_area_size(Vector2(2, -0.001f));
-		CHECK(light->get_area_size() == Vector2(2, 3));
-		CHECK(RSG::light_storage->light_area_get_size(rid) == Vector2(2, 3));
+		CHECK(light->get_area_size() == Vector2(2, 0));
+		CHECK(RSG::light_storage->light_area_get_size(rid) == Vector2(2, 0));
 	}
 	SUBCASE("NaN and infinite size") {
 		light->set_area_size(Vector2(NAN, 1));
@@ -246,7 +255,10 @@ TEST_CASE("[AreaLight3D] property list order, group, hints and enum") {
 	// Punctual-light properties that do not apply: neither shown nor saved.
 	CHECK(find(list, "omni_range") == nullptr);
 	CHECK(find(list, "spot_angle") == nullptr);
-	CHECK(find(list, "light_size")->usage == PROPERTY_USAGE_NONE);
+	// Upstream Godot 4.7: light_size is shown and saved (its PCSS size); light_projector is hidden but
+	// still saved (a configuration warning points to area_texture).
+	CHECK(find(list, "light_size")->usage == PROPERTY_USAGE_DEFAULT);
+	CHECK(find(list, "light_projector")->usage == PROPERTY_USAGE_NO_EDITOR);
 	CHECK(find(list, "light_angular_distance")->usage == PROPERTY_USAGE_NONE);
 	delete light;
 }
@@ -288,7 +300,7 @@ area_normalize_energy = false
 	String saved = ResourceFormatText::save_scene_to_string(root);
 	CHECK_MESSAGE(saved == text, (String("saved text:\n") + saved));
 	CHECK_MESSAGE(saved.find("area_shading_method") == String::npos, "defaults are not written");
-	CHECK_MESSAGE(saved.find("light_size") == String::npos, "light_size does not apply to area lights");
+	CHECK_MESSAGE(saved.find("light_size") == String::npos, "light_size at its default (0.5) is not written");
 
 	Node *again = ResourceFormatText::load_scene_from_string(saved, "area_saved.tscn", &error);
 	REQUIRE_MESSAGE(again != nullptr, error);
@@ -302,6 +314,82 @@ area_normalize_energy = false
 	CHECK(panel2->get_transform().is_equal_approx(panel->get_transform()));
 	delete again;
 	delete root;
+}
+
+
+TEST_CASE("[AreaLight3D] an upstream-style Godot 4.7 scene loads with upstream's values, and saves them back") {
+	DummyServer server;
+	// Written as upstream Godot 4.7 writes area lights: only non-default values appear, light_size
+	// and light_specular included; the second light relies on every default.
+	const String text = R"TSCN([gd_scene format=3]
+
+[node name="Root" type="Node3D"]
+
+[node name="Screen" type="AreaLight3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 1.5, -2)
+light_energy = 4.0
+light_size = 0.25
+light_specular = 0.75
+shadow_enabled = true
+area_size = Vector2(1.6, 0.9)
+area_range = 8.0
+area_attenuation = 2.0
+
+[node name="Defaults" type="AreaLight3D" parent="."]
+)TSCN";
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(text, "upstream_area.tscn", &error);
+	REQUIRE_MESSAGE(root != nullptr, error);
+	AreaLight3D *screen = Object::cast_to<AreaLight3D>(root->get_node_or_null("Screen"));
+	AreaLight3D *defaults = Object::cast_to<AreaLight3D>(root->get_node_or_null("Defaults"));
+	REQUIRE(screen);
+	REQUIRE(defaults);
+	CHECK(screen->get_param(Light3D::PARAM_SIZE) == doctest::Approx(0.25));
+	CHECK(screen->get_param(Light3D::PARAM_SPECULAR) == doctest::Approx(0.75));
+	CHECK(screen->get_param(Light3D::PARAM_ATTENUATION) == doctest::Approx(2.0));
+	CHECK(screen->get_area_size().is_equal_approx(Vector2(1.6f, 0.9f)));
+	CHECK(RSG::light_storage->light_get_param(screen->get_light(), RS::LIGHT_PARAM_SIZE) == doctest::Approx(0.25));
+	// Upstream's defaults where the file is silent.
+	CHECK(defaults->get_param(Light3D::PARAM_SPECULAR) == doctest::Approx(1.0));
+	CHECK(defaults->get_param(Light3D::PARAM_SIZE) == doctest::Approx(0.5));
+	CHECK(defaults->get_param(Light3D::PARAM_ATTENUATION) == doctest::Approx(1.0));
+	CHECK(defaults->get_param(Light3D::PARAM_RANGE) == doctest::Approx(5.0));
+	CHECK(defaults->get_param(Light3D::PARAM_SHADOW_BIAS) == doctest::Approx(0.1));
+	CHECK(defaults->get_area_size() == Vector2(1, 1));
+	CHECK(defaults->is_area_normalizing_energy());
+
+	// Round trip: every shared property comes back with the same value.
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	CHECK_MESSAGE(saved.find("light_size = 0.25") != String::npos, saved);
+	CHECK_MESSAGE(saved.find("light_specular = 0.75") != String::npos, saved);
+	Node *again = ResourceFormatText::load_scene_from_string(saved, "upstream_area_saved.tscn", &error);
+	REQUIRE_MESSAGE(again != nullptr, error);
+	AreaLight3D *screen2 = Object::cast_to<AreaLight3D>(again->get_node_or_null("Screen"));
+	AreaLight3D *defaults2 = Object::cast_to<AreaLight3D>(again->get_node_or_null("Defaults"));
+	REQUIRE(screen2);
+	REQUIRE(defaults2);
+	for (const Light3D::Param p : { Light3D::PARAM_ENERGY, Light3D::PARAM_SIZE, Light3D::PARAM_SPECULAR, Light3D::PARAM_RANGE, Light3D::PARAM_ATTENUATION, Light3D::PARAM_SHADOW_BIAS, Light3D::PARAM_SHADOW_NORMAL_BIAS }) {
+		CHECK(screen2->get_param(p) == doctest::Approx(screen->get_param(p)));
+		CHECK(defaults2->get_param(p) == doctest::Approx(defaults->get_param(p)));
+	}
+	CHECK(screen2->get_area_size() == screen->get_area_size());
+	CHECK(screen2->has_shadow());
+	delete again;
+	delete root;
+}
+
+TEST_CASE("[AreaLight3D] light_projector is hidden and warned about, as upstream does; it is still saved") {
+	DummyServer server;
+	AreaLight3D *light = new AreaLight3D;
+	Ref<ImageTexture> texture = ImageTexture::create_from_image(Image(2, 2, Color(1, 1, 1, 1)));
+	REQUIRE(texture.is_valid());
+	light->set_projector(texture);
+	bool warned = false;
+	for (const String &w : light->get_configuration_warnings()) {
+		warned = warned || w.find("area_texture") != String::npos;
+	}
+	CHECK(warned);
+	delete light;
 }
 
 } // namespace TestAreaLight3D

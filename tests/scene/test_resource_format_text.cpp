@@ -311,8 +311,10 @@ TEST_CASE("[SceneTree][TSCN] Round trip save, load, save is identical") {
 	group->add_child(b);
 
 	String first = ResourceFormatText::save_scene_to_string(root);
-	CHECK(first.find("[gd_scene load_steps=4 format=3]") == 0);
-	CHECK(first.find("[ext_resource type=\"TscnTestTexture\" path=\"res://t.png\" id=\"1\"]") != String::npos);
+	// Godot 4 conventions for a new file: no load_steps, a uid, "1_xxxxx" ext ids.
+	CHECK(first.find("[gd_scene format=3 uid=\"uid://") == 0);
+	CHECK(first.find("load_steps") == String::npos);
+	CHECK(first.find("[ext_resource type=\"TscnTestTexture\" path=\"res://t.png\" id=\"1_") != String::npos);
 	CHECK(first.find("light_energy = 0.1\n") != String::npos);
 	CHECK(first.find("mode = 1\n") != String::npos);
 	CHECK(first.find("[node name=\"Child\" type=\"TscnTestNode\" parent=\"Group\"]") != String::npos);
@@ -393,11 +395,21 @@ label = "still here"
 	CHECK(good->get_color() == Color(1, 1, 1));
 	CHECK(good->get_mode() == TscnTestNode::MODE_B);
 	CHECK(good->get_material().is_null());
-	CHECK(root->get_node_or_null("Alien") == nullptr);
+	// The unknown type is a placeholder that keeps its child.
+	REQUIRE(root->get_node_or_null("Alien") != nullptr);
+	CHECK(root->get_node_or_null("Alien")->get_class() == "MissingNode");
+	CHECK(root->get_node_or_null("Alien/AlienChild") != nullptr);
 	TscnTestNode *after = Object::cast_to<TscnTestNode>(root->get_node_or_null("After"));
 	REQUIRE(after != nullptr);
 	CHECK(after->get_label() == "still here");
-	CHECK(root->get_child_count() == 2);
+	CHECK(root->get_child_count() == 3);
+	// Everything that was not applied is written back.
+	String saved = ResourceFormatText::save_scene_to_string(root);
+	CHECK(saved.find("[sub_resource type=\"NoSuchMaterial\" id=\"M1\"]\nroughness = 1.0\n") != String::npos);
+	CHECK(saved.find("light_enrgy = 4.0\n") != String::npos);
+	CHECK(saved.find("light_color = \"red\"\n") != String::npos);
+	CHECK(saved.find("offset = [1, 2, 3]\n") != String::npos);
+	CHECK(saved.find("[node name=\"Alien\" type=\"FluxCapacitor3D\" parent=\".\"]\nlight_energy = 9.0\n") != String::npos);
 	delete root;
 	CHECK(live_test_nodes == 0);
 }
@@ -462,7 +474,7 @@ TEST_CASE("[SceneTree][TSCN] Malformed: missing parent or root") {
 	CHECK_MESSAGE(err.find("bad.tscn:3:") == 0, err.c_str());
 	err = load_error("[gd_scene format=3]\n\nlight_energy = 2.0\n");
 	CHECK_MESSAGE(err.find("bad.tscn:3: Property 'light_energy' appears before") == 0, err.c_str());
-	err = load_error("[gd_scene format=3]\n\n[node name=\"R\" type=\"FluxCapacitor3D\"]\n");
+	err = load_error("[gd_scene format=3]\n\n[node name=\"R\"]\n");
 	CHECK_MESSAGE(err.find("bad.tscn:3: Root node") == 0, err.c_str());
 	err = load_error("[gd_scene format=3]\n");
 	CHECK(err.find("no [node]") != String::npos);

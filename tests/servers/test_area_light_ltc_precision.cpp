@@ -70,7 +70,7 @@ static void build_scene(const StressScene &p_s, TLight &r_lights, TMesh &r_meshe
 	r_lights.light_set_param(light, RS::LIGHT_PARAM_ENERGY, p_s.energy);
 	r_lights.light_set_param(light, RS::LIGHT_PARAM_SPECULAR, 1.0f); // Not Godot's default 0.5.
 	r_lights.light_set_param(light, RS::LIGHT_PARAM_RANGE, 1000.0f);
-	r_lights.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+	r_lights.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
 	r_owned = { mesh, material, light };
 
 	r_data = RenderSceneData();

@@ -160,7 +160,7 @@ struct MethodsFixture : RenderTest::RenderFixture {
 		return RenderTest::RenderFixture::material(mp);
 	}
 	RID area_light(const Vector2 &p_size, float p_energy, RS::LightAreaShadingMethod p_method, int p_samples = 8) {
-		RID l = RenderTest::RenderFixture::area_light(p_size, p_energy, 100.0f, 0.0f);
+		RID l = RenderTest::RenderFixture::area_light(p_size, p_energy, 100.0f, 2.0f);
 		light_storage.light_area_set_shading_method(l, p_method);
 		light_storage.light_area_set_stochastic_samples(l, p_samples);
 		return l;

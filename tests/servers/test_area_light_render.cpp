@@ -64,7 +64,7 @@ TEST_CASE("[AreaLight3D][Render] a Lambertian plane under a corner of a parallel
 
 		const float a = 2.0f, b = 1.0f, h = 1.5f, energy = 3.0f;
 		const Color light_color(1.0f, 0.9f, 0.7f, 1.0f);
-		RID light = f.area_light(Vector2(a, b), energy, 1000.0f, 0.0f);
+		RID light = f.area_light(Vector2(a, b), energy, 1000.0f, 2.0f);
 		f.light_storage.light_set_color(light, light_color);
 
 		RenderSceneData d = make_scene(camera_looking_down(4.0f), 60.0f, W, H, 20.0f);
@@ -137,7 +137,7 @@ TEST_CASE("[AreaLight3D][Render] RenderingServer with RendererCompositorRD rende
 		rs->light_area_set_size(light, Vector2(a, b));
 		rs->light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);
 		rs->light_set_param(light, RS::LIGHT_PARAM_RANGE, 500.0f);
-		rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+		rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
 
 		RID env = rs->environment_create();
 		rs->environment_set_background(env, RS::ENV_BG_COLOR);
@@ -205,7 +205,7 @@ TEST_CASE("[AreaLight3D][Render] the specular highlight of a 4:1 light is elonga
 			int count;
 		};
 		auto measure = [&](const Vector2 &p_size) {
-			RID light = f.area_light(p_size, 2.0f, 100.0f, 0.0f);
+			RID light = f.area_light(p_size, 2.0f, 100.0f, 2.0f);
 			d.lights.clear();
 			add_light(d, light, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(0, 1.5f, 0)));
 			RID rt = f.renderer.render_target_create(W, H);
@@ -293,7 +293,7 @@ TEST_CASE("[AreaLight3D][Render] LTC specular at an oblique view follows the num
 			for (const Vector3 &offset : offsets) {
 				Vector3 centre = point + mirror * 2.0f + offset;
 				Basis basis = Basis::looking_at(point - centre, Vector3(1, 0, 0).cross(point - centre).normalized());
-				RID light = f.area_light(Vector2(a, b), energy, 100.0f, 0.0f);
+				RID light = f.area_light(Vector2(a, b), energy, 100.0f, 2.0f);
 				d.lights.clear();
 				add_light(d, light, RS::LIGHT_AREA, Transform3D(basis, centre));
 				RID rt = f.renderer.render_target_create(W, H);
@@ -354,7 +354,7 @@ TEST_CASE("[AreaLight3D][Render] a long thin light with nearly antipodal corners
 		RID plane = f.plane(200.0f);
 		RenderSceneData d = make_scene(camera_looking_down(3.0f), 60.0f, W, H, 20.0f);
 		add_geometry(d, plane, mat);
-		RID light = f.area_light(Vector2(100.0f, 0.05f), 1.0f, 1000.0f, 0.0f);
+		RID light = f.area_light(Vector2(100.0f, 0.05f), 1.0f, 1000.0f, 2.0f);
 		add_light(d, light, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(0, 0.3f, 0)));
 		RID rt = f.renderer.render_target_create(W, H);
 		f.renderer.render_scene(d, rt);

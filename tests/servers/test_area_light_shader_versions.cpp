@@ -45,7 +45,7 @@ TEST_CASE("[AreaLight3D][Shadows] the area shadow lookup is compiled only for vi
 		add_geometry(d, f.plane(4.0f), mat);
 		// A box between the light and the middle of the plane.
 		add_geometry(d, f.mesh(make_box(Vector3(0.3f, 0.3f, 0.3f))), mat, Transform3D(Basis(), Vector3(0, 0.8f, 0)));
-		RID light = f.area_light(Vector2(0.6f, 0.6f), 3.0f, 10.0f, 0.0f);
+		RID light = f.area_light(Vector2(0.6f, 0.6f), 3.0f, 10.0f, 2.0f);
 		add_light(d, light, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(0, 1.8f, 0)));
 		RID rt = f.renderer.render_target_create(S, S);
 		REQUIRE(rt.is_valid());

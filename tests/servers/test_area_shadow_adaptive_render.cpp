@@ -62,7 +62,7 @@ struct AdaptiveScene {
 		if (p_box) {
 			RenderTest::add_geometry(scene, f.mesh(RenderTest::make_box(BOX_HALF)), mat, Transform3D(Basis(), BOX_CENTER));
 		}
-		light = f.area_light(LIGHT_SIZE, 2.0f, 20.0f, 0.0f);
+		light = f.area_light(LIGHT_SIZE, 2.0f, 20.0f, 2.0f);
 		f.light_storage.light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 0.5f); // PCF radius 1 texel.
 		f.light_storage.light_set_shadow(light, true);
 		f.light_storage.light_area_set_shadow_mode(light, p_mode);
@@ -124,7 +124,7 @@ static void render_reference(const RenderSceneData &p_view, std::vector<float> &
 	ls.light_area_set_size(light, LIGHT_SIZE);
 	ls.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);
 	ls.light_set_param(light, RS::LIGHT_PARAM_RANGE, 20.0f);
-	ls.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+	ls.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
 	RenderSceneData d = p_view;
 	d.geometry.clear();
 	d.lights.clear();
@@ -234,8 +234,8 @@ TEST_CASE("[AreaShadowAdaptive][Render] fair sharing: trees take free tiles only
 		s.f.light_storage.light_area_set_shadow_grid(s.light, 3); // 9 tiles.
 		s.frame();
 		CHECK(s.shadows().light_get_shadow_map_count(s.light) == 9);
-		RID a1 = s.f.area_light(Vector2(0.5f, 0.5f), 1.0f, 10.0f, 0.0f);
-		RID a2 = s.f.area_light(Vector2(0.5f, 0.5f), 1.0f, 10.0f, 0.0f);
+		RID a1 = s.f.area_light(Vector2(0.5f, 0.5f), 1.0f, 10.0f, 2.0f);
+		RID a2 = s.f.area_light(Vector2(0.5f, 0.5f), 1.0f, 10.0f, 2.0f);
 		for (RID l : { a1, a2 }) {
 			s.f.light_storage.light_set_shadow(l, true);
 			s.f.light_storage.light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_ADAPTIVE);

@@ -79,7 +79,7 @@ struct ServerScene {
 		rs->light_area_set_size(light, Vector2(1.0f, 1.0f));
 		rs->light_set_param(light, RS::LIGHT_PARAM_ENERGY, 2.0f);
 		rs->light_set_param(light, RS::LIGHT_PARAM_RANGE, 10.0f);
-		rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 0.0f);
+		rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
 		rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f);
 		rs->light_area_set_shadow_grid(light, 2);
 		env = rs->environment_create();

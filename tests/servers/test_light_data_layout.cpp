@@ -110,10 +110,9 @@ static String read_text(const String &p_path) {
 // Compiles a compute shader that declares one std430 runtime array per struct (the way the scene
 // shader and the cluster builder declare them) and returns its SPIR-V.
 static std::vector<uint32_t> compile_layout_probe(RenderingDevice *p_rd, String &r_error) {
-	String root = ShaderRD::get_shaders_root();
 	String source = "#version 450\n";
-	source += read_text(root + "/light_data_inc.glsl") + "\n";
-	source += read_text(root + "/cluster_data_inc.glsl") + "\n";
+	source += String(ShaderRD::get_embedded_source("light_data_inc.glsl")) + "\n";
+	source += String(ShaderRD::get_embedded_source("cluster_data_inc.glsl")) + "\n";
 	source += R"(
 layout(local_size_x = 1) in;
 layout(set = 0, binding = 0, std430) buffer Lights { LightData data[]; } lights;

@@ -67,9 +67,15 @@ bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage,
 	tf.usage_bits = RD::TEXTURE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | RD::TEXTURE_USAGE_SAMPLING_BIT;
 	dummy_texture = rd->texture_create(tf);
 
-	RD::SamplerState ss; // Nearest, clamp: the shader uses texelFetch only.
+	RD::SamplerState ss; // Nearest, clamp: texelFetch (PCSS blocker search and filter).
 	sampler = rd->sampler_create(ss);
-	ERR_FAIL_COND_V_MSG(!data_buffer.is_valid() || !dummy_texture.is_valid() || !sampler.is_valid(), false, "AreaShadowRendererRD: GPU resources could not be created.");
+	RD::SamplerState cs; // Bilinear depth compare (receiver <= stored: lit): the PCF taps.
+	cs.mag_filter = RD::SAMPLER_FILTER_LINEAR;
+	cs.min_filter = RD::SAMPLER_FILTER_LINEAR;
+	cs.enable_compare = true;
+	cs.compare_op = RD::COMPARE_OP_LESS_OR_EQUAL;
+	compare_sampler = rd->sampler_create(cs);
+	ERR_FAIL_COND_V_MSG(!data_buffer.is_valid() || !dummy_texture.is_valid() || !sampler.is_valid() || !compare_sampler.is_valid(), false, "AreaShadowRendererRD: GPU resources could not be created.");
 	ERR_FAIL_COND_V_MSG(!depth_shader.initialize("area_shadow_depth.glsl", { "" }), false, "AreaShadowRendererRD: cannot load shaders/area_shadow_depth.glsl.");
 	initialized = true;
 	return true;
@@ -90,6 +96,9 @@ void AreaShadowRendererRD::finalize() {
 		if (sampler.is_valid()) {
 			rd->free(sampler);
 		}
+		if (compare_sampler.is_valid()) {
+			rd->free(compare_sampler);
+		}
 		if (data_buffer.is_valid()) {
 			rd->free(data_buffer);
 		}
@@ -99,6 +108,7 @@ void AreaShadowRendererRD::finalize() {
 	pipeline = RID();
 	dummy_texture = RID();
 	sampler = RID();
+	compare_sampler = RID();
 	data_buffer = RID();
 	depth_shader.clear();
 	initialized = false;

@@ -102,6 +102,7 @@ private:
 	RD::FramebufferFormatID pipeline_format = 0;
 	RID dummy_texture; // Bound when no atlas exists yet.
 	RID sampler;
+	RID compare_sampler; // Linear + depth compare: the scene shader's bilinear PCF taps.
 	RID data_buffer; // AreaShadowData[max_lights].
 	uint32_t max_lights = 0;
 	std::vector<AreaShadowData> data;
@@ -206,6 +207,7 @@ public:
 	RID get_data_buffer() const { return data_buffer; }
 	RID get_atlas_texture() const { return current && current->texture.is_valid() ? current->texture : dummy_texture; }
 	RID get_sampler() const { return sampler; }
+	RID get_compare_sampler() const { return compare_sampler; }
 	const std::vector<AreaShadowData> &get_data() const { return data; }
 	// Shadow maps drawn by the last render_shadows() and since initialize().
 	uint32_t get_last_draw_count() const { return last_draw_count; }

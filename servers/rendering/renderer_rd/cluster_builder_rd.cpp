@@ -6,6 +6,7 @@
 
 #include "core/error/error_macros.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -15,13 +16,20 @@ bool ClusterBuilderRD::initialize(uint32_t p_max_elements) {
 	ERR_FAIL_COND_V_MSG(p_max_elements == 0, false, "ClusterBuilderRD: the maximum element count per type must be at least 1.");
 	finalize();
 
-	if (!shader.initialize("cluster_build.glsl", { "" })) {
+	// One variant per element type (CLUSTER_TYPE): each compiles only its own bound test.
+	std::vector<String> variants;
+	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
+		variants.push_back(vformat("#define CLUSTER_TYPE %u\n", t));
+	}
+	if (!shader.initialize("cluster_build.glsl", variants)) {
 		ERR_FAIL_V_MSG(false, "ClusterBuilderRD: cannot load shaders/cluster_build.glsl.");
 	}
-	RID shader_rid = shader.version_get_shader(0);
-	ERR_FAIL_COND_V_MSG(!shader_rid.is_valid(), false, "ClusterBuilderRD: cluster_build.glsl failed to compile: " + shader.get_last_error());
-	pipeline = rd->compute_pipeline_create(shader_rid);
-	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), false, "ClusterBuilderRD: cannot create the cluster build pipeline.");
+	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
+		RID shader_rid = shader.version_get_shader(int(t));
+		ERR_FAIL_COND_V_MSG(!shader_rid.is_valid(), false, "ClusterBuilderRD: cluster_build.glsl failed to compile: " + shader.get_last_error());
+		pipelines[t] = rd->compute_pipeline_create(shader_rid);
+		ERR_FAIL_COND_V_MSG(!pipelines[t].is_valid(), false, "ClusterBuilderRD: cannot create the cluster build pipeline.");
+	}
 
 	max_elements = (p_max_elements + 31) / 32 * 32;
 	elements.assign(ELEMENT_TYPE_MAX * max_elements, ElementData());
@@ -43,14 +51,18 @@ void ClusterBuilderRD::finalize() {
 		if (element_buffer.is_valid()) {
 			rd->free(element_buffer);
 		}
-		if (pipeline.is_valid()) {
-			rd->free(pipeline);
+		for (RID &p : pipelines) {
+			if (p.is_valid()) {
+				rd->free(p);
+			}
 		}
 	}
 	cluster_buffer = RID();
 	element_buffer = RID();
 	uniform_set = RID();
-	pipeline = RID();
+	for (RID &p : pipelines) {
+		p = RID();
+	}
 	shader.clear();
 	width = height = tiles_x = tiles_y = 0;
 	max_elements = 0;
@@ -77,6 +89,10 @@ bool ClusterBuilderRD::setup(uint32_t p_width, uint32_t p_height) {
 	height = p_height;
 	tiles_x = (width + TILE_SIZE - 1) / TILE_SIZE;
 	tiles_y = (height + TILE_SIZE - 1) / TILE_SIZE;
+	// The first bake writes every word of the new buffer (written_words), later ones only the live ones.
+	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
+		written_words[t] = get_words_per_type();
+	}
 	uint64_t words = uint64_t(ELEMENT_TYPE_MAX) * tiles_x * tiles_y * Z_SLICES * get_words_per_type();
 	ERR_FAIL_COND_V_MSG(words * 4 > 0x7FFFFFFF, false, "ClusterBuilderRD: the cluster buffer would exceed 2 GiB; lower the element count or the resolution.");
 	cluster_buffer = rd->storage_buffer_create(uint32_t(words * 4));
@@ -154,7 +170,7 @@ bool ClusterBuilderRD::add_area_light(const Vector3 &p_center, const Vector3 &p_
 	return true;
 }
 
-void ClusterBuilderRD::bake_cluster() {
+void ClusterBuilderRD::bake_cluster(uint32_t p_type_count) {
 	ERR_FAIL_COND_MSG(!cluster_buffer.is_valid(), "ClusterBuilderRD::bake_cluster() called before setup().");
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 
@@ -178,11 +194,22 @@ void ClusterBuilderRD::bake_cluster() {
 		pc.element_count[t] = element_count[t];
 	}
 
+	// One dispatch per type over the words that hold its live elements, plus the words that were live in
+	// the previous bake (rewritten as 0): words past both are 0 already, so the buffer stays exact while a
+	// type without elements dispatches nothing. The scene shader reads only the live words.
 	RD::ComputeListID list = rd->compute_list_begin();
-	rd->compute_list_bind_compute_pipeline(list, pipeline);
-	rd->compute_list_bind_uniform_set(list, uniform_set, 0);
-	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
-	rd->compute_list_dispatch_threads(list, tiles_x * tiles_y * Z_SLICES, get_words_per_type(), ELEMENT_TYPE_MAX);
+	for (uint32_t t = 0; t < std::min(p_type_count, uint32_t(ELEMENT_TYPE_MAX)); t++) {
+		const uint32_t live = (element_count[t] + 31) / 32;
+		const uint32_t dispatch_words = std::max(live, written_words[t]);
+		written_words[t] = live;
+		if (dispatch_words == 0) {
+			continue;
+		}
+		rd->compute_list_bind_compute_pipeline(list, pipelines[t]);
+		rd->compute_list_bind_uniform_set(list, uniform_set, 0);
+		rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
+		rd->compute_list_dispatch_threads(list, tiles_x * tiles_y * Z_SLICES, dispatch_words, 1);
+	}
 	rd->compute_list_end();
 }
 

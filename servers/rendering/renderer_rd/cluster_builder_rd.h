@@ -72,8 +72,9 @@ public:
 private:
 	/* Private Members */
 
-	ShaderRD shader;
-	RID pipeline;
+	ShaderRD shader; // One variant per ElementType (CLUSTER_TYPE).
+	RID pipelines[ELEMENT_TYPE_MAX];
+	uint32_t written_words[ELEMENT_TYPE_MAX] = {}; // Mask words per cluster the last bake wrote, per type.
 	uint32_t max_elements = 0; // Per type, multiple of 32.
 	RID element_buffer; // ElementData[ELEMENT_TYPE_MAX * max_elements]
 	std::vector<ElementData> elements; // Same layout, CPU side.
@@ -98,7 +99,7 @@ public:
 	bool initialize(uint32_t p_max_elements);
 	// Frees every GPU object (before RenderingDevice::finalize()).
 	void finalize();
-	bool is_initialized() const { return pipeline.is_valid(); }
+	bool is_initialized() const { return pipelines[0].is_valid(); }
 
 	// (Re)allocates the cluster buffer for a render size. Returns false for zero sizes.
 	bool setup(uint32_t p_width, uint32_t p_height);
@@ -115,8 +116,9 @@ public:
 	// contains every point in front within distance r of the rectangle, intersected with the thesis'
 	// eq. 5.1 sphere (radius r + sqrt(a^2 + b^2) / 2 around the centre). Returns false when full.
 	bool add_area_light(const Vector3 &p_center, const Vector3 &p_half_axis_x, const Vector3 &p_half_axis_y, const Vector3 &p_normal, float p_range);
-	// Uploads the elements and records the build dispatch (outside any list).
-	void bake_cluster();
+	// Uploads the elements and records the build dispatch (outside any list). p_type_count < ELEMENT_TYPE_MAX
+	// builds only the first types (the benchmark's "no area code" baseline; the other masks are stale).
+	void bake_cluster(uint32_t p_type_count = ELEMENT_TYPE_MAX);
 
 	RID get_cluster_buffer() const { return cluster_buffer; }
 	uint32_t get_tiles_x() const { return tiles_x; }

@@ -5,6 +5,7 @@
 #include "servers/rendering/renderer_rd/shader_rd.h"
 
 #include "core/error/error_macros.h"
+#include "servers/rendering/renderer_rd/shaders/shader_sources.gen.h"
 
 #include <glslang/build_info.h>
 
@@ -15,10 +16,6 @@
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
-
-#ifndef GODOT_AREA_ROOT
-#define GODOT_AREA_ROOT "."
-#endif
 
 namespace {
 
@@ -38,7 +35,54 @@ bool read_text_file(const String &p_path, String &r_text) {
 
 String dir_of(const String &p_path) {
 	size_t pos = p_path.find_last_of('/');
-	return pos == String::npos ? String(".") : p_path.substr(0, pos);
+	return pos == String::npos ? String() : p_path.substr(0, pos);
+}
+
+bool is_absolute(const String &p_path) {
+	return !p_path.empty() && p_path[0] == '/';
+}
+
+// "a/b/../c.glsl" -> "a/c.glsl"; "." segments and empty segments dropped. A ".." above the start
+// is kept, so it can never name an embedded file.
+String normalize_path(const String &p_path) {
+	std::vector<String> parts;
+	std::istringstream ss(p_path);
+	String part;
+	while (std::getline(ss, part, '/')) {
+		if (part.empty() || part == ".") {
+			continue;
+		}
+		if (part == ".." && !parts.empty() && parts.back() != "..") {
+			parts.pop_back();
+		} else {
+			parts.push_back(part);
+		}
+	}
+	String out = is_absolute(p_path) ? "/" : "";
+	for (size_t i = 0; i < parts.size(); i++) {
+		out += (i ? "/" : "") + parts[i];
+	}
+	return out;
+}
+
+String join_path(const String &p_dir, const String &p_rel) {
+	if (is_absolute(p_rel)) {
+		return normalize_path(p_rel);
+	}
+	return normalize_path(p_dir.empty() ? p_rel : p_dir + "/" + p_rel);
+}
+
+// Text of p_path: from the disk for an absolute path, else from the shaders embedded at build time.
+bool read_shader_file(const String &p_path, String &r_text) {
+	if (is_absolute(p_path)) {
+		return read_text_file(p_path, r_text);
+	}
+	const char *source = ShaderRD::get_embedded_source(p_path);
+	if (!source) {
+		return false;
+	}
+	r_text = source;
+	return true;
 }
 
 // "FOO BAR=2" -> "#define FOO\n#define BAR 2\n"; text containing '#' is used as is.
@@ -84,8 +128,22 @@ String quote_label(const String &p_label) {
 
 } // namespace
 
-String ShaderRD::get_shaders_root() {
-	return String(GODOT_AREA_ROOT) + "/servers/rendering/renderer_rd/shaders";
+const char *ShaderRD::get_embedded_source(const String &p_path) {
+	const String path = normalize_path(p_path);
+	for (const auto &entry : _shader_sources) {
+		if (path == entry.path) {
+			return entry.source;
+		}
+	}
+	return nullptr;
+}
+
+std::vector<String> ShaderRD::get_embedded_paths() {
+	std::vector<String> paths;
+	for (const auto &entry : _shader_sources) {
+		paths.push_back(entry.path);
+	}
+	return paths;
 }
 
 String ShaderRD::get_cache_dir() {
@@ -93,7 +151,16 @@ String ShaderRD::get_cache_dir() {
 	if (env && env[0]) {
 		return String(env);
 	}
-	return String(GODOT_AREA_ROOT) + "/.cache/shaders";
+	// XDG Base Directory specification: $XDG_CACHE_HOME (must be absolute), else ~/.cache.
+	const char *xdg = getenv("XDG_CACHE_HOME");
+	if (xdg && xdg[0] == '/') {
+		return String(xdg) + "/godot-area/shaders";
+	}
+	const char *home = getenv("HOME");
+	if (home && home[0] == '/') {
+		return String(home) + "/.cache/godot-area/shaders";
+	}
+	return String(std::filesystem::temp_directory_path().string()) + "/godot-area-" + std::to_string(getuid()) + "/shaders";
 }
 
 bool ShaderRD::_expand_includes(const String &p_source, const String &p_file_label, const String &p_base_dir, int p_depth, int p_first_line, String &r_out) {
@@ -117,25 +184,22 @@ bool ShaderRD::_expand_includes(const String &p_source, const String &p_file_lab
 				return false;
 			}
 			String rel = stripped.substr(q1 + 1, q2 - q1 - 1);
-			String candidates[2] = { rel.size() && rel[0] == '/' ? rel : p_base_dir + "/" + rel, get_shaders_root() + "/" + rel };
+			// Relative to the including file (on disk or embedded), then the embedded shaders/ root.
+			String candidates[2] = { join_path(p_base_dir, rel), normalize_path(rel) };
 			String text;
 			String found;
 			for (const String &c : candidates) {
-				if (read_text_file(c, text)) {
+				if (read_shader_file(c, text)) {
 					found = c;
 					break;
 				}
 			}
 			if (found.empty()) {
-				last_error = vformat("%s:%d: cannot open included file \"%s\" (looked in %s and %s).", p_file_label.c_str(), line_number, rel.c_str(), p_base_dir.c_str(), get_shaders_root().c_str());
+				last_error = vformat("%s:%d: cannot open included file \"%s\" (looked in %s and in the embedded shaders).", p_file_label.c_str(), line_number, rel.c_str(), p_base_dir.empty() ? "shaders/" : p_base_dir.c_str());
 				ERR_PRINT(last_error);
 				return false;
 			}
-			String label = found;
-			String root = get_shaders_root() + "/";
-			if (string_begins_with(label, root)) {
-				label = label.substr(root.size());
-			}
+			const String label = found;
 			r_out += vformat("#line 1 \"%s\"\n", quote_label(label).c_str());
 			if (!_expand_includes(text, label, dir_of(found), p_depth + 1, 1, r_out)) {
 				return false;
@@ -264,8 +328,7 @@ bool ShaderRD::initialize_from_source(const String &p_source, const String &p_na
 		variant_defines.push_back(String());
 	}
 	general_defines = p_general_defines;
-	String base = p_base_dir.empty() ? get_shaders_root() : p_base_dir;
-	if (!_parse_sections(p_source, p_name, base)) {
+	if (!_parse_sections(p_source, p_name, p_base_dir)) {
 		return false;
 	}
 	initialized = true;
@@ -274,21 +337,17 @@ bool ShaderRD::initialize_from_source(const String &p_source, const String &p_na
 }
 
 bool ShaderRD::initialize(const String &p_path, const std::vector<String> &p_variant_defines, const String &p_general_defines) {
-	String path = (!p_path.empty() && p_path[0] == '/') ? p_path : get_shaders_root() + "/" + p_path;
+	const String path = normalize_path(p_path);
 	String text;
-	if (!read_text_file(path, text)) {
+	if (!read_shader_file(path, text)) {
 		clear();
 		initialized = false;
-		last_error = vformat("ShaderRD: cannot open shader file '%s'.", path.c_str());
+		last_error = is_absolute(path) ? vformat("ShaderRD: cannot open shader file '%s'.", path.c_str())
+									   : vformat("ShaderRD: no shader '%s' is embedded in this build (see servers/rendering/renderer_rd/shaders/).", path.c_str());
 		ERR_PRINT(last_error);
 		return false;
 	}
-	String label = path;
-	String root = get_shaders_root() + "/";
-	if (string_begins_with(label, root)) {
-		label = label.substr(root.size());
-	}
-	return initialize_from_source(text, label, p_variant_defines, p_general_defines, dir_of(path));
+	return initialize_from_source(text, path, p_variant_defines, p_general_defines, dir_of(path));
 }
 
 String ShaderRD::get_stage_source(RenderingDevice::ShaderStage p_stage, int p_variant, const String &p_version_defines) const {

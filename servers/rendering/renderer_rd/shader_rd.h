@@ -7,7 +7,13 @@
 /* File format: each section starts with a `#[stage]` line and its first  */
 /* real line is `#version 450`. Lines before the first section are        */
 /* ignored. `#include "file.glsl"` is expanded textually, resolved        */
-/* relative to the including file, then to GODOT_AREA_ROOT "/servers/rendering/renderer_rd/shaders".    */
+/* relative to the including file, then to the shaders/ root.             */
+/*                                                                        */
+/* Shader files are embedded in the binary at build time (SConstruct      */
+/* turns servers/rendering/renderer_rd/shaders/**.glsl into .glsl.gen.h), */
+/* so a relative name ("forward_clustered/scene_forward_clustered.glsl")  */
+/* and its includes never touch the disk. An absolute path reads that     */
+/* file (tests); its includes are looked up beside it, then embedded.     */
 /* The expanded source carries `#line N "file"` directives, so glslang    */
 /* reports errors against the original file and line.                     */
 /*                                                                        */
@@ -17,7 +23,8 @@
 /* "FOO" is turned into "#define FOO").                                   */
 /*                                                                        */
 /* SPIR-V cache: directory $GODOT_AREA_SHADER_CACHE, else                 */
-/* GODOT_AREA_ROOT "/.cache/shaders". Key: 128-bit hash of the fully      */
+/* $XDG_CACHE_HOME/godot-area/shaders, else ~/.cache/godot-area/shaders   */
+/* (XDG Base Directory spec). Key: 128-bit hash of the fully              */
 /* preprocessed stage source + stage + compiler tag. Writes are atomic.   */
 
 #pragma once
@@ -33,11 +40,11 @@
 class ShaderRD {
 public:
 	// Loads and splits the file (includes are expanded here). Returns false (and prints the
-	// reason) when the file or an include cannot be read. p_path: absolute, or relative to
-	// GODOT_AREA_ROOT "/servers/rendering/renderer_rd/shaders". Nothing is compiled yet.
+	// reason) when the file or an include cannot be read. p_path: relative to shaders/ (an
+	// embedded file), or absolute (read from the disk). Nothing is compiled yet.
 	bool initialize(const String &p_path, const std::vector<String> &p_variant_defines, const String &p_general_defines = "");
 	// Same, from source text already in memory; p_name is used in error messages and includes
-	// are resolved relative to p_base_dir (default: the shaders root).
+	// are resolved relative to p_base_dir (absolute: on disk; relative or empty: embedded).
 	bool initialize_from_source(const String &p_source, const String &p_name, const std::vector<String> &p_variant_defines, const String &p_general_defines = "", const String &p_base_dir = "");
 
 	// Versions: independent copies with extra defines (Godot uses them for material code).
@@ -65,7 +72,10 @@ public:
 
 	// Directory used for the SPIR-V cache (created on demand).
 	static String get_cache_dir();
-	static String get_shaders_root();
+	// Text of the embedded file at p_path (relative to shaders/), nullptr if there is none.
+	static const char *get_embedded_source(const String &p_path);
+	// Every embedded file, sorted ("area_light_inc.glsl", "forward_clustered/...").
+	static std::vector<String> get_embedded_paths();
 	// Fully preprocessed source of one stage of one variant (tests and debugging).
 	String get_stage_source(RenderingDevice::ShaderStage p_stage, int p_variant, const String &p_version_defines = "") const;
 

@@ -115,7 +115,8 @@ bool RendererLightStorage::validate_param(RS::LightType p_type, RS::LightParam p
 		return false;
 	}
 	if (p_type == RS::LIGHT_AREA && p_param == RS::LIGHT_PARAM_ATTENUATION) {
-		// The area light's range window is raised to this power: (max(1 - (d/r)^4, 0)^2)^attenuation.
+		// The area light's distance exponent: W(d) = window * d^(2 - attenuation). Upstream warns that
+		// negative values give unexpected results; we reject them.
 		ERR_FAIL_COND_V_MSG(p_value < 0.0f, false, vformat("LIGHT_PARAM_ATTENUATION of an area light must not be negative, got %s; the old value is kept.", rtos(p_value).c_str()));
 	}
 	return true;

@@ -60,7 +60,10 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	if (initialized) {
 		return true;
 	}
-	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
+	// Indexed by SceneShaderVariant. The brute-force and debug variants are compiled on first use only.
+	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n", "#define MODE_FORCE_ALL_LIGHTS\n",
+		"#define USE_AREA_LIGHTS\n#define MODE_FORCE_ALL_LIGHTS\n", "#define MODE_DEBUG_CLUSTER\n", "#define USE_AREA_LIGHTS\n#define MODE_DEBUG_CLUSTER\n" };
+	static_assert(SCENE_SHADER_MAX == 7, "One variant define per SceneShaderVariant.");
 	const String general_defines = area_ltc_precision_fix ? "" : "#define AREA_LTC_NO_PRECISION_FIX\n";
 	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants, general_defines), false,
 			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
@@ -246,22 +249,25 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 	return defines;
 }
 
-RID RenderForwardClustered::_get_version_shader(uint32_t p_key) {
+RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVariant p_variant) {
 	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
 	const uint32_t valid_bits = area_bits | SCENE_VERSION_FEATURE_BITS;
 	const bool has_area = (p_key & AREA_VERSION_METHOD_BITS) != 0;
 	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0), RID(),
 			vformat("RenderForwardClustered: invalid scene shader version key 0x%x (area method mask | area shadow bits | feature bits).", p_key));
+	ERR_FAIL_COND_V_MSG(has_area != _is_area_variant(p_variant), RID(), vformat("RenderForwardClustered: variant %d does not fit version key 0x%x.", int(p_variant), p_key));
 	if (p_key == 0) {
-		return scene_shader.version_get_shader(SCENE_SHADER_COLOR);
+		return scene_shader.version_get_shader(p_variant);
 	}
 	AreaVersion &av = area_versions[p_key];
 	if (!av.version.is_valid()) {
 		av.version = scene_shader.version_create(get_scene_version_defines(p_key));
 	}
-	RID shader = scene_shader.version_get_shader(av.version, has_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR);
+	RID shader = scene_shader.version_get_shader(av.version, p_variant);
 	if (shader.is_valid()) {
-		compiled_area_method_mask |= p_key & AREA_VERSION_METHOD_BITS;
+		if (p_variant == SCENE_SHADER_COLOR_AREA) {
+			compiled_area_method_mask |= p_key & AREA_VERSION_METHOD_BITS;
+		}
 		compiled_feature_mask |= p_key & SCENE_VERSION_FEATURE_BITS;
 	}
 	return shader;
@@ -290,7 +296,7 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
 	}
 	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(p_variant == SCENE_SHADER_DEPTH ? 0 : 1);
-	RID shader = p_variant == SCENE_SHADER_DEPTH ? scene_shader.version_get_shader(p_variant) : _get_version_shader(p_area_methods);
+	RID shader = p_variant == SCENE_SHADER_DEPTH ? scene_shader.version_get_shader(p_variant) : _get_version_shader(p_area_methods, p_variant);
 	ERR_FAIL_COND_V_MSG(!shader.is_valid(), RID(), "RenderForwardClustered: the scene shader for this pipeline failed to compile: " + scene_shader.get_last_error());
 	RID pipeline = rd->render_pipeline_create(shader, p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
 	ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), RID(), "RenderForwardClustered: render pipeline creation failed.");
@@ -306,7 +312,7 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		if (has_area && !ltc_lut.is_initialized()) {
 			ERR_FAIL_COND_V_MSG(!ltc_lut.initialize(), false, "RenderForwardClustered: the LTC lookup table could not be created.");
 		}
-		RID shader = _get_version_shader(p_area_methods);
+		RID shader = _get_version_shader(p_area_methods, has_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR);
 		AreaVersion &av = area_versions[p_area_methods];
 		const RID shadow_atlas = has_area ? area_shadows.get_atlas_texture() : RID();
 		const RID directional_buffer = (p_area_methods & SCENE_VERSION_DIRECTIONAL) ? light_storage->get_directional_light_buffer() : RID();
@@ -330,6 +336,7 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 12, area_shadows.get_data_buffer()));
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 13, area_shadows.get_atlas_texture()));
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 14, area_shadows.get_sampler()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 15, area_shadows.get_compare_sampler()));
 			}
 			if (p_area_methods & SCENE_VERSION_DIRECTIONAL) {
 				ERR_FAIL_COND_V_MSG(!directional_buffer.is_valid(), false, "RenderForwardClustered: a directional version without the directional light buffer.");
@@ -381,7 +388,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	// ADAPTIVE area shadows: apply the newest completed frame's banding flags before this frame records
 	// anything (the readback then waits for no work of this frame).
 	last_area_shadow_tests = 0;
-	area_shadows.begin_frame(p_render_target);
+	const bool area_code = !area_code_disabled;
+	if (area_code) {
+		area_shadows.begin_frame(p_render_target);
+	}
 
 	ERR_FAIL_COND_MSG(!cluster_builder.setup(rt->width, rt->height), "render_scene: cluster setup failed.");
 
@@ -392,13 +402,17 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	cluster_builder.begin(clip_from_view, z_far);
 	// AUTO area lights pick their method from the receivers inside their influence box (AreaMethodSelector).
-	light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
+	if (area_code) {
+		light_storage->set_area_auto_receivers(&p_data.geometry, mesh_storage, material_storage);
+	}
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
 	light_storage->update_directional_light_buffer(p_data.directional_lights, view_from_world);
 	// Sky: SH recomputed only when the sky changes; nothing at all without a sky.
 	ERR_FAIL_COND_MSG(!sky.prepare(p_data, light_storage, clip_from_view, rt->width, rt->height), "render_scene: the sky could not be prepared.");
 	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
-	area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
+	if (area_code) {
+		area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
+	}
 
 	SceneDataUBO ubo;
 	memset(&ubo, 0, sizeof(ubo));
@@ -423,7 +437,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.cluster_tiles_x = cluster_builder.get_tiles_x();
 	ubo.cluster_tile_count = cluster_builder.get_tiles_x() * cluster_builder.get_tiles_y();
 	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
-	ubo.area_light_count = light_storage->get_area_light_count();
+	ubo.area_light_count = area_code ? light_storage->get_area_light_count() : 0u;
 	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
 	int cluster_debug = debug_cluster_type;
 	if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS) {
@@ -451,7 +465,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	if (sky.has_frame_ambient()) {
 		area_methods |= SCENE_VERSION_SKY_AMBIENT;
 	}
-	const SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	// Brute force and the cluster debug view are variants of their own: the production ones carry no code
+	// for them. All colour variants declare the same bindings, so the sets are shared.
+	SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
+	if ((ubo.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
+		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_DEBUG : SCENE_SHADER_COLOR_DEBUG;
+	} else if ((ubo.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
+		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_FORCE_ALL : SCENE_SHADER_COLOR_FORCE_ALL;
+	}
 	ERR_FAIL_COND_MSG(!_ensure_scene_sets(area_methods), "render_scene: scene uniform sets could not be created.");
 	RID color_set = area_methods != 0 ? area_versions[area_methods].scene_set : scene_set_color;
 
@@ -503,8 +524,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "begin");
 
 	// 0. Area shadow maps (only the dirty ones; none in a static scene after the first frame).
-	area_shadows.render_shadows(p_data);
-	if (area_shadows.has_frame_shadows()) {
+	if (area_code) {
+		area_shadows.render_shadows(p_data);
+	}
+	if (area_code && area_shadows.has_frame_shadows()) {
 		rd->capture_timestamp(prefix + "area_shadows"); // Profiled only in frames with shadowed area lights.
 	}
 
@@ -528,10 +551,10 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "depth_prepass");
 	// 1b. ADAPTIVE area shadows: reprojection + banding of this frame's quad tests against the pre-pass depth
 	// (timestamps "area_reprojection", "area_banding"; nothing without ADAPTIVE lights).
-	last_area_shadow_tests = area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
+	last_area_shadow_tests = !area_code ? 0u : area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
 
 	// 2. Cluster build.
-	cluster_builder.bake_cluster();
+	cluster_builder.bake_cluster(area_code ? ClusterBuilderRD::ELEMENT_TYPE_MAX : ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT);
 	rd->capture_timestamp(prefix + "cluster_build");
 
 	// 3. Opaque pass.

@@ -69,6 +69,10 @@ public:
 		SCENE_SHADER_COLOR,
 		SCENE_SHADER_DEPTH, // MODE_DEPTH
 		SCENE_SHADER_COLOR_AREA, // USE_AREA_LIGHTS: colour pass with area lights.
+		SCENE_SHADER_COLOR_FORCE_ALL, // MODE_FORCE_ALL_LIGHTS: brute-force reference (tests).
+		SCENE_SHADER_COLOR_AREA_FORCE_ALL, // USE_AREA_LIGHTS + MODE_FORCE_ALL_LIGHTS.
+		SCENE_SHADER_COLOR_DEBUG, // MODE_DEBUG_CLUSTER: cluster debug view.
+		SCENE_SHADER_COLOR_AREA_DEBUG, // USE_AREA_LIGHTS + MODE_DEBUG_CLUSTER.
 		SCENE_SHADER_MAX,
 	};
 
@@ -165,6 +169,7 @@ private:
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
+	bool area_code_disabled = false; // Benchmark baseline (set_area_code_disabled).
 	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
 	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
@@ -175,9 +180,10 @@ private:
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
 	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
-	// The colour shader of the version for key p_key (area key | SCENE_VERSION_* bits): SCENE_SHADER_COLOR_AREA
-	// when it has area methods, else SCENE_SHADER_COLOR; key 0 is the default version. Compiled on first use.
-	RID _get_version_shader(uint32_t p_key);
+	// The colour shader p_variant of the version for key p_key (area key | SCENE_VERSION_* bits); key 0 is the
+	// default version. Area variants need area method bits and the others none. Compiled on first use.
+	RID _get_version_shader(uint32_t p_key, SceneShaderVariant p_variant);
+	static bool _is_area_variant(SceneShaderVariant p_variant) { return p_variant == SCENE_SHADER_COLOR_AREA || p_variant == SCENE_SHADER_COLOR_AREA_FORCE_ALL || p_variant == SCENE_SHADER_COLOR_AREA_DEBUG; }
 	// AREA_VERSION_SHADOWS_* bits for the area shadow data of this frame (area_shadows.prepare() ran).
 	uint32_t _get_area_shadow_version_bits() const;
 	void _free_render_target(RenderTarget *p_rt);
@@ -209,6 +215,10 @@ public:
 	// Debug view: output the per-pixel cluster element count of p_type (a ClusterBuilderRD::ElementType)
 	// instead of shading; -1 turns it off. Overrides RenderSceneData::debug_draw.
 	void set_debug_cluster_element_type(int p_type) { debug_cluster_type = p_type; }
+	// Benchmark baseline (bench --targets, P4): true skips every area-light step of a frame (area shadow
+	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
+	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.
+	void set_area_code_disabled(bool p_disabled) { area_code_disabled = p_disabled; }
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }
 	// SCENE_SHADER_COLOR_AREA: true once any area-method version has compiled it.

@@ -16,9 +16,11 @@
 /* window W(d) of the contract (area_light_range_window) that every       */
 /* method applies once per shading point, outside the integral.           */
 /*                                                                        */
-/* Every method follows the contract (/tmp area contract, light_data_inc. */
-/* glsl): one-sided (exactly 0 on and behind the light plane), exactly 0  */
-/* for a zero-size or black light, L_o = W(d) * integral f L_e cos dw.    */
+/* Every method obeys the same definition of the light (scene/3d/         */
+/* light_3d.h, AreaLight3D): one-sided (exactly 0 on and behind the light */
+/* plane), exactly 0 for a zero-size or black light, and                  */
+/* L_o = W(d) * integral f L_e cos dw with L_e = colour * energy * pi /   */
+/* A_n and W(d) = max(1 - (d/r)^4, 0)^2 * max(d, 1e-4)^(2 - attenuation). */
 /*                                                                        */
 /* Needs, included before: brdf_inc.glsl, light_data_inc.glsl,            */
 /* scene_forward_lights_inc.glsl (light_compute), and the bindings that   */

@@ -171,8 +171,12 @@ float ltc_polygon_form_factor(vec3 p_q[4]) {
 	return abs(sum) * (0.5 / M_PI);
 }
 
-// The contract's range window: d = distance from the shading point to the closest point of the
-// rectangle, W = ((max(1 - (d/r)^4, 0))^2)^attenuation, exactly 0 for d >= r, 1 for attenuation 0.
+// Distance attenuation of upstream Godot 4.7's area light (its class reference and shader):
+// d = distance from the shading point to the closest point of the rectangle, r = area_range,
+// a = area_attenuation (a distance exponent, as omni_attenuation):
+//   W(d) = max(1 - (d/r)^4, 0)^2 * max(d, 1e-4)^(2 - a).
+// The integral over the rectangle already falls off as the inverse square, so a = 2 leaves it
+// physical and only the range window applies; W is exactly 0 for d >= r.
 float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
 	float ax2 = dot(p_light.half_axis_x, p_light.half_axis_x);
 	float ay2 = dot(p_light.half_axis_y, p_light.half_axis_y);
@@ -186,8 +190,9 @@ float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
 	nd *= nd;
 	nd *= nd;
 	float window = 1.0 - nd;
-	window *= window; // > 0 here, so pow() is defined; pow(x, 0) = 1.
-	return pow(window, p_light.attenuation);
+	window *= window;
+	// pow(x, 0) = 1: a = 2 costs nothing but the window.
+	return window * pow(max(d, 1e-4), 2.0 - p_light.attenuation);
 }
 
 #ifdef AREA_LTC_HAS_LUT

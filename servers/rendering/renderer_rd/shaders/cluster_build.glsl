@@ -1,11 +1,13 @@
 /**************************************************************************/
 /*  cluster_build.glsl                                                    */
 /**************************************************************************/
-/* Builds the cluster masks (layout: cluster_data_inc.glsl). One thread   */
-/* per (cluster, mask word, element type): it computes the view-space     */
+/* Builds the cluster masks (layout: cluster_data_inc.glsl). One variant */
+/* per element type (CLUSTER_TYPE, so each compiles only its own bound    */
+/* test) and one dispatch per type over the words that hold live          */
+/* elements: one thread per (cluster, mask word) computes the view-space  */
 /* AABB of its cluster's frustum piece, tests the 32 elements of its word */
-/* against it and writes the word. Every word is written, so the buffer  */
-/* needs no clearing.                                                     */
+/* against it and writes the word (0 past the element count: the words    */
+/* live in the previous frame are rewritten so, ClusterBuilderRD).        */
 /*                                                                        */
 /* Godot rasterizes proxy meshes (icosphere, cone) into tiles; we test    */
 /* analytic bounding volumes instead, which is exact-conservative on any  */
@@ -131,9 +133,9 @@ bool test_obb(vec3 p_box_min, vec3 p_box_max, vec3 p_center, vec3 p_u0, vec3 p_u
 void main() {
 	uint cluster_count = params.tiles_x * params.tiles_y * CLUSTER_Z_SLICES;
 	uint index = gl_GlobalInvocationID.x;
-	uint type = gl_GlobalInvocationID.z;
+	const uint type = CLUSTER_TYPE;
 	uint word = gl_GlobalInvocationID.y;
-	if (index >= cluster_count || word >= params.words_per_type || type >= CLUSTER_ELEMENT_TYPE_MAX) {
+	if (index >= cluster_count || word >= params.words_per_type) {
 		return;
 	}
 	uint slice = index % CLUSTER_Z_SLICES;

@@ -45,7 +45,7 @@ struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	vec3 position; // 0: view space centre of the rectangle, metres.
 	float inv_radius; // 12: 1 / area_range (1/m); range = max distance from any point of the rectangle.
 	vec3 half_axis_x; // 16: view space, local +X scaled by area_size.x / 2 (metres).
-	float attenuation; // 28: area_attenuation, exponent of the range window W(d) (0 = no window).
+	float attenuation; // 28: area_attenuation, distance exponent a of W(d) = window * d^(2 - a) (2 = physical).
 	vec3 half_axis_y; // 32: view space, local +Y scaled by area_size.y / 2 (metres).
 	float specular_amount; // 44: "light_specular" multiplier of the specular lobe.
 	vec3 normal; // 48: view space unit emission direction (the light's local -Z); only this side emits.

@@ -67,7 +67,7 @@ public:
 		float position[3]; // View space centre, metres.
 		float inv_radius; // 1 / area_range.
 		float half_axis_x[3]; // View space local +X * size.x / 2.
-		float attenuation; // Range window exponent (area_attenuation).
+		float attenuation; // area_attenuation: distance exponent (2 = physical).
 		float half_axis_y[3]; // View space local +Y * size.y / 2.
 		float specular_amount; // LIGHT_PARAM_SPECULAR.
 		float normal[3]; // View space unit emission direction (local -Z).

@@ -10,6 +10,10 @@
 /*     view has area lights; compiled per version with the AREA_METHOD_*  */
 /*     defines of the methods in use (area_light_inc.glsl dispatches) and */
 /*     AREA_SHADOWS_PCF / _PCSS only when some light has area shadows.    */
+/*   3, 4 MODE_FORCE_ALL_LIGHTS (without / with USE_AREA_LIGHTS): the     */
+/*     brute-force reference loops (RS::set_debug_force_all_lights);      */
+/*   5, 6 MODE_DEBUG_CLUSTER (same): the cluster debug views.             */
+/*   The production variants 0 and 2 carry neither.                       */
 /* Any colour variant may carry USE_DIRECTIONAL_LIGHTS (a version of a   */
 /* view with a DirectionalLight3D: binding 8 and the directional loop,   */
 /* scene_forward_directional_inc.glsl); without it there is no sun code.*/
@@ -103,19 +107,49 @@ vec3 srgb_to_linear(vec3 p_c) {
 
 void main() {
 #ifndef MODE_DEPTH
+#ifdef MODE_DEBUG_CLUSTER
+	// Only in the debug variants (a software rasterizer runs untaken branches, so the production variants
+	// carry no debug code). The flag stays a run-time test so every variant uses the same bindings.
 	if ((scene_data.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
 		// Debug view (RS::VIEWPORT_DEBUG_DRAW_CLUSTER_*): how many elements of one type the cluster of
 		// this fragment lists, written to every colour channel.
 		uvec2 dtile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
 		uint dslice = cluster_get_slice(-vertex_interp.z, scene_data.z_far);
 		uint doffset = cluster_get_offset(min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1)), dtile, dslice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, scene_data.cluster_words_per_type);
+		uint dtype = min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1));
+		uint dlive = dtype == uint(CLUSTER_ELEMENT_TYPE_OMNI) ? scene_data.omni_light_count : (dtype == uint(CLUSTER_ELEMENT_TYPE_SPOT) ? scene_data.spot_light_count : scene_data.area_light_count);
+		uint dwords = min(scene_data.cluster_words_per_type, (dlive + 31u) / 32u); // Only live words are built.
 		uint dcount = 0u;
-		for (uint w = 0u; w < scene_data.cluster_words_per_type; w++) {
+		for (uint w = 0u; w < dwords; w++) {
 			dcount += uint(bitCount(cluster_buffer.data[doffset + w]));
 		}
-		frag_color = vec4(vec3(float(dcount)), 1.0);
+		// Green, area lights only: how many of them light this fragment (unshadowed result > 0), so the
+		// clusters' overhead (listed / lit pairs, bench --targets P5) can be counted on the image.
+		float dlit = 0.0;
+#ifdef USE_AREA_LIGHTS
+		if (scene_data.debug_cluster_type == uint(CLUSTER_ELEMENT_TYPE_AREA)) {
+			vec3 dN = normalize(normal_interp) * (gl_FrontFacing ? 1.0 : -1.0);
+			vec3 dV = scene_data.clip_from_view[3][3] == 1.0 ? vec3(0.0, 0.0, 1.0) : normalize(-vertex_interp);
+			for (uint w = 0u; w < dwords; w++) {
+				uint mask = cluster_buffer.data[doffset + w];
+				while (mask != 0u) {
+					uint bit = uint(findLSB(mask));
+					mask &= ~(1u << bit);
+					uint i = w * 32u + bit;
+					if (i >= scene_data.area_light_count) {
+						continue;
+					}
+					vec3 dd = vec3(0.0), ds = vec3(0.0);
+					light_process_area_method(area_lights.data[i], vertex_interp, dN, dV, material.diffuse_mode, clamp(material.roughness, 0.0, 1.0), vec3(0.04), 1.0, true, dd, ds);
+					dlit += (max(max(dd.r, dd.g), dd.b) + max(max(ds.r, ds.g), ds.b)) > 0.0 ? 1.0 : 0.0;
+				}
+			}
+		}
+#endif
+		frag_color = vec4(float(dcount), dlit, float(dcount), 1.0);
 		return;
 	}
+#endif
 
 	vec3 albedo = material.albedo.rgb;
 	float alpha = material.albedo.a;
@@ -159,6 +193,7 @@ void main() {
 	vec3 diffuse_light = vec3(0.0);
 	vec3 specular_light = vec3(0.0);
 
+#ifdef MODE_FORCE_ALL_LIGHTS
 	if ((scene_data.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
 		// Brute force reference: every light, in index order (same order as the clustered walk, so the
 		// sums are bit-identical when clustering drops only lights that contribute exactly 0).
@@ -186,13 +221,19 @@ void main() {
 			specular_light += area_specular * area_shadow;
 		}
 #endif
-	} else {
+	} else
+#endif // MODE_FORCE_ALL_LIGHTS
+	{
 		uvec2 tile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
 		uint slice = cluster_get_slice(-vertex.z, scene_data.z_far);
 		uint words = scene_data.cluster_words_per_type;
+		// Each type's loop walks only the mask words that can hold a live light of that type: a SIMD
+		// rasterizer runs the loop body once per word for the whole pixel group, so walking all of the
+		// capacity's words (16 at 512 lights) costs every pixel even where no light of the type exists.
 
 		uint omni_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_OMNI, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
-		for (uint w = 0u; w < words; w++) {
+		uint omni_words = min(words, (scene_data.omni_light_count + 31u) / 32u);
+		for (uint w = 0u; w < omni_words; w++) {
 			uint mask = cluster_buffer.data[omni_offset + w];
 			while (mask != 0u) {
 				uint bit = uint(findLSB(mask));
@@ -206,7 +247,8 @@ void main() {
 		}
 
 		uint spot_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_SPOT, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
-		for (uint w = 0u; w < words; w++) {
+		uint spot_words = min(words, (scene_data.spot_light_count + 31u) / 32u);
+		for (uint w = 0u; w < spot_words; w++) {
 			uint mask = cluster_buffer.data[spot_offset + w];
 			while (mask != 0u) {
 				uint bit = uint(findLSB(mask));
@@ -222,7 +264,8 @@ void main() {
 #ifdef USE_AREA_LIGHTS
 		// Thesis Listing A.3: the area lights of this cluster.
 		uint area_offset = cluster_get_offset(CLUSTER_ELEMENT_TYPE_AREA, tile, slice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, words);
-		for (uint w = 0u; w < words; w++) {
+		uint area_words = min(words, (scene_data.area_light_count + 31u) / 32u);
+		for (uint w = 0u; w < area_words; w++) {
 			uint mask = cluster_buffer.data[area_offset + w];
 			while (mask != 0u) {
 				uint bit = uint(findLSB(mask));
@@ -233,6 +276,9 @@ void main() {
 				}
 				vec3 area_diffuse = vec3(0.0), area_specular = vec3(0.0);
 				light_process_area_method(area_lights.data[i], vertex, N, V, diffuse_mode, roughness, f0, f90, specular_enabled, area_diffuse, area_specular);
+				if (area_diffuse == vec3(0.0) && area_specular == vec3(0.0)) {
+					continue; // Unlit here: no shadow lookup (it could only scale 0).
+				}
 				float area_shadow = light_process_area_shadow(i, vertex, N); // Area soft shadows (area_light_shadow_inc.glsl).
 				diffuse_light += area_diffuse * area_shadow;
 				specular_light += area_specular * area_shadow;
