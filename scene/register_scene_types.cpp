@@ -17,6 +17,8 @@
 #include "scene/main/missing_node.h"
 #include "scene/main/node.h"
 #include "scene/resources/environment.h"
+#include "scene/resources/sky.h"
+#include "scene/resources/sky_material.h"
 #include "scene/resources/material.h"
 #include "scene/resources/mesh.h"
 #include "scene/resources/primitive_meshes.h"
@@ -53,6 +55,8 @@ void register_scene_types() {
 	GDREGISTER_CLASS(QuadMesh);
 	GDREGISTER_CLASS(BoxMesh);
 	GDREGISTER_CLASS(SphereMesh);
+	GDREGISTER_CLASS(ProceduralSkyMaterial);
+	GDREGISTER_CLASS(Sky);
 	GDREGISTER_CLASS(Environment);
 	GDREGISTER_CLASS(World3D);
 	GDREGISTER_CLASS(MissingResource);

@@ -377,7 +377,7 @@ public:
 
 	// Creates an environment (background CLEAR_COLOR, ambient source BG, Godot's defaults).
 	virtual RID environment_create() = 0;
-	// Sets the background mode (only CLEAR_COLOR and COLOR are drawn; others fall back to CLEAR_COLOR).
+	// Sets the background mode (CLEAR_COLOR, COLOR and SKY are drawn; others fall back to CLEAR_COLOR).
 	virtual void environment_set_background(RID p_env, EnvironmentBG p_bg) = 0;
 	// Sets the background colour (sRGB) used by ENV_BG_COLOR.
 	virtual void environment_set_bg_color(RID p_env, const Color &p_color) = 0;
@@ -385,6 +385,38 @@ public:
 	virtual void environment_set_bg_energy(RID p_env, float p_multiplier) = 0;
 	// Sets the ambient light colour (sRGB), its source and energy.
 	virtual void environment_set_ambient_light(RID p_env, const Color &p_color, EnvironmentAmbientSource p_ambient = ENV_AMBIENT_SOURCE_BG, float p_energy = 1.0f) = 0;
+
+	/* SKY API */
+	// Godot's ProceduralSkyMaterial parameters (colours sRGB as saved, angles in degrees), pushed as a whole.
+	struct ProceduralSkyParams {
+		Color sky_top_color = Color(0.385f, 0.454f, 0.55f);
+		Color sky_horizon_color = Color(0.6463f, 0.6558f, 0.6708f);
+		float sky_curve = 0.15f;
+		float sky_energy_multiplier = 1.0f;
+		Color ground_bottom_color = Color(0.2f, 0.169f, 0.133f);
+		Color ground_horizon_color = Color(0.6463f, 0.6558f, 0.6708f);
+		float ground_curve = 0.02f;
+		float ground_energy_multiplier = 1.0f;
+		float sun_angle_max = 30.0f; // Degrees.
+		float sun_curve = 0.15f;
+		float energy_multiplier = 1.0f;
+		bool operator==(const ProceduralSkyParams &p_o) const {
+			return sky_top_color == p_o.sky_top_color && sky_horizon_color == p_o.sky_horizon_color && sky_curve == p_o.sky_curve && sky_energy_multiplier == p_o.sky_energy_multiplier &&
+					ground_bottom_color == p_o.ground_bottom_color && ground_horizon_color == p_o.ground_horizon_color && ground_curve == p_o.ground_curve &&
+					ground_energy_multiplier == p_o.ground_energy_multiplier && sun_angle_max == p_o.sun_angle_max && sun_curve == p_o.sun_curve && energy_multiplier == p_o.energy_multiplier;
+		}
+	};
+	// A sky material (ProceduralSkyMaterial) and a sky (Sky: material + radiance size), as Godot's RS.
+	virtual RID sky_material_create() = 0;
+	virtual void sky_material_set_procedural(RID p_material, const ProceduralSkyParams &p_params) = 0;
+	virtual RID sky_create() = 0;
+	virtual void sky_set_material(RID p_sky, RID p_material) = 0;
+	// Radiance cubemap size in pixels (Godot's Sky.radiance_size as a size: 32..2048).
+	virtual void sky_set_radiance_size(RID p_sky, int p_size) = 0;
+	// The sky of ENV_BG_SKY and of sky ambient (RID() = none).
+	virtual void environment_set_sky(RID p_env, RID p_sky) = 0;
+	// ambient_light_sky_contribution (0..1): the share of the ambient that comes from the sky.
+	virtual void environment_set_ambient_sky_contribution(RID p_env, float p_contribution) = 0;
 
 	/* SCENARIO API */
 

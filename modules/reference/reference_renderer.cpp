@@ -43,6 +43,10 @@ struct ReferenceRenderer::Frame {
 	bool orthogonal = false;
 	Vector3 ambient_light; // Linear colour * energy (SceneDataUBO::ambient_light).
 	Color clear_color; // Linear bg colour * energy, alpha 1.
+	bool sky_background = false; // ENV_BG_SKY: rays that miss see the sky.
+	bool sky_ambient = false; // Sky ambient: an importance-sampled environment light (diffuse, as the GPU's SH).
+	float ambient_sky_contribution = 1.0f;
+	ReferenceSkyLight sky;
 	ReferenceRenderOptions options;
 	int thread_count = 1;
 	std::atomic<int> next_row{ 0 };
@@ -367,6 +371,16 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 	frame.ambient_light = Vector3(ambient.r * env.ambient_energy, ambient.g * env.ambient_energy, ambient.b * env.ambient_energy);
 	Color bg = env.bg_color.srgb_to_linear();
 	frame.clear_color = Color(bg.r * env.bg_energy, bg.g * env.bg_energy, bg.b * env.bg_energy, 1.0f);
+	// Sky: the same model as the GPU's SkyRD (material, background energy, the sun disk of the first sun).
+	if (env.has_sky) {
+		frame.sky_background = env.background == RS::ENV_BG_SKY;
+		frame.sky_ambient = env.sky_ambient && env.ambient_sky_contribution > 0.0f;
+		frame.ambient_sky_contribution = env.ambient_sky_contribution;
+		frame.sky.build(SkyModel::from_scene_data(p_data, light_storage));
+		if (frame.sky_ambient) {
+			frame.ambient_light *= 1.0f - env.ambient_sky_contribution; // The colour share; the sky share is integrated.
+		}
+	}
 
 	// Geometry: every surface of every visible instance, in world space.
 	for (const RenderSceneData::GeometryInstance &g : p_data.geometry) {
@@ -590,6 +604,31 @@ static void _reference_shade_sun(RTCScene p_scene, const ReferenceRenderOptions 
 	}
 }
 
+// Sky ambient at the shading point: E(N) / pi of the sky (the Lambert radiance factor the GPU's SH ambient
+// approximates), estimated with options.sky_samples directions drawn from the sky's luminance (sky_light.h),
+// stratified along the distribution; shadow rays only when shadows are on (the GPU has no ambient occlusion).
+static Vector3 _reference_sky_irradiance(RTCScene p_scene, const ReferenceRenderOptions &p_options, const ReferenceSkyLight &p_sky, const AreaLightShadingPoint &p_point, ReferenceRNG &r_rng, uint64_t &r_shadow_rays) {
+	const int count = std::max(p_options.sky_samples, 1);
+	Vector3 sum;
+	for (int i = 0; i < count; i++) {
+		double pdf = 0.0;
+		const Vector3 dir = p_sky.sample((double(i) + r_rng.next_double()) / count, r_rng.next_double(), pdf);
+		const float cos_n = p_point.N.dot(dir);
+		if (cos_n <= 0.0f || !(pdf > 0.0)) {
+			continue;
+		}
+		if (p_options.shadows) {
+			const Vector3 side = p_point.ng.dot(dir) >= 0.0f ? p_point.ng : -p_point.ng;
+			r_shadow_rays++;
+			if (_reference_occluded(p_scene, p_point.vertex + side * p_point.offset, dir, std::numeric_limits<float>::infinity())) {
+				continue;
+			}
+		}
+		sum += p_sky.evaluate(dir) * float(double(cos_n) / (Math::PI * pdf));
+	}
+	return sum / float(count);
+}
+
 Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters) {
 	// Pixel centre in Vulkan NDC (y down, top row first), unprojected at depth 0 (near) and 1 (far):
 	// the segment the rasteriser's depth range covers for this pixel.
@@ -604,6 +643,13 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		return p_frame.clear_color;
 	}
 	Vector3 dir = segment / seg_len;
+	auto background = [&p_frame, &dir]() {
+		if (p_frame.sky_background) {
+			const Vector3 l = p_frame.sky.evaluate(dir);
+			return Color(l.x, l.y, l.z, 1.0f);
+		}
+		return p_frame.clear_color;
+	};
 
 	RTCIntersectContext context;
 	rtcInitIntersectContext(&context);
@@ -625,7 +671,7 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 	rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
 	rtcIntersect1(p_frame.scene, &context, &rh);
 	if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
-		return p_frame.clear_color;
+		return background();
 	}
 
 	// Interpolation with the hit's barycentrics = the rasteriser's perspective-correct interpolation.
@@ -754,6 +800,10 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		light_compute(N, L, V, radiance, light.data.specular_amount, m.diffuse_mode, roughness, f0, f90, m.specular_enabled, diffuse_light, specular_light);
 	}
 
-	Vector3 color = m.emission + (p_frame.ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
+	Vector3 ambient_light = p_frame.ambient_light;
+	if (p_frame.sky_ambient) {
+		ambient_light += _reference_sky_irradiance(p_frame.scene, p_frame.options, p_frame.sky, point, r_rng, r_counters.shadow_rays) * p_frame.ambient_sky_contribution;
+	}
+	Vector3 color = m.emission + (ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
 	return Color(color.x, color.y, color.z, alpha);
 }

@@ -19,6 +19,7 @@
 #include "modules/reference/area_light_integrator.h"
 #include "modules/reference/forward_lights.h"
 #include "modules/reference/sampling.h"
+#include "modules/reference/sky_light.h"
 #include "modules/reference/sun_light.h"
 #include "servers/rendering/renderer_scene_render.h"
 #include "servers/rendering/storage/light_storage.h"
@@ -47,6 +48,8 @@ struct ReferenceRenderOptions {
 	// Samples of each directional light's disk per pixel (jittered strata; 0 angular size: one exact
 	// evaluation). Rounded down to a square.
 	int sun_samples = 64;
+	// Directions of the sky (environment light) per pixel for sky ambient (importance-sampled, stratified).
+	int sky_samples = 256;
 	// Worker threads; 0 = std::thread::hardware_concurrency().
 	int threads = 0;
 	// Seed of the per-pixel random generators (same seed: bit-identical image).

@@ -68,6 +68,25 @@ void Environment::set_ambient_light_energy(float p_energy) {
 	_update_ambient_light();
 }
 
+void Environment::set_sky(const Ref<Sky> &p_sky) {
+	sky = p_sky;
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_sky(environment, p_sky.is_valid() ? p_sky->get_rid() : RID());
+	}
+	emit_changed();
+}
+
+void Environment::set_ambient_light_sky_contribution(float p_contribution) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_contribution), "ambient_light_sky_contribution must be finite; the old value is kept.");
+	ambient_sky_contribution = Math::clamp(p_contribution, 0.0f, 1.0f);
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_ambient_sky_contribution(environment, ambient_sky_contribution);
+	}
+	emit_changed();
+}
+
 void Environment::set_tonemapper(ToneMapper p_mode) {
 	ERR_FAIL_INDEX_MSG((int)p_mode, TONE_MAPPER_MAX, vformat("tonemap_mode must be 0..%d (Linear, Reinhard, Filmic, ACES, AgX); got %d. The old value is kept.", TONE_MAPPER_MAX - 1, (int)p_mode));
 	tonemap_mode = p_mode;
@@ -139,9 +158,16 @@ void Environment::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "background_color"), "set_bg_color", "get_bg_color");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "background_energy_multiplier", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_bg_energy_multiplier", "get_bg_energy_multiplier");
 
+	ClassDB::bind_method(D_METHOD("set_sky", "sky"), &Environment::set_sky);
+	ClassDB::bind_method(D_METHOD("get_sky"), &Environment::get_sky);
+	ClassDB::bind_method(D_METHOD("set_ambient_light_sky_contribution", "ratio"), &Environment::set_ambient_light_sky_contribution);
+	ClassDB::bind_method(D_METHOD("get_ambient_light_sky_contribution"), &Environment::get_ambient_light_sky_contribution);
+	ADD_GROUP("Sky", "sky_");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "sky", PROPERTY_HINT_RESOURCE_TYPE, "Sky"), "set_sky", "get_sky");
 	ADD_GROUP("Ambient Light", "ambient_light_");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "ambient_light_source", PROPERTY_HINT_ENUM, "Background,Disabled,Color,Sky"), "set_ambient_source", "get_ambient_source");
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "ambient_light_color", PROPERTY_HINT_COLOR_NO_ALPHA), "set_ambient_light_color", "get_ambient_light_color");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ambient_light_sky_contribution", PROPERTY_HINT_RANGE, "0,1,0.001"), "set_ambient_light_sky_contribution", "get_ambient_light_sky_contribution");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ambient_light_energy", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_ambient_light_energy", "get_ambient_light_energy");
 	ClassDB::bind_method(D_METHOD("set_tonemapper", "mode"), &Environment::set_tonemapper);
 	ClassDB::bind_method(D_METHOD("get_tonemapper"), &Environment::get_tonemapper);

@@ -9,6 +9,7 @@
 
 #include "core/io/resource.h"
 #include "core/io/tonemap.h"
+#include "scene/resources/sky.h"
 #include "servers/rendering_server.h"
 
 class Environment : public Resource {
@@ -50,6 +51,8 @@ private:
 	AmbientSource ambient_source = AMBIENT_SOURCE_BG;
 	Color ambient_color = Color(0, 0, 0, 1);
 	float ambient_energy = 1.0f;
+	float ambient_sky_contribution = 1.0f;
+	Ref<Sky> sky;
 	ToneMapper tonemap_mode = TONE_MAPPER_LINEAR;
 	float tonemap_exposure = 1.0f;
 	float tonemap_white = 1.0f;
@@ -78,6 +81,13 @@ public:
 	// Finite and >= 0.
 	void set_ambient_light_energy(float p_energy);
 	float get_ambient_light_energy() const { return ambient_energy; }
+
+	// The sky of background_mode Sky and of sky ambient (Godot's "sky").
+	void set_sky(const Ref<Sky> &p_sky);
+	Ref<Sky> get_sky() const { return sky; }
+	// 0..1 (Godot clamps it): the share of the ambient light that comes from the sky.
+	void set_ambient_light_sky_contribution(float p_contribution);
+	float get_ambient_light_sky_contribution() const { return ambient_sky_contribution; }
 
 	// Tonemapping of the 8-bit previews (PNG, editor viewport); the HDR image and EXR stay scene-linear.
 	void set_tonemapper(ToneMapper p_mode);

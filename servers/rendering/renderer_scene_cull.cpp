@@ -289,6 +289,12 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 		return; // Default clear colour, no ambient light.
 	}
 	r_env.has_environment = true;
+	const RendererEnvironmentStorage::Sky *sky = RSG::environment_storage->sky_get(env->sky);
+	const RendererEnvironmentStorage::SkyMaterial *sky_material = sky ? RSG::environment_storage->sky_material_get(sky->material) : nullptr;
+	if (sky_material) {
+		r_env.sky = sky_material->procedural;
+		r_env.sky_radiance_size = sky->radiance_size;
+	}
 	switch (env->background) {
 		case RS::ENV_BG_COLOR:
 			r_env.background = RS::ENV_BG_COLOR;
@@ -296,14 +302,31 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 			break;
 		case RS::ENV_BG_CLEAR_COLOR:
 			break;
+		case RS::ENV_BG_SKY:
+			if (sky_material) {
+				r_env.background = RS::ENV_BG_SKY;
+			} else {
+				WARN_PRINT_ONCE("Environment background_mode is Sky but it has no Sky with a sky_material; drawing black.");
+				r_env.background = RS::ENV_BG_COLOR;
+				r_env.bg_color = Color(0, 0, 0, 1);
+			}
+			break;
 		default:
-			WARN_PRINT_ONCE("Only the CLEAR_COLOR and COLOR environment backgrounds are supported; using the default clear colour.");
+			WARN_PRINT_ONCE("Only the CLEAR_COLOR, COLOR and SKY environment backgrounds are supported; using the default clear colour.");
 			break;
 	}
 	r_env.bg_energy = env->bg_energy;
 	r_env.ambient_source = env->ambient_source;
 	switch (env->ambient_source) {
 		case RS::ENV_AMBIENT_SOURCE_BG:
+			if (r_env.background == RS::ENV_BG_SKY) {
+				// A sky background lights the scene as sky ambient (Godot), all of it from the sky.
+				r_env.sky_ambient = true;
+				r_env.ambient_sky_contribution = 1.0f;
+				r_env.ambient_color = Color(0, 0, 0, 1);
+				r_env.ambient_energy = env->ambient_energy;
+				break;
+			}
 			// With a colour background, the background lights the scene (colour times background energy).
 			r_env.ambient_color = r_env.bg_color;
 			r_env.ambient_energy = r_env.bg_energy;
@@ -313,8 +336,15 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 			r_env.ambient_energy = env->ambient_energy;
 			break;
 		case RS::ENV_AMBIENT_SOURCE_SKY:
-			WARN_PRINT_ONCE("Sky ambient light is not supported; ambient light is disabled.");
-			r_env.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
+			if (!sky_material) {
+				WARN_PRINT_ONCE("Environment ambient_light_source is Sky but it has no Sky with a sky_material; ambient light is disabled.");
+				r_env.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
+				break;
+			}
+			r_env.sky_ambient = true;
+			r_env.ambient_sky_contribution = env->ambient_sky_contribution;
+			r_env.ambient_color = env->ambient_color;
+			r_env.ambient_energy = env->ambient_energy;
 			break;
 		case RS::ENV_AMBIENT_SOURCE_DISABLED:
 			break;
@@ -322,7 +352,9 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 	if (r_env.ambient_source == RS::ENV_AMBIENT_SOURCE_DISABLED) {
 		r_env.ambient_color = Color(0, 0, 0, 1);
 		r_env.ambient_energy = 0.0f;
+		r_env.sky_ambient = false;
 	}
+	r_env.has_sky = sky_material && (r_env.background == RS::ENV_BG_SKY || r_env.sky_ambient);
 }
 
 bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RenderSceneData &r_data) {

@@ -48,6 +48,13 @@ struct RenderSceneData {
 		RS::EnvironmentAmbientSource ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
 		Color ambient_color = Color(0, 0, 0, 1); // Resolved: for source BG, the background colour.
 		float ambient_energy = 0.0f; // Resolved: 0 when ambient is disabled.
+		// Sky (ENV_BG_SKY and sky ambient): the ProceduralSkyMaterial of the environment's Sky.
+		bool has_sky = false; // A sky with a material is attached and used (background or ambient).
+		RS::ProceduralSkyParams sky;
+		int sky_radiance_size = 256;
+		// Ambient from the sky: ambient = mix(ambient_color * energy, sky irradiance / pi * energy, contribution).
+		bool sky_ambient = false;
+		float ambient_sky_contribution = 1.0f;
 	};
 
 	Transform3D cam_transform; // world_from_view (camera-to-world).

@@ -293,6 +293,34 @@ RID RenderingServerDefault::scenario_create() {
 	return scene_cull->scenario_allocate();
 }
 
+RID RenderingServerDefault::sky_material_create() {
+	return environment_storage->sky_material_allocate();
+}
+
+void RenderingServerDefault::sky_material_set_procedural(RID p_material, const ProceduralSkyParams &p_params) {
+	environment_storage->sky_material_set_procedural(p_material, p_params);
+}
+
+RID RenderingServerDefault::sky_create() {
+	return environment_storage->sky_allocate();
+}
+
+void RenderingServerDefault::sky_set_material(RID p_sky, RID p_material) {
+	environment_storage->sky_set_material(p_sky, p_material);
+}
+
+void RenderingServerDefault::sky_set_radiance_size(RID p_sky, int p_size) {
+	environment_storage->sky_set_radiance_size(p_sky, p_size);
+}
+
+void RenderingServerDefault::environment_set_sky(RID p_env, RID p_sky) {
+	environment_storage->environment_set_sky(p_env, p_sky);
+}
+
+void RenderingServerDefault::environment_set_ambient_sky_contribution(RID p_env, float p_contribution) {
+	environment_storage->environment_set_ambient_sky_contribution(p_env, p_contribution);
+}
+
 void RenderingServerDefault::scenario_set_environment(RID p_scenario, RID p_environment) {
 	scene_cull->scenario_set_environment(p_scenario, p_environment);
 }
@@ -493,6 +521,9 @@ void RenderingServerDefault::free(RID p_rid) {
 	}
 	if (environment_storage->environment_free(p_rid)) {
 		scene_cull->notify_environment_freed(p_rid);
+		return;
+	}
+	if (environment_storage->sky_free(p_rid)) {
 		return;
 	}
 	ERR_PRINT(vformat("Attempted to free an invalid or already freed RID (id %llu).", (unsigned long long)p_rid.get_id()));

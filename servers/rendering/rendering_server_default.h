@@ -105,6 +105,13 @@ public:
 	void environment_set_bg_color(RID p_env, const Color &p_color) override;
 	void environment_set_bg_energy(RID p_env, float p_multiplier) override;
 	void environment_set_ambient_light(RID p_env, const Color &p_color, EnvironmentAmbientSource p_ambient = ENV_AMBIENT_SOURCE_BG, float p_energy = 1.0f) override;
+	RID sky_material_create() override;
+	void sky_material_set_procedural(RID p_material, const ProceduralSkyParams &p_params) override;
+	RID sky_create() override;
+	void sky_set_material(RID p_sky, RID p_material) override;
+	void sky_set_radiance_size(RID p_sky, int p_size) override;
+	void environment_set_sky(RID p_env, RID p_sky) override;
+	void environment_set_ambient_sky_contribution(RID p_env, float p_contribution) override;
 
 	RID scenario_create() override;
 	void scenario_set_environment(RID p_scenario, RID p_environment) override;

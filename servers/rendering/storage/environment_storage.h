@@ -19,10 +19,21 @@ public:
 		RS::EnvironmentAmbientSource ambient_source = RS::ENV_AMBIENT_SOURCE_BG;
 		Color ambient_color = Color(0, 0, 0, 1);
 		float ambient_energy = 1.0f;
+		float ambient_sky_contribution = 1.0f;
+		RID sky; // RendererEnvironmentStorage sky, RID() = none.
+	};
+	struct SkyMaterial {
+		RS::ProceduralSkyParams procedural;
+	};
+	struct Sky {
+		RID material; // A SkyMaterial, RID() = none (Godot then draws black).
+		int radiance_size = 256;
 	};
 
 private:
 	RID_Owner<Environment, true> environment_owner{ "Environment" };
+	RID_Owner<Sky, true> sky_owner{ "Sky" };
+	RID_Owner<SkyMaterial, true> sky_material_owner{ "SkyMaterial" };
 
 public:
 	// Creates an environment with Godot's defaults.
@@ -40,6 +51,19 @@ public:
 	void environment_set_bg_color(RID p_env, const Color &p_color);
 	// Sets the background energy (finite, >= 0).
 	void environment_set_bg_energy(RID p_env, float p_multiplier);
+	void environment_set_sky(RID p_env, RID p_sky);
+	void environment_set_ambient_sky_contribution(RID p_env, float p_contribution);
+
+	RID sky_allocate();
+	RID sky_material_allocate();
+	// Frees a sky or sky material (environments and skies using it lose it); false if p_rid is neither.
+	bool sky_free(RID p_rid);
+	void sky_set_material(RID p_sky, RID p_material);
+	void sky_set_radiance_size(RID p_sky, int p_size);
+	void sky_material_set_procedural(RID p_material, const RS::ProceduralSkyParams &p_params);
+	const Sky *sky_get(RID p_sky) const { return sky_owner.get_or_null(p_sky); }
+	const SkyMaterial *sky_material_get(RID p_material) const { return sky_material_owner.get_or_null(p_material); }
+
 	// Sets ambient colour, source and energy (finite, >= 0).
 	void environment_set_ambient_light(RID p_env, const Color &p_color, RS::EnvironmentAmbientSource p_ambient, float p_energy);
 };

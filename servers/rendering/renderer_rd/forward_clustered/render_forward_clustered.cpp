@@ -111,6 +111,7 @@ void RenderForwardClustered::finalize() {
 	compiled_area_method_mask = 0;
 	compiled_feature_mask = 0;
 	ltc_lut.finalize();
+	sky.finalize();
 	area_shadows.finalize();
 	cluster_builder.finalize();
 	scene_shader.clear();
@@ -242,6 +243,9 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 	if (p_key & SCENE_VERSION_DIRECTIONAL) {
 		defines += "#define USE_DIRECTIONAL_LIGHTS\n";
 	}
+	if (p_key & SCENE_VERSION_SKY_AMBIENT) {
+		defines += "#define USE_SKY_AMBIENT\n";
+	}
 	return defines;
 }
 
@@ -249,8 +253,9 @@ RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVaria
 	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
 	const uint32_t valid_bits = area_bits | SCENE_VERSION_FEATURE_BITS;
 	const bool has_area = (p_key & AREA_VERSION_METHOD_BITS) != 0;
-	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0) || has_area != _is_area_variant(p_variant), RID(),
-			vformat("RenderForwardClustered: invalid scene shader version key 0x%x for variant %d (area method mask | area shadow bits | feature bits).", p_key, int(p_variant)));
+	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0), RID(),
+			vformat("RenderForwardClustered: invalid scene shader version key 0x%x (area method mask | area shadow bits | feature bits).", p_key));
+	ERR_FAIL_COND_V_MSG(has_area != _is_area_variant(p_variant), RID(), vformat("RenderForwardClustered: variant %d does not fit version key 0x%x.", int(p_variant), p_key));
 	if (p_key == 0) {
 		return scene_shader.version_get_shader(p_variant);
 	}
@@ -259,9 +264,10 @@ RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVaria
 		av.version = scene_shader.version_create(get_scene_version_defines(p_key));
 	}
 	RID shader = scene_shader.version_get_shader(av.version, p_variant);
-	// Only the production variants count as compiled code (brute force and debug views are variants of their own).
-	if (shader.is_valid() && (p_variant == SCENE_SHADER_COLOR_AREA || p_variant == SCENE_SHADER_COLOR)) {
-		compiled_area_method_mask |= p_key & AREA_VERSION_METHOD_BITS;
+	if (shader.is_valid()) {
+		if (p_variant == SCENE_SHADER_COLOR_AREA) {
+			compiled_area_method_mask |= p_key & AREA_VERSION_METHOD_BITS;
+		}
 		compiled_feature_mask |= p_key & SCENE_VERSION_FEATURE_BITS;
 	}
 	return shader;
@@ -306,12 +312,12 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		if (has_area && !ltc_lut.is_initialized()) {
 			ERR_FAIL_COND_V_MSG(!ltc_lut.initialize(), false, "RenderForwardClustered: the LTC lookup table could not be created.");
 		}
-		// All colour variants declare the same bindings: the production one gives the set layout.
 		RID shader = _get_version_shader(p_area_methods, has_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR);
 		AreaVersion &av = area_versions[p_area_methods];
 		const RID shadow_atlas = has_area ? area_shadows.get_atlas_texture() : RID();
 		const RID directional_buffer = (p_area_methods & SCENE_VERSION_DIRECTIONAL) ? light_storage->get_directional_light_buffer() : RID();
-		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer;
+		const RID sky_buffer = (p_area_methods & SCENE_VERSION_SKY_AMBIENT) ? sky.get_ambient_buffer() : RID();
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer;
 		if (!area_ok) {
 			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
 				rd->free(av.scene_set);
@@ -336,10 +342,15 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 				ERR_FAIL_COND_V_MSG(!directional_buffer.is_valid(), false, "RenderForwardClustered: a directional version without the directional light buffer.");
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 8, directional_buffer));
 			}
+			if (p_area_methods & SCENE_VERSION_SKY_AMBIENT) {
+				ERR_FAIL_COND_V_MSG(!sky_buffer.is_valid(), false, "RenderForwardClustered: a sky ambient version without the sky buffer.");
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 9, sky_buffer));
+			}
 			av.scene_set = rd->uniform_set_create(u, shader, 0);
 			av.scene_set_cluster_buffer = cluster_buffer;
 			av.scene_set_shadow_atlas = shadow_atlas;
 			av.scene_set_directional_buffer = directional_buffer;
+			av.scene_set_sky_buffer = sky_buffer;
 		}
 		if (!av.scene_set.is_valid()) {
 			return false;
@@ -396,6 +407,8 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	}
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
 	light_storage->update_directional_light_buffer(p_data.directional_lights, view_from_world);
+	// Sky: SH recomputed only when the sky changes; nothing at all without a sky.
+	ERR_FAIL_COND_MSG(!sky.prepare(p_data, light_storage, clip_from_view, rt->width, rt->height), "render_scene: the sky could not be prepared.");
 	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
 	if (area_code) {
 		area_shadows.prepare(p_data, light_storage->get_area_light_source_indices(), view_from_world, p_data.cam_projection * Projection::from_transform(view_from_world), p_render_target);
@@ -413,9 +426,11 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.z_far = z_far;
 	const RenderSceneData::EnvironmentData &env = p_data.environment;
 	Color ambient = env.ambient_color.srgb_to_linear();
-	ubo.ambient_light[0] = ambient.r * env.ambient_energy;
-	ubo.ambient_light[1] = ambient.g * env.ambient_energy;
-	ubo.ambient_light[2] = ambient.b * env.ambient_energy;
+	// Sky ambient: the colour part keeps (1 - ambient_light_sky_contribution), the sky part is the SH (SkyRD).
+	const float ambient_colour_share = (env.has_sky && env.sky_ambient) ? 1.0f - env.ambient_sky_contribution : 1.0f;
+	ubo.ambient_light[0] = ambient.r * env.ambient_energy * ambient_colour_share;
+	ubo.ambient_light[1] = ambient.g * env.ambient_energy * ambient_colour_share;
+	ubo.ambient_light[2] = ambient.b * env.ambient_energy * ambient_colour_share;
 	ubo.ambient_light[3] = 1.0f;
 	ubo.omni_light_count = light_storage->get_omni_light_count();
 	ubo.spot_light_count = light_storage->get_spot_light_count();
@@ -446,6 +461,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
 	if (light_storage->get_directional_light_count() > 0) {
 		area_methods |= SCENE_VERSION_DIRECTIONAL;
+	}
+	if (sky.has_frame_ambient()) {
+		area_methods |= SCENE_VERSION_SKY_AMBIENT;
 	}
 	// Brute force and the cluster debug view are variants of their own: the production ones carry no code
 	// for them. All colour variants declare the same bindings, so the sets are shared.
@@ -558,6 +576,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->draw_list_end();
 	rd->capture_timestamp(prefix + "opaque");
 
+	// 4. Sky background (only with background_mode SKY): the far-plane pixels no geometry covered.
+	if (sky.has_frame_background()) {
+		list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_LOAD, RD::INITIAL_ACTION_LOAD);
+		sky.draw_background(list, color_format);
+		rd->draw_list_end();
+		rd->capture_timestamp(prefix + "sky");
+	}
+
 	rd->submit_and_sync();
 	_read_profile(prefix);
 }
@@ -565,9 +591,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const int pass_count = 7;
-	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque" };
-	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1 };
+	const int pass_count = 8;
+	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "sky" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);

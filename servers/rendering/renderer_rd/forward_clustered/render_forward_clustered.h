@@ -9,14 +9,15 @@
 /*   2. cluster build    (ClusterBuilderRD compute dispatch);             */
 /*   3. opaque pass      (colour variant, depth test LESS_OR_EQUAL        */
 /*      against the pre-pass, no depth write) into an RGBA16F HDR target  */
-/*      cleared to the background colour * energy (linear).              */
+/*      cleared to the background colour * energy (linear);              */
+/*   4. sky background (effects/sky_rd.h, only with background_mode Sky). */
 /* then waits for the GPU and keeps the pass timestamps (capture_         */
 /* timestamp) for get_last_frame_profile(): "area_shadows" (the area     */
 /* shadow map passes; only in frames with shadowed area lights, ~0 when   */
 /* no map is redrawn), "depth_prepass", "area_reprojection" and          */
 /* "area_banding" (ADAPTIVE area shadows, only in frames with quad tests, */
 /* recorded after the depth pre-pass whose depth they read),             */
-/* "cluster_build", "opaque" in milliseconds.                             */
+/* "cluster_build", "opaque", "sky" (only with a sky background) in ms.  */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
 /* (USE_AREA_LIGHTS) only when the view has area lights, from a ShaderRD  */
@@ -45,6 +46,7 @@
 #include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
+#include "servers/rendering/renderer_rd/effects/sky_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_scene_render.h"
 
@@ -142,6 +144,7 @@ private:
 	ShaderRD scene_shader;
 	ClusterBuilderRD cluster_builder;
 	LTCLutRD ltc_lut; // Uploaded on the first frame with area lights.
+	SkyRD sky; // Sky background and SH ambient; nothing exists before the first view with a sky.
 	AreaShadowRendererRD area_shadows; // Area soft shadows: atlas, depth passes, bindings 12-14 of the area variant.
 	RID_Owner<RenderTarget> render_target_owner{ "RenderForwardClustered::RenderTarget" };
 
@@ -158,6 +161,7 @@ private:
 		RID scene_set_cluster_buffer; // Cluster buffer scene_set was made with.
 		RID scene_set_shadow_atlas; // Area shadow atlas texture scene_set was made with (RID() without area lights).
 		RID scene_set_directional_buffer; // Directional light buffer scene_set was made with (RID() without).
+		RID scene_set_sky_buffer; // Sky ambient buffer scene_set was made with (RID() without).
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
@@ -176,9 +180,8 @@ private:
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
 	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
-	// The colour shader p_variant (one of the SCENE_SHADER_COLOR* variants; an area one exactly when p_key has
-	// area methods) of the version for key p_key (area key | SCENE_VERSION_* bits); key 0 is the default
-	// version. Compiled on first use.
+	// The colour shader p_variant of the version for key p_key (area key | SCENE_VERSION_* bits); key 0 is the
+	// default version. Area variants need area method bits and the others none. Compiled on first use.
 	RID _get_version_shader(uint32_t p_key, SceneShaderVariant p_variant);
 	static bool _is_area_variant(SceneShaderVariant p_variant) { return p_variant == SCENE_SHADER_COLOR_AREA || p_variant == SCENE_SHADER_COLOR_AREA_FORCE_ALL || p_variant == SCENE_SHADER_COLOR_AREA_DEBUG; }
 	// AREA_VERSION_SHADOWS_* bits for the area shadow data of this frame (area_shadows.prepare() ran).
@@ -240,11 +243,15 @@ public:
 	// directional light (binding 8, scene_forward_directional_inc.glsl). A view without any feature and without
 	// area lights uses the default version, which has none of this code.
 	static constexpr uint32_t SCENE_VERSION_DIRECTIONAL = 1u << 10;
-	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL;
+	static constexpr uint32_t SCENE_VERSION_SKY_AMBIENT = 1u << 11; // USE_SKY_AMBIENT: binding 9, the sky's SH.
+	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT;
 	// get_area_method_defines() plus the feature defines of p_key.
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
 	uint32_t get_compiled_feature_mask() const { return compiled_feature_mask; }
+
+	// The sky (tests: update count, resources).
+	const SkyRD &get_sky() const { return sky; }
 
 	// Area soft shadows (atlas, maps, per-frame draws; one atlas per renderer for now).
 	AreaShadowRendererRD &get_area_shadow_renderer() { return area_shadows; }

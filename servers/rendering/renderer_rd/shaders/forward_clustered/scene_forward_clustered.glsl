@@ -17,6 +17,7 @@
 /* Any colour variant may carry USE_DIRECTIONAL_LIGHTS (a version of a   */
 /* view with a DirectionalLight3D: binding 8 and the directional loop,   */
 /* scene_forward_directional_inc.glsl); without it there is no sun code.*/
+/* USE_SKY_AMBIENT adds the sky's irradiance SH (binding 9, SkyRD).       */
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -297,6 +298,18 @@ void main() {
 #endif
 
 	vec3 ambient_light = scene_data.ambient_light.rgb;
+#ifdef USE_SKY_AMBIENT
+	{
+		// Sky irradiance at the world-space normal from 9 SH coefficients (servers/rendering/sky_model.h).
+		vec3 n = normalize(mat3(scene_data.world_from_view) * N);
+		ambient_light += sky_ambient.sh[0].rgb * 0.282095;
+		ambient_light += sky_ambient.sh[1].rgb * (0.488603 * n.y) + sky_ambient.sh[2].rgb * (0.488603 * n.z) + sky_ambient.sh[3].rgb * (0.488603 * n.x);
+		ambient_light += sky_ambient.sh[4].rgb * (1.092548 * n.x * n.y) + sky_ambient.sh[5].rgb * (1.092548 * n.y * n.z);
+		ambient_light += sky_ambient.sh[6].rgb * (0.315392 * (3.0 * n.z * n.z - 1.0)) + sky_ambient.sh[7].rgb * (1.092548 * n.x * n.z);
+		ambient_light += sky_ambient.sh[8].rgb * (0.546274 * (n.x * n.x - n.y * n.y));
+		ambient_light = max(ambient_light, vec3(0.0)); // SH ringing must not make light negative.
+	}
+#endif
 	vec3 color = material.emission.rgb + (ambient_light + diffuse_light) * albedo * (1.0 - metallic) + specular_light;
 	frag_color = vec4(color, alpha);
 #endif

@@ -105,6 +105,15 @@ layout(set = 0, binding = 8, std140) uniform DirectionalLights {
 directional_lights;
 #endif
 
+#ifdef USE_SKY_AMBIENT
+// Sky ambient (SkyRD): irradiance SH of the sky, already times ambient_light_sky_contribution / pi.
+layout(set = 0, binding = 9, std140) uniform SkyAmbient {
+	vec4 sh[9]; // rgb per coefficient (Ramamoorthi & Hanrahan order: Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22).
+	vec4 pad;
+}
+sky_ambient;
+#endif
+
 /*************************************************************************/
 /* Set 1: material                                                       */
 /*************************************************************************/

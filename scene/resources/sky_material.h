@@ -1,0 +1,69 @@
+/**************************************************************************/
+/*  sky_material.h                                                        */
+/**************************************************************************/
+/* godot-area: ProceduralSkyMaterial with Godot 4's properties, groups    */
+/* and defaults (sky_top_color ... use_debanding, energy_multiplier). It  */
+/* owns one RS sky material RID and pushes RS::ProceduralSkyParams as a   */
+/* whole from every setter. The formula it describes is in               */
+/* servers/rendering/sky_model.h. sky_cover / sky_cover_modulate are     */
+/* stored only (no cloud texture is drawn; a set cover is warned about). */
+/* Godot derives sky materials from Material; here it is a Resource of   */
+/* its own (it has no mesh material to own).                              */
+
+#pragma once
+
+#include "core/io/resource.h"
+#include "scene/resources/texture.h"
+#include "servers/rendering_server.h"
+
+class ProceduralSkyMaterial : public Resource {
+	GDCLASS(ProceduralSkyMaterial, Resource);
+
+	RID material;
+	RS::ProceduralSkyParams params;
+	Ref<Texture2D> sky_cover;
+	Color sky_cover_modulate = Color(1, 1, 1, 1);
+	bool use_debanding = true;
+
+	void _push();
+	bool _check(float p_value, float p_min, float p_max, const char *p_property);
+
+protected:
+	static void _bind_methods();
+
+public:
+	RID get_rid() const override { return material; }
+	const RS::ProceduralSkyParams &get_params() const { return params; }
+
+	void set_sky_top_color(const Color &p_color);
+	Color get_sky_top_color() const { return params.sky_top_color; }
+	void set_sky_horizon_color(const Color &p_color);
+	Color get_sky_horizon_color() const { return params.sky_horizon_color; }
+	void set_sky_curve(float p_curve); // 0..1
+	float get_sky_curve() const { return params.sky_curve; }
+	void set_sky_energy_multiplier(float p_energy); // >= 0
+	float get_sky_energy_multiplier() const { return params.sky_energy_multiplier; }
+	void set_sky_cover(const Ref<Texture2D> &p_cover);
+	Ref<Texture2D> get_sky_cover() const { return sky_cover; }
+	void set_sky_cover_modulate(const Color &p_color);
+	Color get_sky_cover_modulate() const { return sky_cover_modulate; }
+	void set_ground_bottom_color(const Color &p_color);
+	Color get_ground_bottom_color() const { return params.ground_bottom_color; }
+	void set_ground_horizon_color(const Color &p_color);
+	Color get_ground_horizon_color() const { return params.ground_horizon_color; }
+	void set_ground_curve(float p_curve); // 0..1
+	float get_ground_curve() const { return params.ground_curve; }
+	void set_ground_energy_multiplier(float p_energy); // >= 0
+	float get_ground_energy_multiplier() const { return params.ground_energy_multiplier; }
+	void set_sun_angle_max(float p_degrees); // 0..360
+	float get_sun_angle_max() const { return params.sun_angle_max; }
+	void set_sun_curve(float p_curve); // 0..1
+	float get_sun_curve() const { return params.sun_curve; }
+	void set_use_debanding(bool p_enable);
+	bool get_use_debanding() const { return use_debanding; }
+	void set_energy_multiplier(float p_energy); // >= 0
+	float get_energy_multiplier() const { return params.energy_multiplier; }
+
+	ProceduralSkyMaterial();
+	~ProceduralSkyMaterial() override;
+};
