@@ -23,6 +23,10 @@ export GODOT_AREA_DEVICE="${GODOT_AREA_DEVICE:-llvmpipe}"
 ./bin/godot-area-tests.fuzz
 step "unit tests under ASan+UBSan"
 
+if [ "$FUZZ_SECONDS" = "0" ]; then
+	echo "sanitize_fuzz: fuzzing skipped (FUZZ_SECONDS=0)"
+	exit 0
+fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 for harness in resource_format_text:tscn gltf_document:gltf; do
@@ -33,10 +37,13 @@ for harness in resource_format_text:tscn gltf_document:gltf; do
 	ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=1" \
 		./bin/fuzz_"$name" "$work/$kind" "tests/fuzz/corpus/$kind" -dict="tests/fuzz/$kind.dict" \
 		-max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-		-artifact_prefix="$work/" 2>&1 | grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done|==[0-9]+==ERROR|SUMMARY)" || true
-	if ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* >/dev/null 2>&1; then
+		-artifact_prefix="$work/" > "$work/$name.log" 2>&1 || true
+	grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done|==[0-9]+==ERROR|SUMMARY)" "$work/$name.log" || true
+	# A crash, leak, timeout or OOM: an artifact, or libFuzzer's own report (a deadly signal may leave none).
+	if ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* >/dev/null 2>&1 || grep -qE "SUMMARY: |deadly signal|==[0-9]+==ERROR" "$work/$name.log"; then
 		echo "sanitize_fuzz: fuzz_$name found a failing input:"
-		ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* 2>/dev/null
+		ls "$work"/crash-* "$work"/leak-* "$work"/timeout-* "$work"/oom-* 2>/dev/null || true
+		grep -E -A30 "==[0-9]+==ERROR|deadly signal" "$work/$name.log" | head -60 || true
 		exit 1
 	fi
 	step "fuzz_$name ($FUZZ_SECONDS s)"

@@ -10,7 +10,8 @@
 /* relative to the including file, then to the shaders/ root.             */
 /*                                                                        */
 /* Shader files are embedded in the binary at build time (SConstruct      */
-/* turns servers/rendering/renderer_rd/shaders/**.glsl into .glsl.gen.h), */
+/* turns each .glsl of servers/rendering/renderer_rd/shaders/ into a      */
+/* .glsl.gen.h beside it),                                                */
 /* so a relative name ("forward_clustered/scene_forward_clustered.glsl")  */
 /* and its includes never touch the disk. An absolute path reads that     */
 /* file (tests); its includes are looked up beside it, then embedded.     */
