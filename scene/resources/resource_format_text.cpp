@@ -242,6 +242,9 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 		while (p < p_raw.size() && p_raw[p] != '=') {
 			p++;
 		}
+		if (p >= p_raw.size()) {
+			break; // A key without "=value" ends the tag (found by fuzz_resource_format_text).
+		}
 		p++;
 		size_t v = p;
 		int depth = 0;
@@ -264,6 +267,7 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 			}
 			p++;
 		}
+		p = std::min(p, p_raw.size()); // An escape or quote at the very end may step past it.
 		out.push_back(std::make_pair(key, p_raw.substr(v, p - v)));
 	}
 	return out;
