@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 
 // IEEE 754 binary16 -> binary32 (readback of the RGBA16F target).
 static float _half_to_float(uint16_t p_h) {
@@ -208,6 +209,20 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 		defines += "#define AREA_SHADOWS_PCSS\n";
 	}
 	return defines;
+}
+
+std::vector<std::pair<String, String>> RenderForwardClustered::get_debug_scene_shader_sources() const {
+	std::vector<std::pair<String, String>> sources;
+	sources.push_back({ "base.frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR) });
+	static const char *names[] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC" };
+	for (int m = 0; m < RS::LIGHT_AREA_SHADING_MAX; m++) {
+		if (m == RS::LIGHT_AREA_SHADING_AUTO) {
+			continue; // A policy, not shader code: it picks one of the others.
+		}
+		const String name = m < int(std::size(names)) ? String(names[m]) : vformat("method_%d", m);
+		sources.push_back({ "area_" + name + ".frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR_AREA, get_area_method_defines(1u << m)) });
+	}
+	return sources;
 }
 
 uint32_t RenderForwardClustered::_get_area_shadow_version_bits() const {
