@@ -8,6 +8,7 @@
 
 #include "scene/main/godot_instance.h"
 #include "scene/resources/primitive_meshes.h"
+#include "servers/rendering/rendering_device.h"
 #include "servers/rendering_server.h"
 #include "tests/servers/rd_test_fixture.h"
 
@@ -17,8 +18,9 @@
 
 namespace TestRenderingServerDebug {
 
-// A floor lit by one omni light and, when p_area, one area light above it; returns one frame.
-static Image render_floor(RenderingServer *p_rs, bool p_area) {
+// A floor lit by one omni light and, when p_area, one shadowed area light above it; returns one
+// frame and, in r_labels, the debug labels the frame's passes recorded.
+static Image render_floor(RenderingServer *p_rs, bool p_area, std::vector<String> *r_labels = nullptr) {
 	std::vector<RID> owned;
 	RS::SurfaceData surface;
 	PlaneMesh::create_plane_arrays(surface, Vector2(8, 8), 0, 0, Vector3(), PlaneMesh::FACE_Y);
@@ -47,6 +49,7 @@ static Image render_floor(RenderingServer *p_rs, bool p_area) {
 	if (p_area) {
 		RID area = p_rs->area_light_create();
 		p_rs->light_area_set_size(area, Vector2(1, 1));
+		p_rs->light_set_shadow(area, true);
 		// Local -Z (the emitting side) turned to world -Y.
 		add_light(area, Transform3D(Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f), Vector3(1, 1.5f, 0)));
 	}
@@ -59,6 +62,9 @@ static Image render_floor(RenderingServer *p_rs, bool p_area) {
 	p_rs->viewport_set_scenario(viewport, scenario);
 	owned.insert(owned.end(), { camera, viewport });
 	p_rs->draw();
+	if (r_labels) {
+		*r_labels = RenderingDevice::get_singleton()->get_captured_label_names();
+	}
 	Image image = p_rs->viewport_get_texture_data(viewport);
 	for (auto it = owned.rbegin(); it != owned.rend(); ++it) {
 		p_rs->free(*it);
@@ -122,6 +128,20 @@ TEST_CASE("[RenderingServer] set_debug_disable_area_lights() leaves a scene with
 	CHECK(difference(omni_only, omni_only_off) == 0.0); // The baseline draws the same frame.
 	CHECK(difference(omni_only, both) > 1.0); // The area light adds light ...
 	CHECK(difference(omni_only, both_off) == 0.0); // ... which the baseline does not draw.
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[RenderForwardClustered] each pass of a frame records a debug label") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	GodotInstance engine;
+	String error;
+	REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 8), error.c_str());
+	std::vector<String> labels;
+	render_floor(engine.get_rendering_server(), false, &labels);
+	CHECK(labels == std::vector<String>{ "Render Depth Pre-Pass", "Build Clusters", "Render Opaque Pass" });
+	render_floor(engine.get_rendering_server(), true, &labels);
+	CHECK(labels == std::vector<String>{ "Render Area Shadow Maps", "Render Depth Pre-Pass", "Area Shadow Adaptive Refinement", "Build Clusters", "Render Opaque Pass" });
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
