@@ -279,6 +279,12 @@ public:
 		ImGui::Text("%s  (%s)", node ? String(node->get_name()).c_str() : "", inspector.get_edited_object()->get_class().c_str());
 		ImGui::Separator();
 		ImGui::BeginChild("rows");
+		// One label column for all rows: as wide as the longest label, at most 45 % of the panel.
+		std::vector<float> label_widths;
+		for (int i = 0; i < inspector.get_row_count(); i++) {
+			label_widths.push_back(EditorProperties::measure_label(inspector.get_row(i)));
+		}
+		const float label_width = EditorInspector::get_label_column_width(label_widths, ImGui::GetContentRegionAvail().x, ImGui::GetStyle().ItemSpacing.x * 2);
 		String group;
 		bool group_open = true;
 		for (int i = 0; i < inspector.get_row_count(); i++) {
@@ -295,7 +301,7 @@ public:
 			}
 			Variant value = inspector.get_row_value(i);
 			Variant new_value;
-			EditorProperties::Result r = EditorProperties::draw_row(row, value, new_value);
+			EditorProperties::Result r = EditorProperties::draw_row(row, value, new_value, label_width);
 			if (r.changed) {
 				if (!inspector.set_row_value(i, new_value, r.active)) {
 					status_message = inspector.get_last_error();
