@@ -210,6 +210,22 @@ void SwapChainVK::_destroy_swapchain() {
 	}
 }
 
+void SwapChainVK::wait_frame() {
+	if (fence_pending) {
+		vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+		vkResetFences(device, 1, &fence);
+		fence_pending = false;
+	}
+}
+
+void SwapChainVK::resize(int p_width, int p_height) {
+	ERR_FAIL_COND_MSG(in_frame, "SwapChainVK::resize: not inside a frame.");
+	wait_frame();
+	_destroy_swapchain();
+	extent.width = (uint32_t)std::max(0, p_width);
+	extent.height = (uint32_t)std::max(0, p_height);
+}
+
 void SwapChainVK::wait_idle() {
 	if (device) {
 		vkDeviceWaitIdle(device);
@@ -317,11 +333,7 @@ bool SwapChainVK::capture_next_frame() {
 
 VkCommandBuffer SwapChainVK::begin_frame(const Color &p_clear) {
 	ERR_FAIL_COND_V_MSG(in_frame, VK_NULL_HANDLE, "SwapChainVK: begin_frame() called twice.");
-	if (fence_pending) {
-		vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
-		vkResetFences(device, 1, &fence);
-		fence_pending = false;
-	}
+	wait_frame();
 	if (!swapchain) {
 		String error;
 		if (!_create_swapchain(&error) || !swapchain) {

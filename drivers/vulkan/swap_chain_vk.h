@@ -105,6 +105,12 @@ public:
 	const std::vector<uint8_t> &get_capture() const { return capture_rgba; }
 	// Waits until the last frame finished (before destroying what it uses).
 	void wait_idle();
+	// Waits for the last submitted frame only (before the RenderingDevice rewrites a texture that
+	// frame samples). begin_frame() then has nothing left to wait for.
+	void wait_frame();
+	// The window was resized: the swapchain is rebuilt at the surface's new size (the next
+	// begin_frame() creates it). Waits for the device first.
+	void resize(int p_width, int p_height);
 
 	SwapChainVK() {}
 	~SwapChainVK() { destroy(); }
