@@ -18,6 +18,8 @@
 #include <imgui_stdlib.h>
 
 #include <cfloat>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <string>
 
@@ -63,6 +65,51 @@ void _drag_bounds(const EditorPropertyRow &p_row, float &r_min, float &r_max) {
 
 float _measure(const String &p_text) {
 	return ImGui::CalcTextSize(p_text.c_str()).x;
+}
+
+// The display format for p_count drag fields sharing the item width: the row's format if every
+// value fits its field, else without the suffix, else with fewer decimals (the value itself is
+// kept; the whole value is in the tooltip). Long values never run past their field.
+std::string _fit_float_format(const EditorPropertyRow &p_row, const float *p_values, int p_count) {
+	const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+	const float field = (ImGui::CalcItemWidth() - spacing * (p_count - 1)) / p_count - ImGui::GetStyle().FramePadding.x * 2;
+	const std::string full = _float_format(p_row);
+	auto fits = [&](const std::string &p_format) {
+		char buffer[64];
+		for (int i = 0; i < p_count; i++) {
+			snprintf(buffer, sizeof(buffer), p_format.c_str(), p_values[i]);
+			if (_measure(buffer) > field) {
+				return false;
+			}
+		}
+		return true;
+	};
+	if (fits(full)) {
+		return full;
+	}
+	int decimals = 3;
+	size_t dot = full.find('.');
+	if (dot != std::string::npos) {
+		decimals = atoi(full.c_str() + dot + 1);
+	}
+	for (int d = decimals; d >= 0; d--) {
+		std::string f = "%." + std::to_string(d) + "f";
+		if (fits(f)) {
+			return f;
+		}
+	}
+	return "%.0f";
+}
+
+void _value_tooltip(const EditorPropertyRow &p_row, const float *p_values, int p_count) {
+	if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+		return;
+	}
+	String text;
+	for (int i = 0; i < p_count; i++) {
+		text += (i ? ", " : "") + vformat("%g", p_values[i]);
+	}
+	ImGui::SetTooltip("%s%s%s", text.c_str(), p_row.suffix.empty() ? "" : " ", p_row.suffix.c_str());
 }
 
 // A combo whose preview is fitted to the field (ImGui would cut it mid-letter).
@@ -192,7 +239,7 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 		} break;
 		case Variant::FLOAT: {
 			float v = (float)p_value.to_float() * scale;
-			std::string fmt = _float_format(p_row);
+			std::string fmt = _fit_float_format(p_row, &v, 1);
 			ImGuiSliderFlags flags = p_row.exp ? ImGuiSliderFlags_Logarithmic : 0;
 			if (p_row.has_range && !p_row.or_greater && !p_row.or_less) {
 				_track(result, ImGui::SliderFloat("##v", &v, (float)p_row.range_min, (float)p_row.range_max, fmt.c_str(), flags));
@@ -225,7 +272,8 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 			float f[2] = { (float)v.x * scale, (float)v.y * scale };
 			float lo, hi;
 			_drag_bounds(p_row, lo, hi);
-			_track(result, ImGui::DragFloat2("##v", f, _drag_speed(p_row), lo, hi, _float_format(p_row).c_str()));
+			_track(result, ImGui::DragFloat2("##v", f, _drag_speed(p_row), lo, hi, _fit_float_format(p_row, f, 2).c_str()));
+			_value_tooltip(p_row, f, 2);
 			r_value = Vector2(f[0] / scale, f[1] / scale);
 		} break;
 		case Variant::VECTOR3: {
@@ -233,13 +281,19 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 			float f[3] = { (float)v.x * scale, (float)v.y * scale, (float)v.z * scale };
 			float lo, hi;
 			_drag_bounds(p_row, lo, hi);
-			_track(result, ImGui::DragFloat3("##v", f, _drag_speed(p_row), lo, hi, _float_format(p_row).c_str()));
+			_track(result, ImGui::DragFloat3("##v", f, _drag_speed(p_row), lo, hi, _fit_float_format(p_row, f, 3).c_str()));
+			_value_tooltip(p_row, f, 3);
 			r_value = Vector3(f[0] / scale, f[1] / scale, f[2] / scale);
 		} break;
 		case Variant::COLOR: {
 			Color c = p_value;
 			float f[4] = { c.r, c.g, c.b, c.a };
-			_track(result, ImGui::ColorEdit4("##v", f, ImGuiColorEditFlags_Float));
+			// Godot's colour property: a swatch that opens the picker; the components beside it,
+			// fitted to the field.
+			_track(result, ImGui::ColorEdit4("##v", f, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_NoInputs));
+			ImGui::SameLine();
+			const String components = vformat("%.3g, %.3g, %.3g, %.3g", f[0], f[1], f[2], f[3]);
+			ImGui::TextDisabled("%s", EditorInspector::fit_text(components, ImGui::GetContentRegionAvail().x, _measure).c_str());
 			r_value = Color(f[0], f[1], f[2], f[3]);
 		} break;
 		case Variant::TRANSFORM3D: {

@@ -8,6 +8,7 @@
 #ifdef GODOT_AREA_EDITOR_WINDOW
 
 #include "editor/editor_icons.h"
+#include "editor/editor_inspector.h"
 #include "editor/scene_tree_dock.h"
 #include "scene/main/missing_node.h"
 #include "scene/main/node.h"
@@ -145,7 +146,12 @@ void SceneTreeEditor::draw() {
 		ImGui::EndDisabled();
 	}
 	ImGui::SameLine();
-	ImGui::TextDisabled("drag a node onto another to reparent");
+	const String hint = "drag a node onto another to reparent";
+	const String fitted = EditorInspector::fit_text(hint, ImGui::GetContentRegionAvail().x, [](const String &p_text) { return ImGui::CalcTextSize(p_text.c_str()).x; });
+	ImGui::TextDisabled("%s", fitted.c_str());
+	if (fitted != hint && ImGui::IsItemHovered()) {
+		ImGui::SetTooltip("%s", hint.c_str());
+	}
 	if (!last_error.empty()) {
 		ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", last_error.c_str());
 	}
