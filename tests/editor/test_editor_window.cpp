@@ -20,6 +20,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -585,6 +586,83 @@ TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows)
 		_check_same_object(a, b, ".", "TVPanel", "layers", Variant((int64_t)3));
 		delete a;
 		delete b;
+	}
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[Editor][Window] under Xvfb: the GPU-sampled viewport shows what `render --png --gizmos` writes") {
+	if (!_has_program("Xvfb") || !_has_program("xdotool")) {
+		MESSAGE("SKIPPED: the editor window test needs Xvfb and xdotool (Debian: xvfb, xdotool; misc/scripts/install_deps.sh)");
+		return;
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	EditorProcess p;
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_gpu_" + std::to_string(getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	p.dir = dir.string();
+	p.log = (dir / "events.log").string();
+	p.output = (dir / "output.txt").string();
+	const String scene = String(GODOT_AREA_ROOT) + "/demo/demo.tscn"; // Only read: nothing is saved.
+	int display = 90 + int((getpid() + 19) % 400);
+	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
+		display++;
+	}
+	p.display = ":" + std::to_string(display);
+	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
+	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
+	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	// Nothing selected: every gizmo is drawn unselected, as `render --gizmos` draws them.
+	const String shot = (dir / "shot").string();
+	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--test-log", p.log, "--screenshot", shot }, { "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
+	REQUIRE(p.editor > 0);
+	REQUIRE_MESSAGE(p.wait_line("ready viewport 240 0 480 360") >= 0, _read_file(p.output) << "\n" << _read_file(p.log));
+	size_t mark = p.line_count();
+	REQUIRE(p.xdotool("mousemove 5 590 key F12"));
+	REQUIRE_MESSAGE(p.wait_line("screenshot " + shot + "_0.png", mark) >= 0, _read_file(p.log));
+	REQUIRE(p.xdotool("key ctrl+q"));
+	const int exit_line = p.wait_line("exit ", mark);
+	REQUIRE(exit_line >= 0);
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+
+	// The same frame through the CPU path: readback, CPU gizmos, Tonemap::apply.
+	const String cpu_png = (dir / "cpu.png").string();
+	const String cmd = vformat("'%s' render '%s' -o '%s' --png '%s' --width 480 --height 360 --gizmos >> '%s' 2>&1", GODOT_AREA_CLI_PATH, scene.c_str(), (dir / "cpu.exr").string().c_str(), cpu_png.c_str(), p.output.c_str());
+	REQUIRE_MESSAGE(std::system(cmd.c_str()) == 0, _read_file(p.output));
+	std::vector<uint8_t> gpu, cpu;
+	int gw = 0, gh = 0, cw = 0, ch = 0;
+	String error;
+	REQUIRE_MESSAGE(PNGReader::load(shot + "_0.png", gpu, gw, gh, &error), error);
+	REQUIRE_MESSAGE(PNGReader::load(cpu_png, cpu, cw, ch, &error), error);
+	REQUIRE(gw == 480);
+	REQUIRE(gh == 360);
+	REQUIRE(cw == gw);
+	REQUIRE(ch == gh);
+	// Outside the panel's caption ("Perspective", top left), every pixel within 2/255 (float vs
+	// double tonemap, the GPU's rounding); at most 0.5 % of them differ at all.
+	int max_diff = 0, differing = 0, compared = 0;
+	for (int y = 0; y < gh; y++) {
+		for (int x = 0; x < gw; x++) {
+			if (y < 20 && x < 300) {
+				continue;
+			}
+			compared++;
+			int d = 0;
+			for (int c = 0; c < 3; c++) {
+				d = std::max(d, std::abs(int(gpu[(size_t(y) * gw + x) * 4 + c]) - int(cpu[(size_t(y) * cw + x) * 4 + c])));
+			}
+			max_diff = std::max(max_diff, d);
+			differing += d > 0 ? 1 : 0;
+		}
+	}
+	CHECK_MESSAGE(max_diff <= 2, "largest difference " << max_diff << "/255");
+	CHECK_MESSAGE(differing <= compared / 200, differing << " of " << compared << " pixels differ");
+	MESSAGE("GPU viewport vs render --png: max " << max_diff << "/255, " << differing << " of " << compared << " pixels differ");
+	for (int i = 0; i < 600 && p.alive(); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(100));
 	}
 	std::filesystem::remove_all(dir);
 }
