@@ -9,6 +9,7 @@
 #include "core/object/class_db.h"
 #include "core/object/undo_redo.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 
@@ -213,6 +214,59 @@ uint32_t EditorInspector::get_layer_mask(const Variant &p_value) {
 int64_t EditorInspector::toggle_layer(const Variant &p_value, int p_bit) {
 	ERR_FAIL_INDEX_V_MSG(p_bit, 32, (int64_t)get_layer_mask(p_value), vformat("Layer bit %d is out of range (0..31).", p_bit));
 	return (int64_t)(get_layer_mask(p_value) ^ (uint32_t(1) << p_bit));
+}
+
+String EditorInspector::fit_text(const String &p_text, float p_max_width, const std::function<float(const String &)> &p_measure) {
+	if (p_measure(p_text) <= p_max_width) {
+		return p_text;
+	}
+	static const String ellipsis = "...";
+	if (p_measure(ellipsis) > p_max_width) {
+		return String();
+	}
+	// Widths grow with the prefix length: binary search for the longest prefix that fits.
+	size_t lo = 0, hi = p_text.size();
+	while (lo < hi) {
+		size_t mid = (lo + hi + 1) / 2;
+		String candidate = string_strip_edges(p_text.substr(0, mid)) + ellipsis;
+		if (p_measure(candidate) <= p_max_width) {
+			lo = mid;
+		} else {
+			hi = mid - 1;
+		}
+	}
+	// Never cut a UTF-8 sequence: back up to a character boundary.
+	while (lo > 0 && lo < p_text.size() && (uint8_t(p_text[lo]) & 0xC0) == 0x80) {
+		lo--;
+	}
+	String prefix = p_text.substr(0, lo);
+	while (!prefix.empty() && prefix.back() == ' ') {
+		prefix.pop_back();
+	}
+	return prefix + ellipsis;
+}
+
+float EditorInspector::get_label_column_width(const std::vector<float> &p_label_widths, float p_total_width, float p_padding, float p_min_width, float p_max_fraction) {
+	float widest = 0;
+	for (float w : p_label_widths) {
+		widest = std::max(widest, w);
+	}
+	const float max_width = std::max(p_min_width, p_total_width * p_max_fraction);
+	return std::min(max_width, std::max(p_min_width, widest + p_padding));
+}
+
+float EditorInspector::get_layer_cell_size(int p_layers, float p_width, float p_spacing, float p_max_cell, float p_min_cell, int &r_rows) {
+	r_rows = 0;
+	ERR_FAIL_COND_V_MSG(p_layers <= 0 || p_layers % 4 != 0, 0.0f, vformat("A layer grid needs a multiple of 4 layers; got %d.", p_layers));
+	for (int rows = 2; rows <= 4; rows += 2) {
+		const int columns = p_layers / rows;
+		const float cell = std::min(p_max_cell, (p_width - p_spacing * (columns - 1)) / columns);
+		if (cell >= p_min_cell || rows == 4) {
+			r_rows = rows;
+			return std::max(cell, 1.0f);
+		}
+	}
+	return 0.0f;
 }
 
 void EditorInspector::edit(Object *p_object) {

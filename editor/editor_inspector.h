@@ -26,6 +26,7 @@
 #include "core/variant/variant.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -83,6 +84,19 @@ public:
 	static int get_layer_count(PropertyHint p_hint);
 	static uint32_t get_layer_mask(const Variant &p_value);
 	static int64_t toggle_layer(const Variant &p_value, int p_bit);
+
+	// Fitting text into a field (labels and value previews that would overflow), with
+	// p_measure giving a string's width in pixels: p_text when it fits in p_max_width, else
+	// its longest prefix (trailing spaces dropped) followed by "..." that fits, else "" when
+	// not even "..." fits. Godot's inspector shows such labels with an ellipsis too.
+	static String fit_text(const String &p_text, float p_max_width, const std::function<float(const String &)> &p_measure);
+	// Width of the label column: the widest label plus p_padding, kept between p_min_width and
+	// p_max_fraction of p_total_width (longer labels are then fitted with fit_text()).
+	static float get_label_column_width(const std::vector<float> &p_label_widths, float p_total_width, float p_padding = 8.0f, float p_min_width = 60.0f, float p_max_fraction = 0.45f);
+	// Layer grid cell side for p_layers toggles in two rows of p_layers / 2 in p_width pixels
+	// with p_spacing between cells, at most p_max_cell; rows of a quarter each (4 rows) when
+	// two rows would make cells narrower than p_min_cell. r_rows gets the row count.
+	static float get_layer_cell_size(int p_layers, float p_width, float p_spacing, float p_max_cell, float p_min_cell, int &r_rows);
 
 	// The object is not owned. nullptr clears the rows.
 	void edit(Object *p_object);

@@ -7,7 +7,31 @@
 
 #include "editor/editor_node.h"
 
+#include <algorithm>
 #include <cstdio>
+
+EditorNode::Layout EditorNode::compute_layout(int p_width, int p_height) {
+	Layout l;
+	const int w = std::max(p_width, 1), h = std::max(p_height, 1);
+	// Docks at their sizes while the viewport keeps its minimum; otherwise scaled down together.
+	int left = SCENE_PANEL_WIDTH, right = INSPECTOR_WIDTH;
+	if (w - left - right < VIEWPORT_MIN_SIZE) {
+		const int room = std::max(0, w - VIEWPORT_MIN_SIZE);
+		left = room * SCENE_PANEL_WIDTH / (SCENE_PANEL_WIDTH + INSPECTOR_WIDTH);
+		right = room - left;
+	}
+	int status = std::min(STATUS_HEIGHT, h / 4), output = OUTPUT_HEIGHT;
+	if (h - status - output < VIEWPORT_MIN_SIZE) {
+		output = std::max(0, h - status - VIEWPORT_MIN_SIZE);
+	}
+	const int vw = std::max(1, w - left - right), vh = std::max(1, h - status - output);
+	l.scene = { 0, 0, left, h - status };
+	l.viewport = { left, 0, vw, vh };
+	l.output = { left, vh, vw, h - status - vh };
+	l.inspector = { left + vw, 0, w - left - vw, h - status };
+	l.status = { 0, h - status, w, status };
+	return l;
+}
 
 bool EditorNode::parse_options(const std::vector<String> &p_args, Options &r_options, String *r_error) {
 	for (size_t i = 0; i < p_args.size(); i++) {

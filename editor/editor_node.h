@@ -2,9 +2,10 @@
 /*  editor_node.h                                                         */
 /**************************************************************************/
 /* godot-area: `godot-area editor [SCENE.tscn]`, the editor window        */
-/* (Godot: EditorNode). A fixed-size GLFW window presented through a      */
+/* (Godot: EditorNode). A resizable GLFW window presented through a      */
 /* Vulkan swapchain on the RenderingDevice's own device, Dear ImGui for   */
-/* the panels:                                                            */
+/* the panels (compute_layout: docks at fixed sizes, the viewport takes   */
+/* the rest; the viewport is sampled on the GPU, viewport_blit_vk.h):     */
 /*   Scene (left)      SceneTreeEditor over SceneTreeDock                 */
 /*   Viewport (centre) Node3DEditorViewport: the Forward+ frame + gizmos  */
 /*   Output (below)    GPU time per pass, camera help                     */
@@ -22,7 +23,8 @@
 /*   --test-log FILE      one line per event, flushed at once:            */
 /*                        ready, select, handle, drag_start, drag_end,    */
 /*                        undo, redo, property, save, screenshot, exit    */
-/*   --screenshot PREFIX  F12 writes PREFIX_<n>.png (n = 0, 1, ...)       */
+/*   --screenshot PREFIX  F12 writes PREFIX_<n>.png (n = 0, 1, ...): the  */
+/*                        viewport cropped from the next presented frame */
 /*   --window-screenshot PATH  after the first presented frame (and on   */
 /*                        F11), write the whole window (the swapchain     */
 /*                        image read back) as a PNG                       */
@@ -37,13 +39,29 @@
 
 class EditorNode {
 public:
-	// Layout of the fixed-size window, in pixels.
+	// The window opens at WINDOW_WIDTH x WINDOW_HEIGHT and can be resized: the docks keep their
+	// sizes (Scene left, Inspector right, Output below the viewport, the status line) and the 3D
+	// viewport takes the rest, as in Godot's editor.
 	static constexpr int WINDOW_WIDTH = 1040;
 	static constexpr int WINDOW_HEIGHT = 600;
 	static constexpr int SCENE_PANEL_WIDTH = 240;
-	static constexpr int VIEWPORT_WIDTH = 480;
-	static constexpr int VIEWPORT_HEIGHT = 360;
+	static constexpr int INSPECTOR_WIDTH = 320;
+	static constexpr int OUTPUT_HEIGHT = 216;
 	static constexpr int STATUS_HEIGHT = 24;
+	static constexpr int VIEWPORT_WIDTH = WINDOW_WIDTH - SCENE_PANEL_WIDTH - INSPECTOR_WIDTH; // 480 at first.
+	static constexpr int VIEWPORT_HEIGHT = WINDOW_HEIGHT - STATUS_HEIGHT - OUTPUT_HEIGHT; // 360 at first.
+	static constexpr int VIEWPORT_MIN_SIZE = 64;
+
+	struct Rect {
+		int x = 0, y = 0, width = 0, height = 0;
+	};
+	struct Layout {
+		Rect scene, viewport, output, inspector, status;
+	};
+	// The panels for a p_width x p_height window. Docks shrink (never below what keeps the
+	// viewport VIEWPORT_MIN_SIZE on a side) when the window is too small for them; panels never
+	// overlap and together cover the window.
+	static Layout compute_layout(int p_width, int p_height);
 
 	struct Options {
 		String scene_path; // Empty: the embedded demo scene.

@@ -23,6 +23,7 @@
 #include "editor/plugins/node_3d_editor_plugin.h"
 #include "editor/scene_tree_dock.h"
 #include "editor/scene_tree_editor.h"
+#include "editor/viewport_blit_vk.h"
 #include "modules/register_module_types.h"
 #include "scene/3d/node_3d.h"
 #include "scene/main/godot_instance.h"
@@ -39,6 +40,7 @@
 #include <imgui_impl_vulkan.h>
 
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace {
@@ -107,6 +109,10 @@ public:
 	SceneTreeEditor tree_editor;
 	EditorInspector inspector;
 	Node3DEditorViewport viewport;
+	EditorNode::Layout layout = EditorNode::compute_layout(EditorNode::WINDOW_WIDTH, EditorNode::WINDOW_HEIGHT);
+	ViewportBlitVK blit;
+	String pending_screenshot; // F12: written from the next presented frame.
+	bool log_layer_cells = false; // After a layout change: log the first layer grid's cells once.
 	Node *shown_selection = nullptr;
 	uint64_t seen_undo_version = 0;
 	uint64_t seen_dock_version = 0;
@@ -132,7 +138,7 @@ public:
 
 	void log_handles() {
 		for (const Node3DEditorViewport::HandleInfo &h : viewport.get_handles()) {
-			log_line(vformat("handle %d %s %.1f %.1f", h.id, h.name.c_str(), h.position.x + EditorNode::SCENE_PANEL_WIDTH, h.position.y));
+			log_line(vformat("handle %d %s %.1f %.1f", h.id, h.name.c_str(), h.position.x + layout.viewport.x, h.position.y + layout.viewport.y));
 		}
 	}
 
@@ -190,16 +196,32 @@ public:
 		}
 	}
 
+	// F12: the viewport exactly as shown (scene, gizmos, the panel's caption), cropped from the
+	// next presented frame, which the swapchain reads back.
 	void screenshot() {
-		String path = vformat("%s_%d.png", options.screenshot_prefix.empty() ? "editor_viewport" : options.screenshot_prefix.c_str(), screenshot_count++);
+		pending_screenshot = vformat("%s_%d.png", options.screenshot_prefix.empty() ? "editor_viewport" : options.screenshot_prefix.c_str(), screenshot_count++);
+	}
+
+	void write_screenshot(const std::vector<uint8_t> &p_window, int p_width, int p_height) {
+		const String path = pending_screenshot;
+		pending_screenshot.clear();
+		const EditorNode::Rect &r = layout.viewport;
 		String error;
-		if (viewport.save_screenshot(path, &error)) {
-			status_message = "Wrote " + path;
-			log_line("screenshot " + path);
+		if (p_window.size() != size_t(p_width) * p_height * 4 || r.x + r.width > p_width || r.y + r.height > p_height) {
+			error = "the window could not be read back";
 		} else {
-			status_message = "Screenshot failed: " + error;
-			log_line("screenshot error " + error);
+			std::vector<uint8_t> crop(size_t(r.width) * r.height * 4);
+			for (int y = 0; y < r.height; y++) {
+				memcpy(&crop[size_t(y) * r.width * 4], &p_window[(size_t(r.y + y) * p_width + r.x) * 4], size_t(r.width) * 4);
+			}
+			if (PNGWriter::save_rgba8(crop, r.width, r.height, path, &error)) {
+				status_message = "Wrote " + path;
+				log_line("screenshot " + path);
+				return;
+			}
 		}
+		status_message = "Screenshot failed: " + error;
+		log_line("screenshot error " + error);
 	}
 
 	void handle_key(const InputEvent &p_e) {
@@ -222,7 +244,6 @@ public:
 		} else if (p_e.button == GLFW_KEY_F11) {
 			window_capture_requested = true;
 		} else if (p_e.button == GLFW_KEY_F12) {
-			viewport.update();
 			screenshot();
 		} else if (p_e.button == GLFW_KEY_ESCAPE) {
 			viewport.cancel_drag();
@@ -234,8 +255,8 @@ public:
 	}
 
 	void handle_mouse(const InputEvent &p_e) {
-		Vector2 local((real_t)p_e.x - EditorNode::SCENE_PANEL_WIDTH, (real_t)p_e.y);
-		bool inside = local.x >= 0 && local.y >= 0 && local.x < EditorNode::VIEWPORT_WIDTH && local.y < EditorNode::VIEWPORT_HEIGHT;
+		Vector2 local((real_t)p_e.x - layout.viewport.x, (real_t)p_e.y - layout.viewport.y);
+		bool inside = local.x >= 0 && local.y >= 0 && local.x < layout.viewport.width && local.y < layout.viewport.height;
 		if (p_e.type == InputEvent::MOUSE_MOTION) {
 			viewport.mouse_motion(local);
 		} else if (p_e.type == InputEvent::SCROLL) {
@@ -279,6 +300,12 @@ public:
 		ImGui::Text("%s  (%s)", node ? String(node->get_name()).c_str() : "", inspector.get_edited_object()->get_class().c_str());
 		ImGui::Separator();
 		ImGui::BeginChild("rows");
+		// One label column for all rows: as wide as the longest label, at most 45 % of the panel.
+		std::vector<float> label_widths;
+		for (int i = 0; i < inspector.get_row_count(); i++) {
+			label_widths.push_back(EditorProperties::measure_label(inspector.get_row(i)));
+		}
+		const float label_width = EditorInspector::get_label_column_width(label_widths, ImGui::GetContentRegionAvail().x, ImGui::GetStyle().ItemSpacing.x * 2);
 		String group;
 		bool group_open = true;
 		for (int i = 0; i < inspector.get_row_count(); i++) {
@@ -295,10 +322,12 @@ public:
 			}
 			Variant value = inspector.get_row_value(i);
 			Variant new_value;
-			EditorProperties::Result r = EditorProperties::draw_row(row, value, new_value);
+			EditorProperties::Result r = EditorProperties::draw_row(row, value, new_value, label_width);
 			if (r.changed) {
 				if (!inspector.set_row_value(i, new_value, r.active)) {
 					status_message = inspector.get_last_error();
+				} else if (!r.active) {
+					log_line(vformat("edit %s %s %s", node ? String(node->get_name()).c_str() : "<object>", row.property.c_str(), inspector.get_row_value(i).stringify().c_str()));
 				}
 				viewport.mark_scene_changed();
 			}
@@ -343,41 +372,43 @@ public:
 
 	void draw_panels() {
 		const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
-		const float W = EditorNode::WINDOW_WIDTH, H = EditorNode::WINDOW_HEIGHT;
-		const float left = EditorNode::SCENE_PANEL_WIDTH, vw = EditorNode::VIEWPORT_WIDTH, vh = EditorNode::VIEWPORT_HEIGHT, sh = EditorNode::STATUS_HEIGHT;
-		ImGui::SetNextWindowPos(ImVec2(0, 0));
-		ImGui::SetNextWindowSize(ImVec2(left, H - sh));
+		auto place = [](const EditorNode::Rect &p_r) {
+			ImGui::SetNextWindowPos(ImVec2((float)p_r.x, (float)p_r.y));
+			ImGui::SetNextWindowSize(ImVec2((float)p_r.width, (float)p_r.height));
+		};
+		place(layout.scene);
 		ImGui::Begin("Scene", nullptr, fixed);
 		tree_editor.draw();
 		ImGui::End();
 
-		ImGui::SetNextWindowPos(ImVec2(left, 0));
-		ImGui::SetNextWindowSize(ImVec2(vw, vh));
+		const EditorNode::Rect &v = layout.viewport;
+		place(v);
 		ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
 		ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
 		ImGui::Begin("Viewport", nullptr, fixed | ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoBringToFrontOnFocus);
-		// The engine's frame is copied under this window; the button only takes the mouse.
-		ImGui::InvisibleButton("##viewport", ImVec2(vw, vh), ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+		// The engine's frame, sampled on the GPU (ViewportBlitVK) under the caption; the button only
+		// takes the mouse.
+		blit.add_to_draw_list(ImGui::GetWindowDrawList(), (float)v.x, (float)v.y, (float)v.width, (float)v.height);
+		ImGui::InvisibleButton("##viewport", ImVec2((float)v.width, (float)v.height), ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
 		viewport_hovered = ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
 		ImGui::SetCursorPos(ImVec2(6, 4));
 		ImGui::TextColored(ImVec4(1, 1, 1, 0.8f), "Perspective  %s", viewport.is_dragging_handle() ? "(dragging: lighting updates on release)" : "");
 		ImGui::End();
 		ImGui::PopStyleVar(2);
 
-		ImGui::SetNextWindowPos(ImVec2(left, vh));
-		ImGui::SetNextWindowSize(ImVec2(vw, H - sh - vh));
-		ImGui::Begin("Output", nullptr, fixed);
-		draw_output();
-		ImGui::End();
+		if (layout.output.height > 0) {
+			place(layout.output);
+			ImGui::Begin("Output", nullptr, fixed);
+			draw_output();
+			ImGui::End();
+		}
 
-		ImGui::SetNextWindowPos(ImVec2(left + vw, 0));
-		ImGui::SetNextWindowSize(ImVec2(W - left - vw, H - sh));
+		place(layout.inspector);
 		ImGui::Begin("Inspector", nullptr, fixed);
 		draw_inspector();
 		ImGui::End();
 
-		ImGui::SetNextWindowPos(ImVec2(0, H - sh));
-		ImGui::SetNextWindowSize(ImVec2(W, sh));
+		place(layout.status);
 		ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6, 4));
 		ImGui::Begin("Status", nullptr, fixed | ImGuiWindowFlags_NoDecoration);
 		draw_status();
@@ -443,7 +474,8 @@ int EditorNode::run(const Options &p_options) {
 			s.inspector.set_undo_redo(&s.undo_redo);
 			s.tree_editor.set_dock(&s.dock);
 			s.viewport.set_event_callback([&s](const String &p_text) { s.log_line(p_text); });
-			s.viewport.setup(&tree, s.scene, VIEWPORT_WIDTH, VIEWPORT_HEIGHT, &s.undo_redo);
+			s.viewport.setup(&tree, s.scene, s.layout.viewport.width, s.layout.viewport.height, &s.undo_redo);
+			s.viewport.set_gpu_display(true); // Sampled by ViewportBlitVK, never read back.
 			if (!p_options.select_path.empty()) {
 				Node *n = s.scene->get_node_or_null(p_options.select_path);
 				if (!n) {
@@ -496,6 +528,18 @@ int EditorNode::run(const Options &p_options) {
 			info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
 			info.CheckVkResultFn = _check_vk;
 			ImGui_ImplVulkan_Init(&info, swap_chain.get_render_pass());
+			if (!s.blit.create(RenderingDevice::get_singleton(), swap_chain.get_render_pass(), &error)) {
+				fprintf(stderr, "godot-area editor: %s\n", error.c_str());
+				s.quit = true;
+				code = 1;
+			}
+			// Layer-grid cells (window pixels) for the test log, once after each layout change.
+			EditorProperties::layer_cell_callback = [&s](const String &p_property, int p_bit, float p_x, float p_y) {
+				if (s.log_layer_cells && p_bit < 2) {
+					Node *sel = s.dock.get_selected();
+					s.log_line(vformat("layer_cell %s %s %d %.1f %.1f", sel ? String(sel->get_name()).c_str() : "<none>", p_property.c_str(), p_bit, p_x, p_y));
+				}
+			};
 
 			// Upload the font atlas in a first (blank) frame: ImGui needs it before NewFrame().
 			bool fonts_uploaded = false, fonts_pending = false, ready = false;
@@ -512,12 +556,30 @@ int EditorNode::run(const Options &p_options) {
 				s.quit = true;
 				code = 1;
 			}
+			bool layout_logged = false;
+			bool log_cells_next = false; // Log the layer-grid cells in the next frame (after ready / resize).
 			while (!display.should_close() && !s.quit) {
 				// Idle: wait for input instead of spinning (the window only changes on events).
-				if (ready && input_queue.empty()) {
+				if (ready && input_queue.empty() && s.pending_screenshot.empty()) {
 					glfwWaitEventsTimeout(0.25);
 				} else {
 					display.poll_events();
+				}
+				// A resized window: new swapchain images, new panel rectangles, the viewport rendered
+				// again at its new size (after the last frame, which samples its old texture, finished).
+				int fb_w = 0, fb_h = 0;
+				display.get_framebuffer_size(fb_w, fb_h);
+				if (fb_w > 0 && fb_h > 0 && (fb_w != swap_chain.get_width() || fb_h != swap_chain.get_height() || !swap_chain.is_valid())) {
+					swap_chain.resize(fb_w, fb_h);
+				}
+				if (fb_w > 0 && fb_h > 0) {
+					EditorNode::Layout layout = EditorNode::compute_layout(fb_w, fb_h);
+					if (layout.viewport.width != s.layout.viewport.width || layout.viewport.height != s.layout.viewport.height || layout.viewport.x != s.layout.viewport.x || layout.inspector.width != s.layout.inspector.width) {
+						swap_chain.wait_frame();
+						s.layout = layout;
+						s.viewport.set_size(layout.viewport.width, layout.viewport.height);
+						layout_logged = false;
+					}
 				}
 				std::vector<InputEvent> events;
 				events.swap(input_queue);
@@ -537,8 +599,12 @@ int EditorNode::run(const Options &p_options) {
 					s.seen_dock_version = s.dock.get_version();
 					s.viewport.mark_scene_changed();
 				}
+				s.log_layer_cells = log_cells_next;
+				log_cells_next = false;
 				s.draw_panels();
+				s.log_layer_cells = false;
 				s.sync_selection();
+				swap_chain.wait_frame(); // The last frame sampled the textures update() may rewrite.
 				s.viewport.update();
 				ImGui::Render();
 				VkCommandBuffer cb = swap_chain.begin_frame(Color(0.1f, 0.1f, 0.12f, 1.0f));
@@ -549,21 +615,27 @@ int EditorNode::run(const Options &p_options) {
 				if (!cb) {
 					continue;
 				}
-				const std::vector<uint8_t> &pixels = s.viewport.get_rgba8();
-				if (!pixels.empty()) {
-					swap_chain.copy_rgba8(pixels.data(), VIEWPORT_WIDTH, VIEWPORT_HEIGHT, SCENE_PANEL_WIDTH, 0);
-				}
+				const bool have_viewport = s.blit.begin_frame(cb, swap_chain.get_width(), swap_chain.get_height(), RenderingDevice::get_singleton(), s.viewport.get_scene_texture(), s.viewport.get_overlay_texture(), s.viewport.get_tonemap());
+				const uint64_t blits_before = s.blit.get_draw_count();
 				swap_chain.begin_render_pass();
 				ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cb);
-				bool capture = (!p_options.window_screenshot.empty() && ready && !s.window_captured) || s.window_capture_requested;
+				const bool viewport_drawn = have_viewport && s.blit.get_draw_count() > blits_before;
+				bool window_shot = (!p_options.window_screenshot.empty() && ready && !s.window_captured) || s.window_capture_requested;
+				const bool viewport_shot = !s.pending_screenshot.empty() && viewport_drawn;
 				const String window_path = p_options.window_screenshot.empty() ? String("editor_window.png") : p_options.window_screenshot;
+				bool capture = window_shot || viewport_shot;
 				if (capture) {
-					s.window_captured = true;
-					s.window_capture_requested = false;
 					capture = swap_chain.capture_next_frame();
 				}
 				swap_chain.end_frame();
-				if (capture && !swap_chain.get_capture().empty()) {
+				if (viewport_shot) {
+					s.write_screenshot(capture ? swap_chain.get_capture() : std::vector<uint8_t>(), swap_chain.get_width(), swap_chain.get_height());
+				}
+				if (window_shot) {
+					s.window_captured = true;
+					s.window_capture_requested = false;
+				}
+				if (window_shot && capture && !swap_chain.get_capture().empty()) {
 					String err;
 					if (PNGWriter::save_rgba8(swap_chain.get_capture(), swap_chain.get_width(), swap_chain.get_height(), window_path, &err)) {
 						s.status_message = "Wrote " + window_path;
@@ -572,16 +644,27 @@ int EditorNode::run(const Options &p_options) {
 						s.log_line("window_screenshot error " + err);
 					}
 				}
-				if (!ready && !pixels.empty()) {
-					// Two frames presented with the rendered viewport: the layout has settled.
+				const EditorNode::Rect &v = s.layout.viewport;
+				if (!ready && viewport_drawn) {
+					// A frame presented with the rendered viewport: the layout has settled.
 					ready = s.viewport.get_frames_rendered() > 0 && fonts_uploaded && !fonts_pending;
 					if (ready) {
-						s.log_line(vformat("ready viewport %d %d %d %d window %d %d", SCENE_PANEL_WIDTH, 0, VIEWPORT_WIDTH, VIEWPORT_HEIGHT, WINDOW_WIDTH, WINDOW_HEIGHT));
+						s.log_line(vformat("ready viewport %d %d %d %d window %d %d", v.x, v.y, v.width, v.height, swap_chain.get_width(), swap_chain.get_height()));
 						s.log_handles();
+						layout_logged = true;
+						log_cells_next = true;
 					}
+				} else if (ready && !layout_logged && viewport_drawn && s.viewport.get_width() == v.width && s.viewport.get_height() == v.height) {
+					// Presented at the new size: where everything is now.
+					layout_logged = true;
+					s.log_line(vformat("resize window %d %d viewport %d %d %d %d", swap_chain.get_width(), swap_chain.get_height(), v.x, v.y, v.width, v.height));
+					s.log_handles();
+					log_cells_next = true;
 				}
 			}
 			swap_chain.wait_idle();
+			EditorProperties::layer_cell_callback = nullptr;
+			s.blit.destroy();
 			ImGui_ImplVulkan_Shutdown();
 			ImGui_ImplGlfw_Shutdown();
 			ImGui::DestroyContext();

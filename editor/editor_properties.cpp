@@ -18,8 +18,12 @@
 #include <imgui_stdlib.h>
 
 #include <cfloat>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <string>
+
+std::function<void(const String &, int, float, float)> EditorProperties::layer_cell_callback;
 
 namespace {
 
@@ -59,6 +63,66 @@ void _drag_bounds(const EditorPropertyRow &p_row, float &r_min, float &r_max) {
 	r_max = p_row.or_greater ? FLT_MAX : (float)p_row.range_max;
 }
 
+float _measure(const String &p_text) {
+	return ImGui::CalcTextSize(p_text.c_str()).x;
+}
+
+// The display format for p_count drag fields sharing the item width: the row's format if every
+// value fits its field, else without the suffix, else with fewer decimals (the value itself is
+// kept; the whole value is in the tooltip). Long values never run past their field.
+std::string _fit_float_format(const EditorPropertyRow &p_row, const float *p_values, int p_count) {
+	const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+	const float field = (ImGui::CalcItemWidth() - spacing * (p_count - 1)) / p_count - ImGui::GetStyle().FramePadding.x * 2;
+	const std::string full = _float_format(p_row);
+	auto fits = [&](const std::string &p_format) {
+		char buffer[64];
+		for (int i = 0; i < p_count; i++) {
+			snprintf(buffer, sizeof(buffer), p_format.c_str(), p_values[i]);
+			if (_measure(buffer) > field) {
+				return false;
+			}
+		}
+		return true;
+	};
+	if (fits(full)) {
+		return full;
+	}
+	int decimals = 3;
+	size_t dot = full.find('.');
+	if (dot != std::string::npos) {
+		decimals = atoi(full.c_str() + dot + 1);
+	}
+	for (int d = decimals; d >= 0; d--) {
+		std::string f = "%." + std::to_string(d) + "f";
+		if (fits(f)) {
+			return f;
+		}
+	}
+	return "%.0f";
+}
+
+void _value_tooltip(const EditorPropertyRow &p_row, const float *p_values, int p_count) {
+	if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) {
+		return;
+	}
+	String text;
+	for (int i = 0; i < p_count; i++) {
+		text += (i ? ", " : "") + vformat("%g", p_values[i]);
+	}
+	ImGui::SetTooltip("%s%s%s", text.c_str(), p_row.suffix.empty() ? "" : " ", p_row.suffix.c_str());
+}
+
+// A combo whose preview is fitted to the field (ImGui would cut it mid-letter).
+bool _begin_combo(const char *p_id, const String &p_preview) {
+	const float room = ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().FramePadding.x * 2;
+	const String fitted = EditorInspector::fit_text(p_preview, room, _measure);
+	const bool open = ImGui::BeginCombo(p_id, fitted.c_str());
+	if (fitted != p_preview && ImGui::IsItemHovered()) {
+		ImGui::SetTooltip("%s", p_preview.c_str());
+	}
+	return open;
+}
+
 void _track(EditorProperties::Result &r_result, bool p_changed) {
 	r_result.changed = r_result.changed || p_changed;
 	r_result.active = r_result.active || ImGui::IsItemActive();
@@ -67,15 +131,23 @@ void _track(EditorProperties::Result &r_result, bool p_changed) {
 
 } // namespace
 
-EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value) {
+float EditorProperties::measure_label(const EditorPropertyRow &p_row) {
+	return _measure(p_row.label);
+}
+
+EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value, float p_label_width) {
 	Result result;
 	ImGui::PushID(p_row.property.c_str());
 	ImGui::AlignTextToFramePadding();
-	ImGui::TextUnformatted(p_row.label.c_str());
+	// The label never runs into the value: fitted to its column, with an ellipsis when cut.
+	const float label_x = ImGui::GetCursorPosX();
+	const float spacing = ImGui::GetStyle().ItemSpacing.x;
+	const String label = EditorInspector::fit_text(p_row.label, p_label_width - spacing, _measure);
+	ImGui::TextUnformatted(label.c_str());
 	if (ImGui::IsItemHovered()) {
-		ImGui::SetTooltip("%s (%s)", p_row.property.c_str(), Variant::get_type_name(p_row.type).c_str());
+		ImGui::SetTooltip("%s\n%s (%s)", p_row.label.c_str(), p_row.property.c_str(), Variant::get_type_name(p_row.type).c_str());
 	}
-	ImGui::SameLine(ImGui::GetWindowContentRegionWidth() * 0.42f);
+	ImGui::SameLine(label_x + p_label_width);
 	ImGui::SetNextItemWidth(-1);
 	if (p_row.read_only) {
 		ImGui::BeginDisabled();
@@ -98,8 +170,8 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 						index = (int)i;
 					}
 				}
-				const char *preview = index >= 0 ? p_row.enum_options[index].c_str() : "?";
-				if (ImGui::BeginCombo("##v", preview)) {
+				const String preview = index >= 0 ? p_row.enum_options[index] : vformat("%lld (not an option)", (long long)current);
+				if (_begin_combo("##v", preview)) {
 					for (size_t i = 0; i < p_row.enum_options.size(); i++) {
 						if (ImGui::Selectable(p_row.enum_options[i].c_str(), (int)i == index)) {
 							r_value = (int64_t)p_row.enum_values[i];
@@ -112,11 +184,17 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 				// Godot's layer grid: numbered toggles in two rows, the mask as unsigned hex beside.
 				const int layers = EditorInspector::get_layer_count(p_row.hint);
 				const uint32_t mask = EditorInspector::get_layer_mask(p_value);
-				const float cell = ImGui::GetFrameHeight() * 0.95f;
+				// Cells shrink with the field (four rows when two would be too narrow).
+				int rows = 2;
+				const float cell = EditorInspector::get_layer_cell_size(layers, ImGui::GetContentRegionAvail().x, 2.0f, ImGui::GetFrameHeight() * 0.95f, ImGui::CalcTextSize("20").x + 4.0f, rows);
+				const float grid_x = ImGui::GetCursorPosX();
 				ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(2, 2));
+				ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(1, 1));
 				for (int bit = 0; bit < layers; bit++) {
-					if (bit % (layers / 2) != 0) {
+					if (bit % (layers / rows) != 0) {
 						ImGui::SameLine();
+					} else if (bit > 0) {
+						ImGui::SetCursorPosX(grid_x);
 					}
 					const bool on = (mask >> bit) & 1u;
 					ImGui::PushStyleColor(ImGuiCol_Button, on ? ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive) : ImGui::GetStyleColorVec4(ImGuiCol_FrameBg));
@@ -128,9 +206,14 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 					if (ImGui::IsItemHovered()) {
 						ImGui::SetTooltip("Layer %d (bit %d) %s", bit + 1, bit, on ? "on" : "off");
 					}
+					if (layer_cell_callback) {
+						const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+						layer_cell_callback(p_row.property, bit, (a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+					}
 					ImGui::PopStyleColor();
 				}
-				ImGui::PopStyleVar();
+				ImGui::PopStyleVar(2);
+				ImGui::SetCursorPosX(grid_x);
 				ImGui::TextDisabled("0x%08X", mask);
 			} else if (p_row.hint == PROPERTY_HINT_FLAGS && !p_row.enum_options.empty()) {
 				int64_t flags = current;
@@ -156,7 +239,7 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 		} break;
 		case Variant::FLOAT: {
 			float v = (float)p_value.to_float() * scale;
-			std::string fmt = _float_format(p_row);
+			std::string fmt = _fit_float_format(p_row, &v, 1);
 			ImGuiSliderFlags flags = p_row.exp ? ImGuiSliderFlags_Logarithmic : 0;
 			if (p_row.has_range && !p_row.or_greater && !p_row.or_less) {
 				_track(result, ImGui::SliderFloat("##v", &v, (float)p_row.range_min, (float)p_row.range_max, fmt.c_str(), flags));
@@ -170,7 +253,7 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 		case Variant::STRING: {
 			std::string s = p_value.to_string();
 			if (is_enum) {
-				if (ImGui::BeginCombo("##v", s.c_str())) {
+				if (_begin_combo("##v", s)) {
 					for (const String &option : p_row.enum_options) {
 						if (ImGui::Selectable(option.c_str(), option == s)) {
 							r_value = option;
@@ -189,7 +272,8 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 			float f[2] = { (float)v.x * scale, (float)v.y * scale };
 			float lo, hi;
 			_drag_bounds(p_row, lo, hi);
-			_track(result, ImGui::DragFloat2("##v", f, _drag_speed(p_row), lo, hi, _float_format(p_row).c_str()));
+			_track(result, ImGui::DragFloat2("##v", f, _drag_speed(p_row), lo, hi, _fit_float_format(p_row, f, 2).c_str()));
+			_value_tooltip(p_row, f, 2);
 			r_value = Vector2(f[0] / scale, f[1] / scale);
 		} break;
 		case Variant::VECTOR3: {
@@ -197,13 +281,19 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 			float f[3] = { (float)v.x * scale, (float)v.y * scale, (float)v.z * scale };
 			float lo, hi;
 			_drag_bounds(p_row, lo, hi);
-			_track(result, ImGui::DragFloat3("##v", f, _drag_speed(p_row), lo, hi, _float_format(p_row).c_str()));
+			_track(result, ImGui::DragFloat3("##v", f, _drag_speed(p_row), lo, hi, _fit_float_format(p_row, f, 3).c_str()));
+			_value_tooltip(p_row, f, 3);
 			r_value = Vector3(f[0] / scale, f[1] / scale, f[2] / scale);
 		} break;
 		case Variant::COLOR: {
 			Color c = p_value;
 			float f[4] = { c.r, c.g, c.b, c.a };
-			_track(result, ImGui::ColorEdit4("##v", f, ImGuiColorEditFlags_Float));
+			// Godot's colour property: a swatch that opens the picker; the components beside it,
+			// fitted to the field.
+			_track(result, ImGui::ColorEdit4("##v", f, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_NoInputs));
+			ImGui::SameLine();
+			const String components = vformat("%.3g, %.3g, %.3g, %.3g", f[0], f[1], f[2], f[3]);
+			ImGui::TextDisabled("%s", EditorInspector::fit_text(components, ImGui::GetContentRegionAvail().x, _measure).c_str());
 			r_value = Color(f[0], f[1], f[2], f[3]);
 		} break;
 		case Variant::TRANSFORM3D: {
@@ -230,7 +320,11 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 
 #else
 
-EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value) {
+float EditorProperties::measure_label(const EditorPropertyRow &p_row) {
+	return 0.0f;
+}
+
+EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value, float p_label_width) {
 	return Result();
 }
 

@@ -16,7 +16,10 @@
 
 #pragma once
 
+#include "core/string/ustring.h"
 #include "core/variant/variant.h"
+
+#include <functional>
 
 struct EditorPropertyRow;
 
@@ -27,6 +30,12 @@ public:
 		bool active = false; // The widget is being dragged (merge edits into one undo action).
 		bool deactivated = false; // A drag just ended.
 	};
-	// Draws p_row's widget (label on the left) for p_value; a change is returned in r_value.
-	static Result draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value);
+	// Draws p_row's widget for p_value, its label fitted into a p_label_width column on the left
+	// (EditorInspector::fit_text: an ellipsis when cut, the whole label in the tooltip); a change
+	// is returned in r_value.
+	static Result draw_row(const EditorPropertyRow &p_row, const Variant &p_value, Variant &r_value, float p_label_width);
+	// Width of p_row's whole label in the current font (for EditorInspector::get_label_column_width).
+	static float measure_label(const EditorPropertyRow &p_row);
+	// Called for each layer-grid cell drawn (property, bit, centre in window pixels), for test logs.
+	static std::function<void(const String &, int, float, float)> layer_cell_callback;
 };

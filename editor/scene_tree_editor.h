@@ -6,7 +6,10 @@
 /* model (scene_tree_dock.h): click selects; drag a node onto another to   */
 /* reparent it; "Add" instantiates a class by name under the selection;   */
 /* "Delete" removes the selection. Every change is one undo action of the  */
-/* dock's UndoRedo.                                                       */
+/* dock's UndoRedo. Each row shows the node's class icon (EditorIcons:    */
+/* the nearest ancestor's when the class has none), like Godot's dock; a  */
+/* MissingNode is drawn dimmed with a warning icon and a tooltip naming    */
+/* the class it stands in for.                                            */
 /* Only built with Dear ImGui (GODOT_AREA_EDITOR_WINDOW).                 */
 
 #pragma once
@@ -29,6 +32,8 @@ class SceneTreeEditor {
 
 public:
 	void set_dock(SceneTreeDock *p_dock) { dock = p_dock; }
+	// Draws icon p_name (EditorIcons) into the current window at (p_x, p_y), p_size pixels square.
+	static void draw_icon(const String &p_name, float p_x, float p_y, float p_size, float p_alpha = 1.0f);
 	// Draws the panel's contents into the current ImGui window.
 	void draw();
 	String get_last_error() const { return last_error; }

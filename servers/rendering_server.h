@@ -493,6 +493,11 @@ public:
 	virtual void viewport_set_debug_draw(RID p_viewport, ViewportDebugDraw p_draw) = 0;
 	// Returns the last rendered image (float RGBA, linear HDR, top row first); empty if none.
 	virtual Image viewport_get_texture_data(RID p_viewport) const = 0;
+	// The RenderingDevice texture the viewport renders into (scene-linear RGBA16F; Godot:
+	// viewport_get_texture), for sampling it on the GPU without a readback. Null before the
+	// viewport has a size or on a renderer without textures (the dummy one). It changes when
+	// the viewport's size does.
+	virtual RID viewport_get_texture(RID p_viewport) const = 0;
 	// Area-light shadow atlas of the viewport (each viewport has its own, as Godot's shadow atlas):
 	// p_size x p_size pixels (a power of two, AREA_SHADOW_ATLAS_SIZE_MIN..MAX) split into p_subdivision x
 	// p_subdivision tiles (AREA_SHADOW_ATLAS_SUBDIVISION_MIN..MAX, tiles of at least 16 px), one shadow map

@@ -61,7 +61,7 @@ bool DisplayServerGLFW::create_window(const String &p_title, int p_width, int p_
 	ERR_FAIL_COND_V_MSG(!initialized, false, "DisplayServerGLFW: initialize() first.");
 	ERR_FAIL_COND_V_MSG(window, false, "DisplayServerGLFW: the window already exists.");
 	glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-	glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
+	glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
 	window = glfwCreateWindow(p_width, p_height, p_title.c_str(), nullptr, nullptr);
 	if (!window) {
 		*r_error = "glfwCreateWindow failed.";
@@ -70,6 +70,14 @@ bool DisplayServerGLFW::create_window(const String &p_title, int p_width, int p_
 	glfwSetWindowPos(window, 0, 0);
 	glfwFocusWindow(window);
 	return true;
+}
+
+void DisplayServerGLFW::get_framebuffer_size(int &r_width, int &r_height) const {
+	r_width = 0;
+	r_height = 0;
+	if (window) {
+		glfwGetFramebufferSize(window, &r_width, &r_height);
+	}
 }
 
 VkSurfaceKHR DisplayServerGLFW::create_surface(VkInstance p_instance, String *r_error) {
@@ -114,6 +122,10 @@ std::vector<String> DisplayServerGLFW::get_required_instance_extensions() const 
 bool DisplayServerGLFW::create_window(const String &p_title, int p_width, int p_height, String *r_error) {
 	*r_error = "no window support in this build";
 	return false;
+}
+void DisplayServerGLFW::get_framebuffer_size(int &r_width, int &r_height) const {
+	r_width = 0;
+	r_height = 0;
 }
 VkSurfaceKHR DisplayServerGLFW::create_surface(VkInstance p_instance, String *r_error) {
 	*r_error = "no window support in this build";

@@ -37,8 +37,10 @@ public:
 	bool initialize(String *r_error);
 	// VK_KHR_surface and the platform's surface extension.
 	std::vector<String> get_required_instance_extensions() const;
-	// A window of exactly p_width x p_height pixels at the screen's top-left corner.
+	// A resizable window, p_width x p_height pixels at first, at the screen's top-left corner.
 	bool create_window(const String &p_title, int p_width, int p_height, String *r_error);
+	// The window's framebuffer size in pixels now (0 x 0 while minimized).
+	void get_framebuffer_size(int &r_width, int &r_height) const;
 	VkSurfaceKHR create_surface(VkInstance p_instance, String *r_error);
 	GLFWwindow *get_window() const { return window; }
 

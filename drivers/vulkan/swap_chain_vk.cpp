@@ -31,7 +31,7 @@ bool SwapChainVK::create(const RenderingDevice::VulkanHandles &p_handles, VkSurf
 	extent.width = (uint32_t)std::max(1, p_width);
 	extent.height = (uint32_t)std::max(1, p_height);
 
-	// Render pass: the image arrives in TRANSFER_DST (cleared, viewport copied), the UI loads it.
+	// Render pass: the image arrives in TRANSFER_DST (cleared), the UI loads it.
 	VkAttachmentDescription att = {};
 	uint32_t format_count = 0;
 	vkGetPhysicalDeviceSurfaceFormatsKHR(physical_device, surface, &format_count, nullptr);
@@ -210,6 +210,22 @@ void SwapChainVK::_destroy_swapchain() {
 	}
 }
 
+void SwapChainVK::wait_frame() {
+	if (fence_pending) {
+		vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+		vkResetFences(device, 1, &fence);
+		fence_pending = false;
+	}
+}
+
+void SwapChainVK::resize(int p_width, int p_height) {
+	ERR_FAIL_COND_MSG(in_frame, "SwapChainVK::resize: not inside a frame.");
+	wait_frame();
+	_destroy_swapchain();
+	extent.width = (uint32_t)std::max(0, p_width);
+	extent.height = (uint32_t)std::max(0, p_height);
+}
+
 void SwapChainVK::wait_idle() {
 	if (device) {
 		vkDeviceWaitIdle(device);
@@ -221,15 +237,6 @@ void SwapChainVK::destroy() {
 		return;
 	}
 	_destroy_swapchain();
-	if (staging) {
-		vkUnmapMemory(device, staging_memory);
-		vkDestroyBuffer(device, staging, nullptr);
-		vkFreeMemory(device, staging_memory, nullptr);
-		staging = VK_NULL_HANDLE;
-		staging_memory = VK_NULL_HANDLE;
-		staging_map = nullptr;
-		staging_size = 0;
-	}
 	_free_capture();
 	if (fence) {
 		vkDestroyFence(device, fence, nullptr);
@@ -249,24 +256,6 @@ void SwapChainVK::destroy() {
 		surface = VK_NULL_HANDLE;
 	}
 	device = VK_NULL_HANDLE;
-}
-
-bool SwapChainVK::_ensure_staging(VkDeviceSize p_size) {
-	if (staging && staging_size >= p_size) {
-		return true;
-	}
-	if (staging) {
-		vkUnmapMemory(device, staging_memory);
-		vkDestroyBuffer(device, staging, nullptr);
-		vkFreeMemory(device, staging_memory, nullptr);
-		staging = VK_NULL_HANDLE;
-	}
-	if (!_create_host_buffer(p_size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, staging, staging_memory)) {
-		return false;
-	}
-	vkMapMemory(device, staging_memory, 0, VK_WHOLE_SIZE, 0, &staging_map);
-	staging_size = p_size;
-	return true;
 }
 
 void SwapChainVK::_free_capture() {
@@ -317,11 +306,7 @@ bool SwapChainVK::capture_next_frame() {
 
 VkCommandBuffer SwapChainVK::begin_frame(const Color &p_clear) {
 	ERR_FAIL_COND_V_MSG(in_frame, VK_NULL_HANDLE, "SwapChainVK: begin_frame() called twice.");
-	if (fence_pending) {
-		vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
-		vkResetFences(device, 1, &fence);
-		fence_pending = false;
-	}
+	wait_frame();
 	if (!swapchain) {
 		String error;
 		if (!_create_swapchain(&error) || !swapchain) {
@@ -356,48 +341,13 @@ VkCommandBuffer SwapChainVK::begin_frame(const Color &p_clear) {
 	clear.float32[2] = p_clear.b;
 	clear.float32[3] = p_clear.a;
 	vkCmdClearColorImage(command_buffer, images[image_index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &clear, 1, &b.subresourceRange);
-	// The clear and the copies below both write the image: order them.
+	// The clear before anything recorded next that writes the image.
 	VkMemoryBarrier mb = { VK_STRUCTURE_TYPE_MEMORY_BARRIER };
 	mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
 	mb.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
 	vkCmdPipelineBarrier(command_buffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &mb, 0, nullptr, 0, nullptr);
 	in_frame = true;
 	return command_buffer;
-}
-
-void SwapChainVK::copy_rgba8(const uint8_t *p_rgba8, int p_width, int p_height, int p_x, int p_y) {
-	ERR_FAIL_COND_MSG(!in_frame || in_pass, "SwapChainVK::copy_rgba8: only between begin_frame() and begin_render_pass().");
-	ERR_FAIL_NULL_MSG(p_rgba8, "SwapChainVK::copy_rgba8: no pixels.");
-	// Clip to the image.
-	int x0 = std::max(0, p_x), y0 = std::max(0, p_y);
-	int x1 = std::min((int)extent.width, p_x + p_width), y1 = std::min((int)extent.height, p_y + p_height);
-	if (x1 <= x0 || y1 <= y0) {
-		return;
-	}
-	int w = x1 - x0, h = y1 - y0;
-	if (!_ensure_staging(VkDeviceSize(w) * h * 4)) {
-		return;
-	}
-	uint8_t *dst = (uint8_t *)staging_map;
-	for (int y = 0; y < h; y++) {
-		const uint8_t *src = p_rgba8 + (size_t(y0 - p_y + y) * p_width + (x0 - p_x)) * 4;
-		uint8_t *row = dst + size_t(y) * w * 4;
-		if (bgra) {
-			for (int x = 0; x < w; x++) {
-				row[x * 4 + 0] = src[x * 4 + 2];
-				row[x * 4 + 1] = src[x * 4 + 1];
-				row[x * 4 + 2] = src[x * 4 + 0];
-				row[x * 4 + 3] = src[x * 4 + 3];
-			}
-		} else {
-			memcpy(row, src, size_t(w) * 4);
-		}
-	}
-	VkBufferImageCopy region = {};
-	region.imageSubresource = { VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1 };
-	region.imageOffset = { x0, y0, 0 };
-	region.imageExtent = { (uint32_t)w, (uint32_t)h, 1 };
-	vkCmdCopyBufferToImage(command_buffer, staging, images[image_index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 }
 
 void SwapChainVK::begin_render_pass() {

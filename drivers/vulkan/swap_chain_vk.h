@@ -9,14 +9,14 @@
 /*   SwapChainVK sc;                                                      */
 /*   sc.create(rd->get_vulkan_handles(), surface, w, h, &err);           */
 /*   VkCommandBuffer cb = sc.begin_frame(clear_color);  // image cleared  */
-/*   sc.copy_rgba8(pixels, pw, ph, x, y);  // e.g. the 3D viewport       */
+/*   ...barriers for textures the UI samples...                           */
 /*   sc.begin_render_pass();               // LOAD: UI drawn on top       */
 /*   ...record UI draws into cb...                                        */
 /*   sc.end_frame();                       // submit + present            */
 /*                                                                        */
 /* One frame in flight: begin_frame() waits for the previous frame. The   */
-/* image format is 8-bit UNORM (B8G8R8A8 or R8G8B8A8): the UI and the     */
-/* copied pixels are already sRGB-encoded bytes.                          */
+/* image format is 8-bit UNORM (B8G8R8A8 or R8G8B8A8): what is drawn is   */
+/* already sRGB-encoded.                                                  */
 
 #pragma once
 
@@ -53,12 +53,6 @@ class SwapChainVK {
 	VkFence fence = VK_NULL_HANDLE;
 	bool fence_pending = false;
 
-	// Host-visible staging for copy_rgba8().
-	VkBuffer staging = VK_NULL_HANDLE;
-	VkDeviceMemory staging_memory = VK_NULL_HANDLE;
-	void *staging_map = nullptr;
-	VkDeviceSize staging_size = 0;
-
 	// Window capture (capture_next_frame()).
 	bool can_capture = false;
 	bool capture_requested = false;
@@ -73,7 +67,6 @@ class SwapChainVK {
 
 	bool _create_swapchain(String *r_error);
 	void _destroy_swapchain();
-	bool _ensure_staging(VkDeviceSize p_size);
 	bool _create_host_buffer(VkDeviceSize p_size, VkBufferUsageFlags p_usage, VkBuffer &r_buffer, VkDeviceMemory &r_memory);
 	void _free_capture();
 
@@ -92,9 +85,6 @@ public:
 	// Acquires the next image and clears it to p_clear (sRGB bytes, as the UI). Returns the frame's
 	// command buffer, or VK_NULL_HANDLE when nothing can be drawn this frame (error printed).
 	VkCommandBuffer begin_frame(const Color &p_clear);
-	// Copies p_width x p_height RGBA8 pixels (top row first) to (p_x, p_y) of the image, clipped.
-	// Only between begin_frame() and begin_render_pass().
-	void copy_rgba8(const uint8_t *p_rgba8, int p_width, int p_height, int p_x, int p_y);
 	// Starts the render pass (load, not clear) over the whole image.
 	void begin_render_pass();
 	// Ends the pass, submits and presents. False when the image could not be presented.
@@ -105,6 +95,12 @@ public:
 	const std::vector<uint8_t> &get_capture() const { return capture_rgba; }
 	// Waits until the last frame finished (before destroying what it uses).
 	void wait_idle();
+	// Waits for the last submitted frame only (before the RenderingDevice rewrites a texture that
+	// frame samples). begin_frame() then has nothing left to wait for.
+	void wait_frame();
+	// The window was resized: the swapchain is rebuilt at the surface's new size (the next
+	// begin_frame() creates it). Waits for the device first.
+	void resize(int p_width, int p_height);
 
 	SwapChainVK() {}
 	~SwapChainVK() { destroy(); }

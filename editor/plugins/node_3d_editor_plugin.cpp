@@ -15,6 +15,7 @@
 #include "scene/3d/camera_3d.h"
 #include "scene/3d/light_3d.h"
 #include "scene/main/scene_tree.h"
+#include "servers/rendering/rendering_device.h"
 #include "servers/rendering_server.h"
 
 #include <cmath>
@@ -56,6 +57,7 @@ bool Node3DEditorViewport::setup(SceneTree *p_tree, Node *p_scene_root, int p_wi
 
 void Node3DEditorViewport::clear() {
 	cancel_drag();
+	_free_overlay();
 	selected_gizmo.unref();
 	selected = nullptr;
 	if (camera && tree) {
@@ -282,12 +284,9 @@ void Node3DEditorViewport::cancel_drag() {
 	drag_restore = Variant();
 }
 
-void Node3DEditorViewport::_redraw_display() {
-	Image img = rendered;
-	if (img.is_empty()) {
-		img = Image(width, height, Color(0, 0, 0, 1));
-	}
+void Node3DEditorViewport::_draw_gizmos(Image &r_image) {
 	GizmoOverlay overlay;
+	Image &img = r_image;
 	if (overlay.setup(camera, img.get_width(), img.get_height())) {
 		std::function<void(Node *)> visit = [&](Node *p_node) {
 			Node3D *n3d = Object::cast_to<Node3D>(p_node);
@@ -310,9 +309,85 @@ void Node3DEditorViewport::_redraw_display() {
 			visit(scene_root);
 		}
 	}
+}
+
+Tonemap::Settings Node3DEditorViewport::get_tonemap() const {
 	// The scene's Environment tonemap (WorldEnvironment), as Godot's editor viewport shows it.
-	display = Tonemap::apply(img, Environment::get_preview_tonemap(camera ? camera->get_environment() : Ref<Environment>(), tree ? tree->get_world_3d()->get_environment() : Ref<Environment>()));
+	return Environment::get_preview_tonemap(camera ? camera->get_environment() : Ref<Environment>(), tree ? tree->get_world_3d()->get_environment() : Ref<Environment>());
+}
+
+void Node3DEditorViewport::_redraw_display() {
+	if (gpu_display) {
+		// Gizmos only, premultiplied over transparent black: the window composites them over the
+		// scene texture in linear light before the tonemap, as the CPU path below blends them.
+		overlay = Image(width, height, Color(0, 0, 0, 0));
+		_draw_gizmos(overlay);
+		RenderingDevice *rd = RenderingDevice::get_singleton();
+		ERR_FAIL_NULL_MSG(rd, "Node3DEditorViewport: a GPU display needs the RenderingDevice.");
+		const std::vector<float> &floats = overlay.get_data();
+		std::vector<uint8_t> bytes((const uint8_t *)floats.data(), (const uint8_t *)(floats.data() + floats.size()));
+		if (overlay_texture.is_valid() && (int)rd->texture_get_format(overlay_texture).width == width && (int)rd->texture_get_format(overlay_texture).height == height) {
+			rd->texture_update(overlay_texture, 0, bytes);
+		} else {
+			if (overlay_texture.is_valid()) {
+				rd->free(overlay_texture);
+			}
+			RD::TextureFormat tf;
+			tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
+			tf.width = width;
+			tf.height = height;
+			tf.usage_bits = RD::TEXTURE_USAGE_SAMPLING_BIT | RD::TEXTURE_USAGE_CAN_UPDATE_BIT;
+			overlay_texture = rd->texture_create(tf, { bytes });
+			rd->set_resource_name(overlay_texture, "Editor viewport gizmo overlay");
+		}
+		rd->submit_and_sync();
+		display_dirty = false;
+		return;
+	}
+	Image img = rendered;
+	if (img.is_empty()) {
+		img = Image(width, height, Color(0, 0, 0, 1));
+	}
+	_draw_gizmos(img);
+	display = Tonemap::apply(img, get_tonemap());
 	display_dirty = false;
+}
+
+void Node3DEditorViewport::set_size(int p_width, int p_height) {
+	ERR_FAIL_COND_MSG(p_width < 1 || p_height < 1, vformat("Node3DEditorViewport::set_size: bad size %dx%d.", p_width, p_height));
+	if (p_width == width && p_height == height) {
+		return;
+	}
+	width = p_width;
+	height = p_height;
+	if (tree) {
+		tree->set_size(width, height);
+	}
+	rendered = Image();
+	display.clear();
+	render_dirty = true;
+	display_dirty = true;
+}
+
+void Node3DEditorViewport::set_gpu_display(bool p_enabled) {
+	gpu_display = p_enabled;
+	render_dirty = true;
+	display_dirty = true;
+	if (!p_enabled) {
+		_free_overlay();
+	}
+}
+
+void Node3DEditorViewport::_free_overlay() {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (overlay_texture.is_valid() && rd && rd->is_initialized()) {
+		rd->free(overlay_texture);
+	}
+	overlay_texture = RID();
+}
+
+RID Node3DEditorViewport::get_scene_texture() const {
+	return tree && RenderingServer::get_singleton() ? RenderingServer::get_singleton()->viewport_get_texture(tree->get_viewport_rid()) : RID();
 }
 
 bool Node3DEditorViewport::update() {
@@ -326,7 +401,16 @@ bool Node3DEditorViewport::update() {
 		if (render_dirty) {
 			settle_frames = 0; // A change: ADAPTIVE lights get their settling frames again.
 		}
-		rendered = tree->render();
+		if (gpu_display) {
+			// Drawn and waited for, never read back: the window samples the viewport's texture.
+			Node::flush_delete_queue();
+			RenderingServer::get_singleton()->draw();
+			RenderingDevice *rd = RenderingDevice::get_singleton();
+			ERR_FAIL_NULL_V_MSG(rd, false, "Node3DEditorViewport: a GPU display needs the RenderingDevice.");
+			rd->submit_and_sync();
+		} else {
+			rendered = tree->render();
+		}
 		profile = RenderingServer::get_singleton()->get_frame_profile();
 		frames_rendered++;
 		// ADAPTIVE area shadows refine over frames: keep drawing while they are still tested (as a running
@@ -344,6 +428,10 @@ bool Node3DEditorViewport::update() {
 }
 
 bool Node3DEditorViewport::save_screenshot(const String &p_path, String *r_error) const {
+	if (gpu_display) {
+		*r_error = "the viewport is shown from the GPU; write it from the window (it crops its capture)";
+		return false;
+	}
 	if (display.empty()) {
 		*r_error = "the viewport has not been drawn yet";
 		return false;

@@ -22,6 +22,8 @@
 #pragma once
 
 #include "core/io/image.h"
+#include "core/io/tonemap.h"
+#include "core/templates/rid.h"
 #include "core/math/vector2.h"
 #include "core/math/vector3.h"
 #include "core/object/ref_counted.h"
@@ -80,8 +82,11 @@ private:
 	bool press_on_nothing = false;
 	Vector2 press_position;
 
-	Image rendered; // Scene-linear, without gizmos.
-	std::vector<uint8_t> display; // RGBA8 with gizmos.
+	Image rendered; // Scene-linear, without gizmos (CPU display only).
+	std::vector<uint8_t> display; // RGBA8 with gizmos (CPU display only).
+	bool gpu_display = false;
+	Image overlay; // GPU display: the gizmos, premultiplied linear RGBA over transparent black.
+	RID overlay_texture; // GPU display: overlay on the RenderingDevice (RGBA32F).
 	bool render_dirty = true;
 	bool display_dirty = true;
 	std::vector<std::pair<String, double>> profile;
@@ -94,6 +99,8 @@ private:
 	void _update_camera();
 	void _event(const String &p_text);
 	void _redraw_display();
+	void _draw_gizmos(Image &r_image);
+	void _free_overlay();
 
 public:
 	// p_tree must hold p_scene_root under its root. Adds the editor camera to the tree's root and
@@ -103,6 +110,20 @@ public:
 	Camera3D *get_camera() const { return camera; }
 	int get_width() const { return width; }
 	int get_height() const { return height; }
+	// New size in pixels (the window's viewport panel was resized): renders again at that size.
+	void set_size(int p_width, int p_height);
+
+	// GPU display (the editor window): update() renders without reading the frame back and keeps
+	// the gizmos in an overlay texture; the window samples get_scene_texture() (scene-linear
+	// RGBA16F, the RenderingServer viewport's own texture), composites get_overlay_texture() over
+	// it in linear light and applies get_tonemap(), which is what the CPU display computes
+	// (Tonemap::apply of the scene with the gizmos blended in). Both RIDs change with the size.
+	// Off by default (headless: get_rgba8()).
+	void set_gpu_display(bool p_enabled);
+	bool is_gpu_display() const { return gpu_display; }
+	RID get_scene_texture() const;
+	RID get_overlay_texture() const { return overlay_texture; }
+	Tonemap::Settings get_tonemap() const;
 
 	// Aims the camera at the scene: from its Camera3D, else at the origin from +Z.
 	void frame_scene();

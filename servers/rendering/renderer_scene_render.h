@@ -89,6 +89,8 @@ public:
 	virtual bool owns_render_target(RID p_rid) const = 0;
 	// Reads back the last rendered image: width * height * 4 floats, linear RGBA, top row first.
 	virtual std::vector<float> render_target_get_data(RID p_render_target) = 0;
+	// The RenderingDevice texture holding the render target's HDR colour (null without one).
+	virtual RID render_target_get_color_texture(RID p_render_target) const { return RID(); }
 	// GPU time per pass of the last rendered frame, as (pass name, milliseconds).
 	virtual std::vector<std::pair<String, double>> get_last_frame_profile() const = 0;
 	// ADAPTIVE area-shadow quads the last render_scene() tested (0: every adaptive light has settled, or none).

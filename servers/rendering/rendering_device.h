@@ -210,6 +210,15 @@ public:
 	bool texture_is_valid(RID p_texture) const;
 	TextureFormat texture_get_format(RID p_texture) const;
 
+	// Native handles for a presenter on this device and queue (the editor window samples the
+	// viewport's texture; Godot: RenderingDevice::get_driver_resource). Images stay in
+	// VK_IMAGE_LAYOUT_GENERAL (see top). 0 with an error for an invalid RID.
+	enum DriverResource {
+		DRIVER_RESOURCE_TEXTURE, // VkImage.
+		DRIVER_RESOURCE_TEXTURE_VIEW, // VkImageView (all layers and mips of the texture).
+	};
+	uint64_t get_driver_resource(DriverResource p_resource, RID p_rid) const;
+
 	/******************/
 	/**** SAMPLERS ****/
 	/******************/

@@ -432,6 +432,12 @@ bool RenderingDevice::texture_is_valid(RID p_texture) const {
 	return impl->texture_owner.owns(p_texture) && impl->texture_owner.get_or_null(p_texture) != nullptr;
 }
 
+uint64_t RenderingDevice::get_driver_resource(DriverResource p_resource, RID p_rid) const {
+	Impl::Texture *t = impl->texture_owner.get_or_null(p_rid);
+	ERR_FAIL_NULL_V_MSG(t, 0, "get_driver_resource: invalid texture RID.");
+	return p_resource == DRIVER_RESOURCE_TEXTURE ? (uint64_t)t->image : (uint64_t)t->view;
+}
+
 RenderingDevice::TextureFormat RenderingDevice::texture_get_format(RID p_texture) const {
 	Impl::Texture *t = impl->texture_owner.get_or_null(p_texture);
 	ERR_FAIL_NULL_V_MSG(t, TextureFormat(), "texture_get_format: invalid texture RID.");

@@ -425,6 +425,12 @@ Image RenderingServerDefault::viewport_get_texture_data(RID p_viewport) const {
 	return image;
 }
 
+RID RenderingServerDefault::viewport_get_texture(RID p_viewport) const {
+	const Viewport *viewport = viewport_owner.get_or_null(p_viewport);
+	ERR_FAIL_NULL_V_MSG(viewport, RID(), "Invalid viewport RID.");
+	return viewport->render_target.is_null() ? RID() : RSG::scene_render->render_target_get_color_texture(viewport->render_target);
+}
+
 void RenderingServerDefault::area_shadow_atlas_set_size(RID p_viewport, int p_size, int p_subdivision) {
 	Viewport *viewport = viewport_owner.get_or_null(p_viewport);
 	ERR_FAIL_NULL_MSG(viewport, "area_shadow_atlas_set_size: invalid viewport RID.");

@@ -132,6 +132,7 @@ public:
 	void viewport_set_scenario(RID p_viewport, RID p_scenario) override;
 	void viewport_set_debug_draw(RID p_viewport, ViewportDebugDraw p_draw) override;
 	Image viewport_get_texture_data(RID p_viewport) const override;
+	RID viewport_get_texture(RID p_viewport) const override;
 	void area_shadow_atlas_set_size(RID p_viewport, int p_size, int p_subdivision) override;
 	int area_shadow_atlas_get_size(RID p_viewport) const override;
 	int area_shadow_atlas_get_subdivision(RID p_viewport) const override;

@@ -471,4 +471,97 @@ TEST_CASE("[EditorInspector] Layer masks: 20-layer grid, unsigned values, one bi
 	delete light;
 }
 
+// A proportional test font: 'i' and 'l' 3 px, ' ' and '.' 4 px, everything else 7 px.
+static float _test_width(const String &p_text) {
+	float w = 0;
+	for (char c : p_text) {
+		w += (c == 'i' || c == 'l') ? 3.0f : ((c == ' ' || c == '.') ? 4.0f : 7.0f);
+	}
+	return w;
+}
+
+TEST_CASE("[EditorInspector] Labels and values that overflow their field get an ellipsis") {
+	// Fits: unchanged.
+	CHECK(EditorInspector::fit_text("Size", 28, _test_width) == "Size");
+	CHECK(EditorInspector::fit_text("", 0, _test_width) == "");
+	// A long property label in a narrow column: the longest prefix that fits, then "...".
+	const String label = EditorInspector::make_label("area_stochastic_samples", "area_"); // "Stochastic Samples"
+	CHECK(label == "Stochastic Samples");
+	for (float width : { 20.0f, 40.0f, 60.0f, 80.0f, 100.0f }) {
+		CAPTURE(width);
+		String fitted = EditorInspector::fit_text(label, width, _test_width);
+		CHECK(_test_width(fitted) <= width);
+		CHECK(string_ends_with(fitted, "..."));
+		const String prefix = fitted.substr(0, fitted.size() - 3);
+		CHECK(string_begins_with(label, prefix));
+		CHECK((prefix.empty() || prefix.back() != ' ')); // No "Stochastic ..." with a dangling space.
+		// Longest: one more character of the label would not fit.
+		size_t next = prefix.size() + 1;
+		while (next < label.size() && label[next - 1] == ' ') {
+			next++; // A cut after a space is the same cut.
+		}
+		if (next <= label.size()) {
+			CHECK(_test_width(string_strip_edges(label.substr(0, next)) + "...") > width);
+		}
+	}
+	CHECK(EditorInspector::fit_text(label, 60, _test_width) == "Stocha...");
+	// Not even the ellipsis fits: nothing rather than an overflow.
+	CHECK(EditorInspector::fit_text(label, 11, _test_width) == "");
+	// A long enum value (a combo preview) is cut the same way; UTF-8 is never split.
+	CHECK(EditorInspector::fit_text("PCSS Baseline", 50, _test_width) == "PCSS...");
+	// "Lumi" + the first byte of the two-byte 'e grave' + "..." would fit 45 px: cut before it.
+	CHECK(EditorInspector::fit_text("Lumi\xc3\xa8re Diffuse", 45, _test_width) == "Lumi...");
+	CHECK(EditorInspector::fit_text("Lumi\xc3\xa8re Diffuse", 50, _test_width) == "Lumi\xc3\xa8...");
+}
+
+TEST_CASE("[EditorInspector] The label column is sized to the labels, within limits") {
+	// Short labels: just wide enough (widest + padding), never under the minimum.
+	CHECK(EditorInspector::get_label_column_width({ 30, 50, 42 }, 400, 8, 60, 0.45f) == doctest::Approx(60));
+	CHECK(EditorInspector::get_label_column_width({ 30, 90, 42 }, 400, 8, 60, 0.45f) == doctest::Approx(98));
+	// A long label: capped at 45 % of the panel (that label is then fitted with an ellipsis).
+	CHECK(EditorInspector::get_label_column_width({ 30, 300 }, 400, 8, 60, 0.45f) == doctest::Approx(180));
+	// A very narrow panel keeps the minimum.
+	CHECK(EditorInspector::get_label_column_width({ 300 }, 100, 8, 60, 0.45f) == doctest::Approx(60));
+	// The real rows of an area light: every label fits or is fitted into the column.
+	SceneTest::DummyServer server;
+	AreaLight3D light;
+	EditorInspector inspector;
+	inspector.edit(&light);
+	std::vector<float> widths;
+	for (int i = 0; i < inspector.get_row_count(); i++) {
+		widths.push_back(_test_width(inspector.get_row(i).label));
+	}
+	const float column = EditorInspector::get_label_column_width(widths, 200, 8, 60, 0.45f);
+	CHECK(column <= 90.0f);
+	int cut = 0;
+	for (int i = 0; i < inspector.get_row_count(); i++) {
+		String fitted = EditorInspector::fit_text(inspector.get_row(i).label, column - 8, _test_width);
+		CHECK(_test_width(fitted) <= column - 8);
+		cut += fitted != inspector.get_row(i).label;
+	}
+	CHECK(cut > 0); // "Volumetric Fog Energy" and friends do not fit 82 px of this font.
+	inspector.edit(nullptr);
+}
+
+TEST_CASE("[EditorInspector] The layer grid shrinks to its field, in two or four rows") {
+	int rows = 0;
+	// Wide field: two rows of 10, cells at their maximum.
+	CHECK(EditorInspector::get_layer_cell_size(20, 400, 2, 18, 12, rows) == doctest::Approx(18));
+	CHECK(rows == 2);
+	// Narrower: still two rows, cells shrink so 10 cells + 9 gaps fill the width exactly.
+	float cell = EditorInspector::get_layer_cell_size(20, 150, 2, 18, 12, rows);
+	CHECK(rows == 2);
+	CHECK(cell * 10 + 2 * 9 == doctest::Approx(150));
+	// Too narrow for two rows: four rows of 5.
+	cell = EditorInspector::get_layer_cell_size(20, 100, 2, 18, 12, rows);
+	CHECK(rows == 4);
+	CHECK(cell * 5 + 2 * 4 <= 100.0f + 1e-4f);
+	CHECK(cell >= 12);
+	// Bad input is refused with an error.
+	ErrorCatcher errors;
+	CHECK(EditorInspector::get_layer_cell_size(7, 100, 2, 18, 12, rows) == 0);
+	CHECK(rows == 0);
+	CHECK(errors.contains("multiple of 4"));
+}
+
 } // namespace TestEditorInspector

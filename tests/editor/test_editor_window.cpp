@@ -20,6 +20,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -425,6 +426,243 @@ TEST_CASE("[Editor][Window] under Xvfb: select the area light, drag its width ha
 		_check_same_object(a, b, ".", "TVPanel", "area_size", Variant(dragged_size));
 		delete a;
 		delete b;
+	}
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[Editor] The window layout: docks keep their sizes, the viewport takes the rest") {
+	EditorNode::Layout l = EditorNode::compute_layout(EditorNode::WINDOW_WIDTH, EditorNode::WINDOW_HEIGHT);
+	CHECK(l.viewport.x == 240);
+	CHECK(l.viewport.y == 0);
+	CHECK(l.viewport.width == EditorNode::VIEWPORT_WIDTH);
+	CHECK(l.viewport.height == EditorNode::VIEWPORT_HEIGHT);
+	CHECK(EditorNode::VIEWPORT_WIDTH == 480);
+	CHECK(EditorNode::VIEWPORT_HEIGHT == 360);
+	for (const Vector2 &size : { Vector2(1040, 600), Vector2(1200, 720), Vector2(1920, 1080), Vector2(500, 300), Vector2(100, 80) }) {
+		CAPTURE(size);
+		const int w = (int)size.x, h = (int)size.y;
+		l = EditorNode::compute_layout(w, h);
+		// Nothing overlaps and the panels cover the window.
+		const EditorNode::Rect rects[5] = { l.scene, l.viewport, l.output, l.inspector, l.status };
+		long area = 0;
+		for (const EditorNode::Rect &r : rects) {
+			CHECK(r.x >= 0);
+			CHECK(r.y >= 0);
+			CHECK(r.x + r.width <= w);
+			CHECK(r.y + r.height <= h);
+			area += long(r.width) * r.height;
+		}
+		CHECK(area == long(w) * h);
+		CHECK(l.scene.x + l.scene.width == l.viewport.x);
+		CHECK(l.viewport.x + l.viewport.width == l.inspector.x);
+		CHECK(l.viewport.y + l.viewport.height == l.output.y);
+		CHECK(l.output.width == l.viewport.width);
+		if (w >= EditorNode::SCENE_PANEL_WIDTH + EditorNode::INSPECTOR_WIDTH + EditorNode::VIEWPORT_MIN_SIZE && h >= EditorNode::OUTPUT_HEIGHT + EditorNode::STATUS_HEIGHT + EditorNode::VIEWPORT_MIN_SIZE) {
+			// Docks at their sizes; the viewport grows with the window.
+			CHECK(l.scene.width == EditorNode::SCENE_PANEL_WIDTH);
+			CHECK(l.inspector.width == EditorNode::INSPECTOR_WIDTH);
+			CHECK(l.output.height == EditorNode::OUTPUT_HEIGHT);
+			CHECK(l.viewport.width == w - EditorNode::SCENE_PANEL_WIDTH - EditorNode::INSPECTOR_WIDTH);
+			CHECK(l.viewport.height == h - EditorNode::STATUS_HEIGHT - EditorNode::OUTPUT_HEIGHT);
+		} else {
+			// Too small for the docks: they give way so the viewport keeps its minimum.
+			CHECK(l.viewport.width >= std::min(w, (int)EditorNode::VIEWPORT_MIN_SIZE));
+			CHECK(l.viewport.height >= std::min(h - l.status.height, (int)EditorNode::VIEWPORT_MIN_SIZE));
+		}
+	}
+}
+
+TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows), toggle a layer bit, save") {
+	if (!_has_program("Xvfb") || !_has_program("xdotool")) {
+		MESSAGE("SKIPPED: the editor window test needs Xvfb and xdotool (Debian: xvfb, xdotool; misc/scripts/install_deps.sh)");
+		return;
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	EditorProcess p;
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_resize_" + std::to_string(getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	p.dir = dir.string();
+	p.log = (dir / "events.log").string();
+	p.output = (dir / "output.txt").string();
+	const String scene = (dir / "scene.tscn").string();
+	const String original = String(GODOT_AREA_ROOT) + "/demo/demo.tscn";
+	std::filesystem::copy_file(original, scene);
+	int display = 90 + int((getpid() + 13) % 400);
+	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
+		display++;
+	}
+	p.display = ":" + std::to_string(display);
+	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
+	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
+	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	const String shot = (dir / "shot").string();
+	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--select", "TVPanel", "--test-log", p.log, "--screenshot", shot },
+			{ "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
+	REQUIRE(p.editor > 0);
+	const int ready = p.wait_line("ready");
+	REQUIRE_MESSAGE(ready >= 0, "the editor did not start; its output:\n" << _read_file(p.output) << "\nlog:\n" << _read_file(p.log));
+	CHECK(p.line(ready) == "ready viewport 240 0 480 360 window 1040 600");
+
+	// Resize the window as a window manager would; the viewport takes the new room.
+	size_t mark = p.line_count();
+	const int new_w = 1200, new_h = 720;
+	REQUIRE(p.xdotool(vformat("search --name \"godot-area editor\" windowsize %%1 %d %d", new_w, new_h)));
+	const int resized = p.wait_line("resize window", mark);
+	REQUIRE_MESSAGE(resized >= 0, _read_file(p.log) << "\n" << _read_file(p.output));
+	const EditorNode::Layout layout = EditorNode::compute_layout(new_w, new_h);
+	const EditorNode::Rect &v = layout.viewport;
+	CHECK(p.line(resized) == vformat("resize window %d %d viewport %d %d %d %d", new_w, new_h, v.x, v.y, v.width, v.height));
+	CHECK(v.width == 640);
+	CHECK(v.height == 480);
+	// The light's handles are reported again, inside the larger viewport.
+	Vector2 handle;
+	bool have_handle = false;
+	for (size_t i = resized; i < p.line_count(); i++) {
+		have_handle = _parse_handle(p.line(i), 0, handle) || have_handle;
+	}
+	REQUIRE(have_handle);
+	CHECK(handle.x > v.x);
+	CHECK(handle.x < v.x + v.width);
+	CHECK(handle.y < v.y + v.height);
+
+	// The viewport screenshot (cropped from the presented window) has the new size and shows the
+	// scene with the selected light's outline at the reported handle's column.
+	mark = p.line_count();
+	REQUIRE(p.xdotool("mousemove 5 700")); // Over the Scene dock, so nothing hovers the viewport.
+	REQUIRE(p.xdotool("key F12"));
+	REQUIRE_MESSAGE(p.wait_line("screenshot " + shot + "_0.png", mark) >= 0, _read_file(p.log));
+	std::vector<uint8_t> pixels;
+	int sw = 0, sh = 0;
+	String error;
+	REQUIRE_MESSAGE(PNGReader::load(shot + "_0.png", pixels, sw, sh, &error), error);
+	CHECK(sw == v.width);
+	CHECK(sh == v.height);
+	const int hx = (int)std::lround(handle.x) - v.x, hy = (int)std::lround(handle.y) - v.y;
+	CHECK_MESSAGE(_outline_column_near(pixels, sw, sh, hx, hy + 5, hy + 10, 3) >= 0, "no outline edge at x=" << hx << " in the resized viewport");
+
+	// Toggle layer 2 of TVPanel's Layers in the inspector's layer grid.
+	int cell = -1;
+	float cx = 0, cy = 0;
+	for (int tries = 0; tries < 3000 && cell < 0; tries++) {
+		for (size_t i = resized; i < p.line_count(); i++) {
+			if (sscanf(p.line(i).c_str(), "layer_cell TVPanel layers 1 %f %f", &cx, &cy) == 2) {
+				cell = (int)i;
+			}
+		}
+		if (cell < 0) {
+			std::this_thread::sleep_for(std::chrono::milliseconds(100));
+		}
+	}
+	REQUIRE_MESSAGE(cell >= 0, _read_file(p.log));
+	CHECK(cx > layout.inspector.x);
+	CHECK(cx < layout.inspector.x + layout.inspector.width);
+	mark = p.line_count();
+	REQUIRE(p.xdotool(vformat("mousemove %d %d click 1", (int)std::lround(cx), (int)std::lround(cy))));
+	const int edited = p.wait_line("edit TVPanel layers", mark);
+	REQUIRE_MESSAGE(edited >= 0, _read_file(p.log));
+	CHECK(p.line(edited) == "edit TVPanel layers 3");
+	mark = p.line_count();
+	REQUIRE(p.xdotool("key ctrl+s"));
+	REQUIRE_MESSAGE(p.wait_line("save ok", mark) >= 0, _read_file(p.log));
+	REQUIRE(p.xdotool("key ctrl+q"));
+	const int exit_line = p.wait_line("exit ", mark);
+	REQUIRE(exit_line >= 0);
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+	for (int i = 0; i < 600 && p.alive(); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(100));
+	}
+	CHECK(p.exit_code == 0);
+	// Only the toggled bit changed in the saved file.
+	{
+		SceneTest::DummyServer server;
+		Node *a = ResourceFormatText::load_scene(original, &error);
+		REQUIRE_MESSAGE(a, error);
+		Node *b = ResourceFormatText::load_scene(scene, &error);
+		REQUIRE_MESSAGE(b, error);
+		_check_same_object(a, b, ".", "TVPanel", "layers", Variant((int64_t)3));
+		delete a;
+		delete b;
+	}
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[Editor][Window] under Xvfb: the GPU-sampled viewport shows what `render --png --gizmos` writes") {
+	if (!_has_program("Xvfb") || !_has_program("xdotool")) {
+		MESSAGE("SKIPPED: the editor window test needs Xvfb and xdotool (Debian: xvfb, xdotool; misc/scripts/install_deps.sh)");
+		return;
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	EditorProcess p;
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_gpu_" + std::to_string(getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	p.dir = dir.string();
+	p.log = (dir / "events.log").string();
+	p.output = (dir / "output.txt").string();
+	const String scene = String(GODOT_AREA_ROOT) + "/demo/demo.tscn"; // Only read: nothing is saved.
+	int display = 90 + int((getpid() + 19) % 400);
+	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
+		display++;
+	}
+	p.display = ":" + std::to_string(display);
+	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
+	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
+	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	// Nothing selected: every gizmo is drawn unselected, as `render --gizmos` draws them.
+	const String shot = (dir / "shot").string();
+	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--test-log", p.log, "--screenshot", shot }, { "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
+	REQUIRE(p.editor > 0);
+	REQUIRE_MESSAGE(p.wait_line("ready viewport 240 0 480 360") >= 0, _read_file(p.output) << "\n" << _read_file(p.log));
+	size_t mark = p.line_count();
+	REQUIRE(p.xdotool("mousemove 5 590 key F12"));
+	REQUIRE_MESSAGE(p.wait_line("screenshot " + shot + "_0.png", mark) >= 0, _read_file(p.log));
+	REQUIRE(p.xdotool("key ctrl+q"));
+	const int exit_line = p.wait_line("exit ", mark);
+	REQUIRE(exit_line >= 0);
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+
+	// The same frame through the CPU path: readback, CPU gizmos, Tonemap::apply.
+	const String cpu_png = (dir / "cpu.png").string();
+	const String cmd = vformat("'%s' render '%s' -o '%s' --png '%s' --width 480 --height 360 --gizmos >> '%s' 2>&1", GODOT_AREA_CLI_PATH, scene.c_str(), (dir / "cpu.exr").string().c_str(), cpu_png.c_str(), p.output.c_str());
+	REQUIRE_MESSAGE(std::system(cmd.c_str()) == 0, _read_file(p.output));
+	std::vector<uint8_t> gpu, cpu;
+	int gw = 0, gh = 0, cw = 0, ch = 0;
+	String error;
+	REQUIRE_MESSAGE(PNGReader::load(shot + "_0.png", gpu, gw, gh, &error), error);
+	REQUIRE_MESSAGE(PNGReader::load(cpu_png, cpu, cw, ch, &error), error);
+	REQUIRE(gw == 480);
+	REQUIRE(gh == 360);
+	REQUIRE(cw == gw);
+	REQUIRE(ch == gh);
+	// Outside the panel's caption ("Perspective", top left), every pixel within 2/255 (float vs
+	// double tonemap, the GPU's rounding); at most 0.5 % of them differ at all.
+	int max_diff = 0, differing = 0, compared = 0;
+	for (int y = 0; y < gh; y++) {
+		for (int x = 0; x < gw; x++) {
+			if (y < 20 && x < 300) {
+				continue;
+			}
+			compared++;
+			int d = 0;
+			for (int c = 0; c < 3; c++) {
+				d = std::max(d, std::abs(int(gpu[(size_t(y) * gw + x) * 4 + c]) - int(cpu[(size_t(y) * cw + x) * 4 + c])));
+			}
+			max_diff = std::max(max_diff, d);
+			differing += d > 0 ? 1 : 0;
+		}
+	}
+	CHECK_MESSAGE(max_diff <= 2, "largest difference " << max_diff << "/255");
+	CHECK_MESSAGE(differing <= compared / 200, differing << " of " << compared << " pixels differ");
+	MESSAGE("GPU viewport vs render --png: max " << max_diff << "/255, " << differing << " of " << compared << " pixels differ");
+	for (int i = 0; i < 600 && p.alive(); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(100));
 	}
 	std::filesystem::remove_all(dir);
 }

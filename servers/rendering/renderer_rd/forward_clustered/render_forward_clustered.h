@@ -263,7 +263,7 @@ public:
 	// The cluster builder of the last frame (tests read its buffer and counts).
 	ClusterBuilderRD *get_cluster_builder() { return &cluster_builder; }
 	// The RD texture of a render target's HDR colour (RID() if invalid).
-	RID render_target_get_color_texture(RID p_render_target) const;
+	RID render_target_get_color_texture(RID p_render_target) const override;
 
 	RenderForwardClustered(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage);
 	~RenderForwardClustered();
