@@ -87,6 +87,124 @@ void Environment::set_ambient_light_sky_contribution(float p_contribution) {
 	emit_changed();
 }
 
+bool Environment::_check_ss_value(const char *p_property, float p_value, float p_min, float p_max) {
+	ERR_FAIL_COND_V_MSG(!Math::is_finite(p_value) || p_value < p_min || p_value > p_max, false,
+			vformat("%s must be finite and in %s..%s (got %s); the old value is kept.", p_property, rtos(p_min).c_str(), rtos(p_max).c_str(), rtos(p_value).c_str()));
+	return true;
+}
+
+void Environment::_update_ssao() {
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_ssao(environment, ssao_enabled, ssao_radius, ssao_intensity, ssao_power, ssao_detail, ssao_horizon, ssao_sharpness, ssao_direct_light_affect, ssao_ao_channel_affect);
+	}
+	emit_changed();
+}
+
+void Environment::_update_ssil() {
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_ssil(environment, ssil_enabled, ssil_radius, ssil_intensity, ssil_sharpness, ssil_normal_rejection);
+	}
+	emit_changed();
+}
+
+void Environment::set_ssao_enabled(bool p_enabled) {
+	ssao_enabled = p_enabled;
+	notify_property_list_changed();
+	_update_ssao();
+}
+
+void Environment::set_ssil_enabled(bool p_enabled) {
+	ssil_enabled = p_enabled;
+	notify_property_list_changed();
+	_update_ssil();
+}
+
+void Environment::set_ssao_radius(float p_value) {
+	if (_check_ss_value("ssao_radius", p_value, 0.01f, 1e4f)) {
+		ssao_radius = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_intensity(float p_value) {
+	if (_check_ss_value("ssao_intensity", p_value, 0.0f, 1e4f)) {
+		ssao_intensity = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_power(float p_value) {
+	if (_check_ss_value("ssao_power", p_value, 0.01f, 1e4f)) {
+		ssao_power = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_detail(float p_value) {
+	if (_check_ss_value("ssao_detail", p_value, 0.0f, 5.0f)) {
+		ssao_detail = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_horizon(float p_value) {
+	if (_check_ss_value("ssao_horizon", p_value, 0.0f, 1.0f)) {
+		ssao_horizon = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_sharpness(float p_value) {
+	if (_check_ss_value("ssao_sharpness", p_value, 0.0f, 1.0f)) {
+		ssao_sharpness = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_direct_light_affect(float p_value) {
+	if (_check_ss_value("ssao_light_affect", p_value, 0.0f, 1.0f)) {
+		ssao_direct_light_affect = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_ao_channel_affect(float p_value) {
+	if (_check_ss_value("ssao_ao_channel_affect", p_value, 0.0f, 1.0f)) {
+		ssao_ao_channel_affect = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssil_radius(float p_value) {
+	if (_check_ss_value("ssil_radius", p_value, 0.01f, 1e4f)) {
+		ssil_radius = p_value;
+		_update_ssil();
+	}
+}
+
+void Environment::set_ssil_intensity(float p_value) {
+	if (_check_ss_value("ssil_intensity", p_value, 0.0f, 1e4f)) {
+		ssil_intensity = p_value;
+		_update_ssil();
+	}
+}
+
+void Environment::set_ssil_sharpness(float p_value) {
+	if (_check_ss_value("ssil_sharpness", p_value, 0.0f, 1.0f)) {
+		ssil_sharpness = p_value;
+		_update_ssil();
+	}
+}
+
+void Environment::set_ssil_normal_rejection(float p_value) {
+	if (_check_ss_value("ssil_normal_rejection", p_value, 0.0f, 1.0f)) {
+		ssil_normal_rejection = p_value;
+		_update_ssil();
+	}
+}
+
 void Environment::set_tonemapper(ToneMapper p_mode) {
 	ERR_FAIL_INDEX_MSG((int)p_mode, TONE_MAPPER_MAX, vformat("tonemap_mode must be 0..%d (Linear, Reinhard, Filmic, ACES, AgX); got %d. The old value is kept.", TONE_MAPPER_MAX - 1, (int)p_mode));
 	tonemap_mode = p_mode;
@@ -133,6 +251,13 @@ void Environment::_validate_property(PropertyInfo &p_property) const {
 	}
 	if (p_property.name == "tonemap_white" && (tonemap_mode == TONE_MAPPER_LINEAR || tonemap_mode == TONE_MAPPER_AGX)) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR; // As Godot: no white point for these two.
+	}
+	// As Godot: the SSAO/SSIL parameters show only while their effect is enabled (still saved).
+	if (p_property.name != "ssao_enabled" && string_begins_with(p_property.name, "ssao_") && !ssao_enabled) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	if (p_property.name != "ssil_enabled" && string_begins_with(p_property.name, "ssil_") && !ssil_enabled) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
 	if ((p_property.name == "ambient_light_color" || p_property.name == "ambient_light_energy") && ambient_source == AMBIENT_SOURCE_DISABLED) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
@@ -208,6 +333,8 @@ Environment::Environment() {
 	rs->environment_set_bg_color(environment, bg_color);
 	rs->environment_set_bg_energy(environment, bg_energy_multiplier);
 	rs->environment_set_ambient_light(environment, ambient_color, RS::EnvironmentAmbientSource(ambient_source), ambient_energy);
+	rs->environment_set_ssao(environment, ssao_enabled, ssao_radius, ssao_intensity, ssao_power, ssao_detail, ssao_horizon, ssao_sharpness, ssao_direct_light_affect, ssao_ao_channel_affect);
+	rs->environment_set_ssil(environment, ssil_enabled, ssil_radius, ssil_intensity, ssil_sharpness, ssil_normal_rejection);
 }
 
 Environment::~Environment() {
