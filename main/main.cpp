@@ -30,6 +30,7 @@
 #include "modules/benchmark/methods_sweep_command.h"
 #include "modules/benchmark/dolly_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
+#include "modules/benchmark/isr_sweep_command.h"
 #include "modules/benchmark/targets_bench.h"
 #include "modules/register_module_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
@@ -107,7 +108,7 @@ void _print_usage() {
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N] [--verbose]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
-			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
+			"  godot-area bench --sweep methods|shadows|dolly|isr [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
@@ -581,7 +582,10 @@ int _run_command(int p_argc, char **p_argv) {
 			if (what == "dolly") {
 				return dolly_sweep_command(sweep_args);
 			}
-			fprintf(stderr, "godot-area bench: --sweep needs 'methods', 'shadows' or 'dolly', got '%s'\n", what.c_str());
+			if (what == "isr") {
+				return isr_sweep_command(sweep_args);
+			}
+			fprintf(stderr, "godot-area bench: --sweep needs 'methods', 'shadows', 'dolly' or 'isr', got '%s'\n", what.c_str());
 			return 2;
 		}
 	}

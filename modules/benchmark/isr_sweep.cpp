@@ -26,7 +26,7 @@ ReferenceRenderOptions IsrSweep::truth_options(int p_bounce_samples) {
 	ReferenceRenderOptions o;
 	o.bounces = 1;
 	o.bounce_samples = p_bounce_samples;
-	o.bounce_light_samples = 8;
+	o.bounce_light_samples = 4;
 	o.max_samples = 256;
 	o.target_relative_error = 0.01f;
 	o.shadows = false; // As the GPU renderer (no area shadows in these scenes).
