@@ -10,7 +10,7 @@
 /* godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip] */
 /*                   (B is the reference)                                 */
 /* godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H]  */
-/*                   [--spp N] [--error E] [--shadows on|off] [--seed S]  */
+/*                   [--spp N] [--error E] [--shadows on|off] [--bounces 0|1] [--bounce-samples N] [--seed S]  */
 /* godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH]     */
 /* godot-area info                                                        */
 /* godot-area editor [SCENE.tscn] [options]   (editor/editor_node.h)       */
@@ -30,6 +30,7 @@
 #include "modules/benchmark/methods_sweep_command.h"
 #include "modules/benchmark/dolly_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
+#include "modules/benchmark/isr_sweep_command.h"
 #include "modules/benchmark/targets_bench.h"
 #include "modules/register_module_types.h"
 #include "modules/ltc_fit/ltc_fit_command.h"
@@ -107,7 +108,7 @@ void _print_usage() {
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N] [--verbose]\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
-			"  godot-area bench --sweep methods|shadows|dolly [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
+			"  godot-area bench --sweep methods|shadows|dolly|isr [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
 			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
@@ -128,7 +129,7 @@ bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 		{ "render", { "-o", "--width", "--height", "--png", "--exposure", "--settle-frames" } },
 		{ "bench", { "--frames", "--warmup", "--csv", "--width", "--height" } },
 		{ "compare", { "--heatmap" } },
-		{ "reference", { "-o", "--width", "--height", "--spp", "--error", "--shadows", "--seed", "--png", "--exposure" } },
+		{ "reference", { "-o", "--width", "--height", "--spp", "--error", "--shadows", "--seed", "--png", "--exposure", "--bounces", "--bounce-samples" } },
 		{ "info", {} },
 	};
 	static const std::map<String, std::vector<String>> flag_options = {
@@ -337,9 +338,10 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 int _command_reference(const Args &p_args) {
 	ReferenceRenderOptions options;
 	String error;
-	int spp = 0, seed = 0;
+	int spp = 0, seed = 0, bounces = 0, bounce_samples = 0;
 	float target = 0;
 	if (!_get_int(p_args, "--spp", options.max_samples, 1, 1 << 24, spp, &error) || !_get_int(p_args, "--seed", 0, 0, 2147483647, seed, &error) ||
+			!_get_int(p_args, "--bounces", 0, 0, 1, bounces, &error) || !_get_int(p_args, "--bounce-samples", options.bounce_samples, 1, 1 << 16, bounce_samples, &error) ||
 			!_get_float(p_args, "--error", options.target_relative_error, target, &error)) {
 		fprintf(stderr, "godot-area reference: %s\n", error.c_str());
 		return 2;
@@ -354,6 +356,8 @@ int _command_reference(const Args &p_args) {
 		return 2;
 	}
 	options.max_samples = spp;
+	options.bounces = bounces; // 1: one diffuse bounce (the image-space radiosity ground truth).
+	options.bounce_samples = bounce_samples;
 	options.seed = uint64_t(seed);
 	options.target_relative_error = target;
 	options.shadows = shadows_it == p_args.options.end() || shadows_it->second == "on";
@@ -578,7 +582,10 @@ int _run_command(int p_argc, char **p_argv) {
 			if (what == "dolly") {
 				return dolly_sweep_command(sweep_args);
 			}
-			fprintf(stderr, "godot-area bench: --sweep needs 'methods', 'shadows' or 'dolly', got '%s'\n", what.c_str());
+			if (what == "isr") {
+				return isr_sweep_command(sweep_args);
+			}
+			fprintf(stderr, "godot-area bench: --sweep needs 'methods', 'shadows', 'dolly' or 'isr', got '%s'\n", what.c_str());
 			return 2;
 		}
 	}

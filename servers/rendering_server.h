@@ -235,6 +235,26 @@ public:
 		ENV_AMBIENT_SOURCE_SKY,
 	};
 
+	// Godot's SSAO/SSIL quality levels (same order). godot-area computes both in one image-space
+	// radiosity pass (renderer_rd/effects/ss_radiosity_rd.h); the level picks its samples per pixel:
+	// VERY_LOW 12, LOW 24, MEDIUM 48, HIGH 80, ULTRA 128 (the seed evaluated 24, 48 and 80).
+	enum EnvironmentSSAOQuality {
+		ENV_SSAO_QUALITY_VERY_LOW,
+		ENV_SSAO_QUALITY_LOW,
+		ENV_SSAO_QUALITY_MEDIUM,
+		ENV_SSAO_QUALITY_HIGH,
+		ENV_SSAO_QUALITY_ULTRA,
+	};
+	enum EnvironmentSSILQuality {
+		ENV_SSIL_QUALITY_VERY_LOW,
+		ENV_SSIL_QUALITY_LOW,
+		ENV_SSIL_QUALITY_MEDIUM,
+		ENV_SSIL_QUALITY_HIGH,
+		ENV_SSIL_QUALITY_ULTRA,
+	};
+	// Samples per pixel of a quality level (12, 24, 48, 80, 128); 48 for an out-of-range value.
+	static int get_ss_radiosity_sample_count(int p_quality);
+
 	/* VIEWPORT API enums */
 
 	// Godot 4's list, in order. The CLUSTER_* modes draw per-tile element counts.
@@ -418,6 +438,14 @@ public:
 	virtual void environment_set_bg_energy(RID p_env, float p_multiplier) = 0;
 	// Sets the ambient light colour (sRGB), its source and energy.
 	virtual void environment_set_ambient_light(RID p_env, const Color &p_color, EnvironmentAmbientSource p_ambient = ENV_AMBIENT_SOURCE_BG, float p_energy = 1.0f) = 0;
+	// Godot's Environment SSAO and SSIL parameters (meanings and units as Godot's; the mapping onto the
+	// image-space radiosity terms is in doc/isr.md). Disabled by default: a view with neither pays nothing.
+	virtual void environment_set_ssao(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_power, float p_detail, float p_horizon, float p_sharpness, float p_light_affect, float p_ao_channel_affect) = 0;
+	virtual void environment_set_ssil(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_sharpness, float p_normal_rejection) = 0;
+	// Global quality (Godot's rendering/environment/ssao|ssil/* project settings): samples per pixel,
+	// half resolution (default true: a quarter of the pixels) and blur passes (0..4, default 2 as Godot).
+	virtual void environment_set_ssao_quality(EnvironmentSSAOQuality p_quality, bool p_half_size, int p_blur_passes = 2) = 0;
+	virtual void environment_set_ssil_quality(EnvironmentSSILQuality p_quality, bool p_half_size, int p_blur_passes = 2) = 0;
 
 	/* SKY API */
 	// Godot's ProceduralSkyMaterial parameters (colours sRGB as saved, angles in degrees), pushed as a whole.

@@ -52,6 +52,7 @@ struct ReferenceRenderer::Frame {
 	std::atomic<int> next_row{ 0 };
 	std::atomic<int> rows_done{ 0 };
 	std::atomic<uint64_t> shadow_rays{ 0 };
+	std::atomic<uint64_t> bounce_rays{ 0 };
 	std::atomic<uint64_t> area_samples{ 0 };
 	std::atomic<uint64_t> area_integrals{ 0 };
 	std::atomic<uint64_t> area_converged{ 0 };
@@ -499,6 +500,7 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 	last_stats.threads = threads;
 	last_stats.primary_rays = uint64_t(frame.width) * frame.height;
 	last_stats.shadow_rays = frame.shadow_rays.load();
+	last_stats.bounce_rays = frame.bounce_rays.load();
 	last_stats.area_light_samples = frame.area_samples.load();
 	last_stats.area_light_integrals = frame.area_integrals.load();
 	last_stats.area_light_integrals_converged = frame.area_converged.load();
@@ -522,6 +524,7 @@ void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::ve
 			PixelCounters counters;
 			Color c = _shade_pixel(frame, x, y, rng, counters);
 			totals.shadow_rays += counters.shadow_rays;
+			totals.bounce_rays += counters.bounce_rays;
 			totals.area_samples += counters.area_samples;
 			totals.area_integrals += counters.area_integrals;
 			totals.area_converged += counters.area_converged;
@@ -546,6 +549,7 @@ void ReferenceRenderer::_render_rows(const Frame &p_frame, int p_thread, std::ve
 		}
 	}
 	frame.shadow_rays.fetch_add(totals.shadow_rays);
+	frame.bounce_rays.fetch_add(totals.bounce_rays);
 	frame.area_samples.fetch_add(totals.area_samples);
 	frame.area_integrals.fetch_add(totals.area_integrals);
 	frame.area_converged.fetch_add(totals.area_converged);
@@ -666,6 +670,15 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		return p_frame.clear_color;
 	}
 	Vector3 dir = segment / seg_len;
+	bool hit = false;
+	return _shade_ray(p_frame, p_frame.options, origin, dir, seg_len, p_frame.options.bounces, r_rng, r_counters, hit);
+}
+
+Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit) {
+	const Vector3 &origin = p_origin;
+	const Vector3 &dir = p_dir;
+	const float seg_len = p_tfar;
+	r_hit = false;
 	auto background = [&p_frame, &dir]() {
 		if (p_frame.sky_background) {
 			const Vector3 l = p_frame.sky.evaluate(dir);
@@ -696,6 +709,7 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 	if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
 		return background();
 	}
+	r_hit = true;
 
 	// Interpolation with the hit's barycentrics = the rasteriser's perspective-correct interpolation.
 	const Surface &s = p_frame.surfaces[rh.hit.geomID];
@@ -782,14 +796,14 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		if (light.type == RS::LIGHT_AREA) {
 			if ((light.area.cull_mask & s.layer_mask) != 0) {
 				const uint64_t before = r_counters.area_samples;
-				_reference_shade_area_light(p_frame.scene, p_frame.options, light.area, point, r_rng, r_counters.shadow_rays, r_counters.area_samples, r_counters.area_integrals, r_counters.area_converged, r_counters.max_relative_error, area_light);
+				_reference_shade_area_light(p_frame.scene, p_options, light.area, point, r_rng, r_counters.shadow_rays, r_counters.area_samples, r_counters.area_integrals, r_counters.area_converged, r_counters.max_relative_error, area_light);
 				r_counters.pixel_samples += uint32_t(r_counters.area_samples - before);
 			}
 			continue;
 		}
 		if (light.type == RS::LIGHT_DIRECTIONAL) {
 			if ((light.sun.cull_mask & s.layer_mask) != 0) {
-				_reference_shade_sun(p_frame.scene, p_frame.options, light.sun, point, r_rng, r_counters.shadow_rays, diffuse_light, specular_light);
+				_reference_shade_sun(p_frame.scene, p_options, light.sun, point, r_rng, r_counters.shadow_rays, diffuse_light, specular_light);
 			}
 			continue;
 		}
@@ -802,7 +816,7 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		if (!lit) {
 			continue;
 		}
-		if (p_frame.options.shadows && N.dot(L) > 0.0f) {
+		if (p_options.shadows && N.dot(L) > 0.0f) {
 			Vector3 side = ng.dot(L) >= 0.0f ? ng : -ng;
 			Vector3 o = vertex + side * offset;
 			Vector3 to_light = light.data.position - o;
@@ -834,9 +848,47 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		light_compute(N, L, V, radiance, light.data.specular_amount, m.diffuse_mode, roughness, f0, f90, m.specular_enabled, diffuse_light, specular_light);
 	}
 
+	// One diffuse bounce (options.bounces): cosine-distributed rays over the shading normal's hemisphere
+	// (pdf cos / pi), each bringing the direct-lit radiance of the first surface it meets. As in
+	// sun_light.h, light_compute() takes the sample radiance divided by pdf and count, so
+	// Lambert's 1/pi and the cosine cancel against the pdf; only the diffuse lobe receives it.
+	if (p_bounces > 0 && !m.unshaded) {
+		ReferenceRenderOptions bounce_options = p_options;
+		bounce_options.max_samples = std::max(p_options.bounce_light_samples, 1);
+		bounce_options.target_relative_error = 1e9f; // Fixed count: the bounce rays average the noise.
+		bounce_options.sky_samples = std::max(p_options.bounce_light_samples, 1);
+		bounce_options.sun_samples = 1;
+		const int count = std::max(p_options.bounce_samples, 1);
+		Vector3 t, b;
+		const Vector3 axis = std::fabs(N.x) < 0.9f ? Vector3(1, 0, 0) : Vector3(0, 1, 0);
+		t = N.cross(axis).normalized();
+		b = N.cross(t);
+		const Vector3 side = ng.dot(N) >= 0.0f ? ng : -ng;
+		PixelCounters scratch;
+		for (int i = 0; i < count; i++) {
+			const float u1 = r_rng.next_float(), u2 = r_rng.next_float();
+			const float r = std::sqrt(u1), phi = 2.0f * float(Math::PI) * u2;
+			const float z = std::sqrt(std::max(0.0f, 1.0f - u1));
+			const Vector3 wi = (t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + N * z).normalized();
+			if (wi.dot(ng) * side.dot(ng) <= 0.0f) {
+				continue; // Below the geometric surface (a shading normal tilted past it).
+			}
+			bool bounce_hit = false;
+			const Color li = _shade_ray(p_frame, bounce_options, vertex + side * offset, wi, std::numeric_limits<float>::infinity(), p_bounces - 1, r_rng, scratch, bounce_hit);
+			r_counters.bounce_rays++;
+			if (!bounce_hit) {
+				continue;
+			}
+			const Vector3 radiance = Vector3(li.r, li.g, li.b) * (float(Math::PI) / (z * float(count)));
+			Vector3 unused_specular;
+			light_compute(N, wi, V, radiance, 0.0f, m.diffuse_mode, roughness, f0, f90, false, diffuse_light, unused_specular);
+		}
+		r_counters.shadow_rays += scratch.shadow_rays;
+	}
+
 	Vector3 ambient_light = p_frame.ambient_light;
 	if (p_frame.sky_ambient) {
-		ambient_light += _reference_sky_irradiance(p_frame.scene, p_frame.options, p_frame.sky, point, r_rng, r_counters.shadow_rays) * p_frame.ambient_sky_contribution;
+		ambient_light += _reference_sky_irradiance(p_frame.scene, p_options, p_frame.sky, point, r_rng, r_counters.shadow_rays) * p_frame.ambient_sky_contribution;
 	}
 	Vector3 color = m.emission + (ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
 	return Color(color.x, color.y, color.z, alpha);

@@ -56,6 +56,16 @@ struct ReferenceRenderOptions {
 	uint64_t seed = 0;
 	// Print a progress bar on stderr.
 	bool progress = false;
+	// Diffuse bounces of indirect light (0 = direct only; 1 = one bounce, the image-space radiosity
+	// ground truth). Each pixel traces bounce_samples cosine-distributed rays from its surface; the
+	// first surface each hits is shaded with the same direct lighting (lights, BRDF, ambient, emission)
+	// as a primary hit, its area lights with at most bounce_light_samples samples, its sky ambient
+	// with bounce_light_samples directions, and the result reaches the pixel through the diffuse lobe
+	// of the pixel's material (albedo * (1 - metallic) times its diffuse BRDF, no specular).
+	// A ray that hits nothing brings no light (the sky is counted as ambient, not bounced).
+	int bounces = 0;
+	int bounce_samples = 64;
+	int bounce_light_samples = 16;
 };
 
 // Counters of the last render_scene() call.
@@ -68,6 +78,7 @@ struct ReferenceRenderStats {
 	uint64_t area_light_samples = 0; // Directions sampled by all area-light integrals (a MIS pair counts 2).
 	uint64_t area_light_integrals = 0; // Area-light integrals evaluated (pixel x light, zero ones excluded).
 	uint64_t area_light_integrals_converged = 0; // Those that met the error target before the cap.
+	uint64_t bounce_rays = 0; // Indirect rays traced (options.bounces).
 	// Per pixel (row-major, top row first): the largest relative standard error of the pixel's area-light
 	// integrals (0 without any), and the directions they sampled.
 	std::vector<float> pixel_relative_error;
@@ -176,10 +187,14 @@ private:
 		uint64_t area_converged = 0;
 		float max_relative_error = 0.0f; // This pixel only.
 		uint32_t pixel_samples = 0; // This pixel only.
+		uint64_t bounce_rays = 0;
 	};
 
 	static void _render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels);
 	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters);
+	// The radiance along a ray (origin, unit direction, length) with p_bounces diffuse bounces left;
+	// r_hit says whether it met a surface (else the background is returned).
+	static Color _shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit);
 };
 
 // Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres

@@ -87,6 +87,124 @@ void Environment::set_ambient_light_sky_contribution(float p_contribution) {
 	emit_changed();
 }
 
+bool Environment::_check_ss_value(const char *p_property, float p_value, float p_min, float p_max) {
+	ERR_FAIL_COND_V_MSG(!Math::is_finite(p_value) || p_value < p_min || p_value > p_max, false,
+			vformat("%s must be finite and in %s..%s (got %s); the old value is kept.", p_property, rtos(p_min).c_str(), rtos(p_max).c_str(), rtos(p_value).c_str()));
+	return true;
+}
+
+void Environment::_update_ssao() {
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_ssao(environment, ssao_enabled, ssao_radius, ssao_intensity, ssao_power, ssao_detail, ssao_horizon, ssao_sharpness, ssao_direct_light_affect, ssao_ao_channel_affect);
+	}
+	emit_changed();
+}
+
+void Environment::_update_ssil() {
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_ssil(environment, ssil_enabled, ssil_radius, ssil_intensity, ssil_sharpness, ssil_normal_rejection);
+	}
+	emit_changed();
+}
+
+void Environment::set_ssao_enabled(bool p_enabled) {
+	ssao_enabled = p_enabled;
+	notify_property_list_changed();
+	_update_ssao();
+}
+
+void Environment::set_ssil_enabled(bool p_enabled) {
+	ssil_enabled = p_enabled;
+	notify_property_list_changed();
+	_update_ssil();
+}
+
+void Environment::set_ssao_radius(float p_value) {
+	if (_check_ss_value("ssao_radius", p_value, 0.01f, 1e4f)) {
+		ssao_radius = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_intensity(float p_value) {
+	if (_check_ss_value("ssao_intensity", p_value, 0.0f, 1e4f)) {
+		ssao_intensity = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_power(float p_value) {
+	if (_check_ss_value("ssao_power", p_value, 0.01f, 1e4f)) {
+		ssao_power = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_detail(float p_value) {
+	if (_check_ss_value("ssao_detail", p_value, 0.0f, 5.0f)) {
+		ssao_detail = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_horizon(float p_value) {
+	if (_check_ss_value("ssao_horizon", p_value, 0.0f, 1.0f)) {
+		ssao_horizon = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_sharpness(float p_value) {
+	if (_check_ss_value("ssao_sharpness", p_value, 0.0f, 1.0f)) {
+		ssao_sharpness = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_direct_light_affect(float p_value) {
+	if (_check_ss_value("ssao_light_affect", p_value, 0.0f, 1.0f)) {
+		ssao_direct_light_affect = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssao_ao_channel_affect(float p_value) {
+	if (_check_ss_value("ssao_ao_channel_affect", p_value, 0.0f, 1.0f)) {
+		ssao_ao_channel_affect = p_value;
+		_update_ssao();
+	}
+}
+
+void Environment::set_ssil_radius(float p_value) {
+	if (_check_ss_value("ssil_radius", p_value, 0.01f, 1e4f)) {
+		ssil_radius = p_value;
+		_update_ssil();
+	}
+}
+
+void Environment::set_ssil_intensity(float p_value) {
+	if (_check_ss_value("ssil_intensity", p_value, 0.0f, 1e4f)) {
+		ssil_intensity = p_value;
+		_update_ssil();
+	}
+}
+
+void Environment::set_ssil_sharpness(float p_value) {
+	if (_check_ss_value("ssil_sharpness", p_value, 0.0f, 1.0f)) {
+		ssil_sharpness = p_value;
+		_update_ssil();
+	}
+}
+
+void Environment::set_ssil_normal_rejection(float p_value) {
+	if (_check_ss_value("ssil_normal_rejection", p_value, 0.0f, 1.0f)) {
+		ssil_normal_rejection = p_value;
+		_update_ssil();
+	}
+}
+
 void Environment::set_tonemapper(ToneMapper p_mode) {
 	ERR_FAIL_INDEX_MSG((int)p_mode, TONE_MAPPER_MAX, vformat("tonemap_mode must be 0..%d (Linear, Reinhard, Filmic, ACES, AgX); got %d. The old value is kept.", TONE_MAPPER_MAX - 1, (int)p_mode));
 	tonemap_mode = p_mode;
@@ -134,6 +252,13 @@ void Environment::_validate_property(PropertyInfo &p_property) const {
 	if (p_property.name == "tonemap_white" && (tonemap_mode == TONE_MAPPER_LINEAR || tonemap_mode == TONE_MAPPER_AGX)) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR; // As Godot: no white point for these two.
 	}
+	// As Godot: the SSAO/SSIL parameters show only while their effect is enabled (still saved).
+	if (p_property.name != "ssao_enabled" && string_begins_with(p_property.name, "ssao_") && !ssao_enabled) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	if (p_property.name != "ssil_enabled" && string_begins_with(p_property.name, "ssil_") && !ssil_enabled) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
 	if ((p_property.name == "ambient_light_color" || p_property.name == "ambient_light_energy") && ambient_source == AMBIENT_SOURCE_DISABLED) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
@@ -179,6 +304,50 @@ void Environment::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "tonemap_mode", PROPERTY_HINT_ENUM, "Linear,Reinhard,Filmic,ACES,AgX"), "set_tonemapper", "get_tonemapper");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "tonemap_exposure", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_tonemap_exposure", "get_tonemap_exposure");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "tonemap_white", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_tonemap_white", "get_tonemap_white");
+	ClassDB::bind_method(D_METHOD("set_ssao_enabled", "enabled"), &Environment::set_ssao_enabled);
+	ClassDB::bind_method(D_METHOD("is_ssao_enabled"), &Environment::is_ssao_enabled);
+	ClassDB::bind_method(D_METHOD("set_ssao_radius", "amount"), &Environment::set_ssao_radius);
+	ClassDB::bind_method(D_METHOD("get_ssao_radius"), &Environment::get_ssao_radius);
+	ClassDB::bind_method(D_METHOD("set_ssao_intensity", "amount"), &Environment::set_ssao_intensity);
+	ClassDB::bind_method(D_METHOD("get_ssao_intensity"), &Environment::get_ssao_intensity);
+	ClassDB::bind_method(D_METHOD("set_ssao_power", "amount"), &Environment::set_ssao_power);
+	ClassDB::bind_method(D_METHOD("get_ssao_power"), &Environment::get_ssao_power);
+	ClassDB::bind_method(D_METHOD("set_ssao_detail", "amount"), &Environment::set_ssao_detail);
+	ClassDB::bind_method(D_METHOD("get_ssao_detail"), &Environment::get_ssao_detail);
+	ClassDB::bind_method(D_METHOD("set_ssao_horizon", "amount"), &Environment::set_ssao_horizon);
+	ClassDB::bind_method(D_METHOD("get_ssao_horizon"), &Environment::get_ssao_horizon);
+	ClassDB::bind_method(D_METHOD("set_ssao_sharpness", "amount"), &Environment::set_ssao_sharpness);
+	ClassDB::bind_method(D_METHOD("get_ssao_sharpness"), &Environment::get_ssao_sharpness);
+	ClassDB::bind_method(D_METHOD("set_ssao_direct_light_affect", "amount"), &Environment::set_ssao_direct_light_affect);
+	ClassDB::bind_method(D_METHOD("get_ssao_direct_light_affect"), &Environment::get_ssao_direct_light_affect);
+	ClassDB::bind_method(D_METHOD("set_ssao_ao_channel_affect", "amount"), &Environment::set_ssao_ao_channel_affect);
+	ClassDB::bind_method(D_METHOD("get_ssao_ao_channel_affect"), &Environment::get_ssao_ao_channel_affect);
+	ClassDB::bind_method(D_METHOD("set_ssil_enabled", "enabled"), &Environment::set_ssil_enabled);
+	ClassDB::bind_method(D_METHOD("is_ssil_enabled"), &Environment::is_ssil_enabled);
+	ClassDB::bind_method(D_METHOD("set_ssil_radius", "amount"), &Environment::set_ssil_radius);
+	ClassDB::bind_method(D_METHOD("get_ssil_radius"), &Environment::get_ssil_radius);
+	ClassDB::bind_method(D_METHOD("set_ssil_intensity", "amount"), &Environment::set_ssil_intensity);
+	ClassDB::bind_method(D_METHOD("get_ssil_intensity"), &Environment::get_ssil_intensity);
+	ClassDB::bind_method(D_METHOD("set_ssil_sharpness", "amount"), &Environment::set_ssil_sharpness);
+	ClassDB::bind_method(D_METHOD("get_ssil_sharpness"), &Environment::get_ssil_sharpness);
+	ClassDB::bind_method(D_METHOD("set_ssil_normal_rejection", "amount"), &Environment::set_ssil_normal_rejection);
+	ClassDB::bind_method(D_METHOD("get_ssil_normal_rejection"), &Environment::get_ssil_normal_rejection);
+	ADD_GROUP("SSAO", "ssao_");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "ssao_enabled"), "set_ssao_enabled", "is_ssao_enabled");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_radius", PROPERTY_HINT_RANGE, "0.01,16,0.01,or_greater,suffix:m"), "set_ssao_radius", "get_ssao_radius");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_intensity", PROPERTY_HINT_RANGE, "0,16,0.01,or_greater"), "set_ssao_intensity", "get_ssao_intensity");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_power", PROPERTY_HINT_RANGE, "0.01,16,0.01,or_greater"), "set_ssao_power", "get_ssao_power");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_detail", PROPERTY_HINT_RANGE, "0,5,0.01"), "set_ssao_detail", "get_ssao_detail");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_horizon", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_ssao_horizon", "get_ssao_horizon");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_sharpness", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_ssao_sharpness", "get_ssao_sharpness");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_light_affect", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_ssao_direct_light_affect", "get_ssao_direct_light_affect");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssao_ao_channel_affect", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_ssao_ao_channel_affect", "get_ssao_ao_channel_affect");
+	ADD_GROUP("SSIL", "ssil_");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "ssil_enabled"), "set_ssil_enabled", "is_ssil_enabled");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssil_radius", PROPERTY_HINT_RANGE, "0.01,16,0.01,or_greater,suffix:m"), "set_ssil_radius", "get_ssil_radius");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssil_intensity", PROPERTY_HINT_RANGE, "0,16,0.01,or_greater"), "set_ssil_intensity", "get_ssil_intensity");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssil_sharpness", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_ssil_sharpness", "get_ssil_sharpness");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ssil_normal_rejection", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_ssil_normal_rejection", "get_ssil_normal_rejection");
 	ADD_GROUP("", "");
 
 	BIND_ENUM_CONSTANT(BG_CLEAR_COLOR);
@@ -208,6 +377,8 @@ Environment::Environment() {
 	rs->environment_set_bg_color(environment, bg_color);
 	rs->environment_set_bg_energy(environment, bg_energy_multiplier);
 	rs->environment_set_ambient_light(environment, ambient_color, RS::EnvironmentAmbientSource(ambient_source), ambient_energy);
+	rs->environment_set_ssao(environment, ssao_enabled, ssao_radius, ssao_intensity, ssao_power, ssao_detail, ssao_horizon, ssao_sharpness, ssao_direct_light_affect, ssao_ao_channel_affect);
+	rs->environment_set_ssil(environment, ssil_enabled, ssil_radius, ssil_intensity, ssil_sharpness, ssil_normal_rejection);
 }
 
 Environment::~Environment() {

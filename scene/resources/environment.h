@@ -56,8 +56,27 @@ private:
 	ToneMapper tonemap_mode = TONE_MAPPER_LINEAR;
 	float tonemap_exposure = 1.0f;
 	float tonemap_white = 1.0f;
+	// SSAO / SSIL (Godot 4's names and defaults; both drive the image-space radiosity pass).
+	bool ssao_enabled = false;
+	float ssao_radius = 1.0f;
+	float ssao_intensity = 2.0f;
+	float ssao_power = 1.5f;
+	float ssao_detail = 0.5f;
+	float ssao_horizon = 0.06f;
+	float ssao_sharpness = 0.98f;
+	float ssao_direct_light_affect = 0.0f;
+	float ssao_ao_channel_affect = 0.0f;
+	bool ssil_enabled = false;
+	float ssil_radius = 5.0f;
+	float ssil_intensity = 1.0f;
+	float ssil_sharpness = 0.98f;
+	float ssil_normal_rejection = 1.0f;
 
 	void _update_ambient_light();
+	void _update_ssao();
+	void _update_ssil();
+	// False (with an error naming the property and value) when p_value is not finite or outside p_min..p_max.
+	static bool _check_ss_value(const char *p_property, float p_value, float p_min, float p_max);
 
 protected:
 	static void _bind_methods();
@@ -98,6 +117,38 @@ public:
 	// Finite and > 0 (Reinhard, Filmic and ACES; Linear and AgX ignore it, as Godot).
 	void set_tonemap_white(float p_white);
 	float get_tonemap_white() const { return tonemap_white; }
+	// SSAO (Godot's ssao_* properties; ranges as Godot's sliders, "or_greater" ones bounded at 1e4).
+	void set_ssao_enabled(bool p_enabled);
+	bool is_ssao_enabled() const { return ssao_enabled; }
+	void set_ssao_radius(float p_radius);
+	float get_ssao_radius() const { return ssao_radius; }
+	void set_ssao_intensity(float p_intensity);
+	float get_ssao_intensity() const { return ssao_intensity; }
+	void set_ssao_power(float p_power);
+	float get_ssao_power() const { return ssao_power; }
+	void set_ssao_detail(float p_detail);
+	float get_ssao_detail() const { return ssao_detail; }
+	void set_ssao_horizon(float p_horizon);
+	float get_ssao_horizon() const { return ssao_horizon; }
+	void set_ssao_sharpness(float p_sharpness);
+	float get_ssao_sharpness() const { return ssao_sharpness; }
+	// Saved as "ssao_light_affect" (Godot's property name for this setter pair).
+	void set_ssao_direct_light_affect(float p_amount);
+	float get_ssao_direct_light_affect() const { return ssao_direct_light_affect; }
+	void set_ssao_ao_channel_affect(float p_amount);
+	float get_ssao_ao_channel_affect() const { return ssao_ao_channel_affect; }
+	// SSIL (Godot's ssil_* properties).
+	void set_ssil_enabled(bool p_enabled);
+	bool is_ssil_enabled() const { return ssil_enabled; }
+	void set_ssil_radius(float p_radius);
+	float get_ssil_radius() const { return ssil_radius; }
+	void set_ssil_intensity(float p_intensity);
+	float get_ssil_intensity() const { return ssil_intensity; }
+	void set_ssil_sharpness(float p_sharpness);
+	float get_ssil_sharpness() const { return ssil_sharpness; }
+	void set_ssil_normal_rejection(float p_amount);
+	float get_ssil_normal_rejection() const { return ssil_normal_rejection; }
+
 	// The three values above as core/io/tonemap.h settings.
 	Tonemap::Settings get_tonemap_settings() const;
 	// The tonemap of an 8-bit preview of a view: the camera's environment, else the world's (as the renderer

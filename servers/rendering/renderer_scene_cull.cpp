@@ -316,6 +316,7 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 			break;
 	}
 	r_env.bg_energy = env->bg_energy;
+	r_env.ss_lighting = RSG::environment_storage->get_ss_lighting(env == RSG::environment_storage->environment_get(p_camera_env) ? p_camera_env : p_scenario_env);
 	r_env.ambient_source = env->ambient_source;
 	switch (env->ambient_source) {
 		case RS::ENV_AMBIENT_SOURCE_BG:

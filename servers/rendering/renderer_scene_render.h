@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/math/projection.h"
+#include "servers/rendering/storage/environment_storage.h"
 #include "servers/rendering_server.h"
 
 // One frame of one viewport, after culling. Mesh and light RIDs refer to storage objects that are
@@ -55,6 +56,8 @@ struct RenderSceneData {
 		// Ambient from the sky: ambient = mix(ambient_color * energy, sky irradiance / pi * energy, contribution).
 		bool sky_ambient = false;
 		float ambient_sky_contribution = 1.0f;
+		// SSAO / SSIL (image-space radiosity after the opaque pass); inactive unless enabled.
+		ScreenSpaceLightingSettings ss_lighting;
 	};
 
 	Transform3D cam_transform; // world_from_view (camera-to-world).

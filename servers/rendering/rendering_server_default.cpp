@@ -287,6 +287,22 @@ void RenderingServerDefault::environment_set_ambient_light(RID p_env, const Colo
 	environment_storage->environment_set_ambient_light(p_env, p_color, p_ambient, p_energy);
 }
 
+void RenderingServerDefault::environment_set_ssao(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_power, float p_detail, float p_horizon, float p_sharpness, float p_light_affect, float p_ao_channel_affect) {
+	environment_storage->environment_set_ssao(p_env, p_enable, p_radius, p_intensity, p_power, p_detail, p_horizon, p_sharpness, p_light_affect, p_ao_channel_affect);
+}
+
+void RenderingServerDefault::environment_set_ssil(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_sharpness, float p_normal_rejection) {
+	environment_storage->environment_set_ssil(p_env, p_enable, p_radius, p_intensity, p_sharpness, p_normal_rejection);
+}
+
+void RenderingServerDefault::environment_set_ssao_quality(EnvironmentSSAOQuality p_quality, bool p_half_size, int p_blur_passes) {
+	environment_storage->set_ssao_quality(int(p_quality), p_half_size, p_blur_passes);
+}
+
+void RenderingServerDefault::environment_set_ssil_quality(EnvironmentSSILQuality p_quality, bool p_half_size, int p_blur_passes) {
+	environment_storage->set_ssil_quality(int(p_quality), p_half_size, p_blur_passes);
+}
+
 /* SCENARIO API */
 
 RID RenderingServerDefault::scenario_create() {

@@ -105,6 +105,10 @@ public:
 	void environment_set_bg_color(RID p_env, const Color &p_color) override;
 	void environment_set_bg_energy(RID p_env, float p_multiplier) override;
 	void environment_set_ambient_light(RID p_env, const Color &p_color, EnvironmentAmbientSource p_ambient = ENV_AMBIENT_SOURCE_BG, float p_energy = 1.0f) override;
+	void environment_set_ssao(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_power, float p_detail, float p_horizon, float p_sharpness, float p_light_affect, float p_ao_channel_affect) override;
+	void environment_set_ssil(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_sharpness, float p_normal_rejection) override;
+	void environment_set_ssao_quality(EnvironmentSSAOQuality p_quality, bool p_half_size, int p_blur_passes = 2) override;
+	void environment_set_ssil_quality(EnvironmentSSILQuality p_quality, bool p_half_size, int p_blur_passes = 2) override;
 	RID sky_material_create() override;
 	void sky_material_set_procedural(RID p_material, const ProceduralSkyParams &p_params) override;
 	RID sky_create() override;

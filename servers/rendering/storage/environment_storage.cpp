@@ -52,6 +52,78 @@ void RendererEnvironmentStorage::environment_set_ambient_light(RID p_env, const 
 	env->ambient_energy = p_energy;
 }
 
+/* SSAO / SSIL (image-space radiosity) */
+
+static bool _ss_check(const char *p_name, float p_value, float p_min, float p_max) {
+	ERR_FAIL_COND_V_MSG(!std::isfinite(p_value) || p_value < p_min || p_value > p_max, false,
+			vformat("Environment %s must be finite and in %s..%s, got %s; the SSAO/SSIL settings are unchanged.", p_name, rtos(p_min).c_str(), rtos(p_max).c_str(), rtos(p_value).c_str()));
+	return true;
+}
+
+void RendererEnvironmentStorage::environment_set_ssao(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_power, float p_detail, float p_horizon, float p_sharpness, float p_light_affect, float p_ao_channel_affect) {
+	Environment *env = environment_owner.get_or_null(p_env);
+	ERR_FAIL_NULL_MSG(env, "environment_set_ssao: invalid environment RID.");
+	// Godot's ranges; radius, intensity and power take "or_greater" values, bounded here at 1e4.
+	if (!_ss_check("ssao_radius", p_radius, 0.01f, 1e4f) || !_ss_check("ssao_intensity", p_intensity, 0.0f, 1e4f) || !_ss_check("ssao_power", p_power, 0.01f, 1e4f) ||
+			!_ss_check("ssao_detail", p_detail, 0.0f, 5.0f) || !_ss_check("ssao_horizon", p_horizon, 0.0f, 1.0f) || !_ss_check("ssao_sharpness", p_sharpness, 0.0f, 1.0f) ||
+			!_ss_check("ssao_light_affect", p_light_affect, 0.0f, 1.0f) || !_ss_check("ssao_ao_channel_affect", p_ao_channel_affect, 0.0f, 1.0f)) {
+		return;
+	}
+	ScreenSpaceLightingSettings &s = env->ss_lighting;
+	s.ssao_enabled = p_enable;
+	s.ssao_radius = p_radius;
+	s.ssao_intensity = p_intensity;
+	s.ssao_power = p_power;
+	s.ssao_detail = p_detail;
+	s.ssao_horizon = p_horizon;
+	s.ssao_sharpness = p_sharpness;
+	s.ssao_light_affect = p_light_affect;
+	s.ssao_ao_channel_affect = p_ao_channel_affect;
+}
+
+void RendererEnvironmentStorage::environment_set_ssil(RID p_env, bool p_enable, float p_radius, float p_intensity, float p_sharpness, float p_normal_rejection) {
+	Environment *env = environment_owner.get_or_null(p_env);
+	ERR_FAIL_NULL_MSG(env, "environment_set_ssil: invalid environment RID.");
+	if (!_ss_check("ssil_radius", p_radius, 0.01f, 1e4f) || !_ss_check("ssil_intensity", p_intensity, 0.0f, 1e4f) || !_ss_check("ssil_sharpness", p_sharpness, 0.0f, 1.0f) ||
+			!_ss_check("ssil_normal_rejection", p_normal_rejection, 0.0f, 1.0f)) {
+		return;
+	}
+	ScreenSpaceLightingSettings &s = env->ss_lighting;
+	s.ssil_enabled = p_enable;
+	s.ssil_radius = p_radius;
+	s.ssil_intensity = p_intensity;
+	s.ssil_sharpness = p_sharpness;
+	s.ssil_normal_rejection = p_normal_rejection;
+}
+
+void RendererEnvironmentStorage::set_ssao_quality(int p_quality, bool p_half_size, int p_blur_passes) {
+	ERR_FAIL_INDEX_MSG(p_quality, int(RS::ENV_SSAO_QUALITY_ULTRA) + 1, vformat("environment_set_ssao_quality: quality must be 0..4 (Very Low..Ultra), got %d.", p_quality));
+	ERR_FAIL_COND_MSG(p_blur_passes < 0 || p_blur_passes > 4, vformat("environment_set_ssao_quality: blur passes must be 0..4, got %d.", p_blur_passes));
+	ss_quality.ssao_quality = p_quality;
+	ss_quality.ssao_half_size = p_half_size;
+	ss_quality.ssao_blur_passes = p_blur_passes;
+}
+
+void RendererEnvironmentStorage::set_ssil_quality(int p_quality, bool p_half_size, int p_blur_passes) {
+	ERR_FAIL_INDEX_MSG(p_quality, int(RS::ENV_SSIL_QUALITY_ULTRA) + 1, vformat("environment_set_ssil_quality: quality must be 0..4 (Very Low..Ultra), got %d.", p_quality));
+	ERR_FAIL_COND_MSG(p_blur_passes < 0 || p_blur_passes > 4, vformat("environment_set_ssil_quality: blur passes must be 0..4, got %d.", p_blur_passes));
+	ss_quality.ssil_quality = p_quality;
+	ss_quality.ssil_half_size = p_half_size;
+	ss_quality.ssil_blur_passes = p_blur_passes;
+}
+
+ScreenSpaceLightingSettings RendererEnvironmentStorage::get_ss_lighting(RID p_env) const {
+	const Environment *env = environment_owner.get_or_null(p_env);
+	ScreenSpaceLightingSettings s = env ? env->ss_lighting : ScreenSpaceLightingSettings();
+	s.ssao_quality = ss_quality.ssao_quality;
+	s.ssao_half_size = ss_quality.ssao_half_size;
+	s.ssao_blur_passes = ss_quality.ssao_blur_passes;
+	s.ssil_quality = ss_quality.ssil_quality;
+	s.ssil_half_size = ss_quality.ssil_half_size;
+	s.ssil_blur_passes = ss_quality.ssil_blur_passes;
+	return s;
+}
+
 /* Skies */
 
 void RendererEnvironmentStorage::environment_set_sky(RID p_env, RID p_sky) {

@@ -113,6 +113,7 @@ void RenderForwardClustered::finalize() {
 	compiled_feature_mask = 0;
 	ltc_lut.finalize();
 	sky.finalize();
+	ss_radiosity.finalize();
 	area_shadows.finalize();
 	cluster_builder.finalize();
 	scene_shader.clear();
@@ -165,6 +166,7 @@ bool RenderForwardClustered::render_target_free(RID p_rid) {
 	if (!rt) {
 		return false;
 	}
+	ss_radiosity.release_owner(p_rid); // Its SSIL/SSAO buffers (before the colour they use goes).
 	_free_render_target(rt);
 	render_target_owner.free(p_rid);
 	area_shadows.release_owner(p_rid); // Its area shadow atlas (one per render target, i.e. viewport).
@@ -261,6 +263,9 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 	if (p_key & SCENE_VERSION_SKY_AMBIENT) {
 		defines += "#define USE_SKY_AMBIENT\n";
 	}
+	if (p_key & SCENE_VERSION_SS_RADIOSITY) {
+		defines += "#define USE_SS_RADIOSITY\n";
+	}
 	return defines;
 }
 
@@ -310,7 +315,9 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 		depth.enable_depth_write = false;
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
 	}
-	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(p_variant == SCENE_SHADER_DEPTH ? 0 : 1);
+	// The SSIL/SSAO version writes colour plus the three image-space radiosity inputs.
+	const int color_attachments = p_variant == SCENE_SHADER_DEPTH ? 0 : ((p_area_methods & SCENE_VERSION_SS_RADIOSITY) ? 4 : 1);
+	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(color_attachments);
 	RID shader = p_variant == SCENE_SHADER_DEPTH ? scene_shader.version_get_shader(p_variant) : _get_version_shader(p_area_methods, p_variant);
 	ERR_FAIL_COND_V_MSG(!shader.is_valid(), RID(), "RenderForwardClustered: the scene shader for this pipeline failed to compile: " + scene_shader.get_last_error());
 	RID pipeline = rd->render_pipeline_create(shader, p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
@@ -478,6 +485,15 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	if (sky.has_frame_ambient()) {
 		area_methods |= SCENE_VERSION_SKY_AMBIENT;
 	}
+	// SSIL / SSAO: only when the environment enables one (otherwise no pass, target or shader code).
+	const SSRadiosityRD::FrameSettings ss_frame = SSRadiosityRD::get_frame_settings(env.ss_lighting);
+	ss_radiosity.begin_frame();
+	RID fb_opaque = rt->fb_color;
+	if (ss_frame.is_active()) {
+		fb_opaque = ss_radiosity.prepare(p_render_target, rt->color, rt->depth, rt->width, rt->height, ss_frame);
+		ERR_FAIL_COND_MSG(!fb_opaque.is_valid(), "render_scene: the SSIL/SSAO buffers could not be created.");
+		area_methods |= SCENE_VERSION_SS_RADIOSITY;
+	}
 	// Brute force and the cluster debug view are variants of their own: the production ones carry no code
 	// for them. All colour variants declare the same bindings, so the sets are shared.
 	SceneShaderVariant color_variant = use_area ? SCENE_SHADER_COLOR_AREA : SCENE_SHADER_COLOR;
@@ -590,8 +606,12 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	// 3. Opaque pass.
 	rd->draw_command_begin_label("Render Opaque Pass");
-	RD::FramebufferFormatID color_format = rd->framebuffer_get_format(rt->fb_color);
-	list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, { clear_color }, 1.0f);
+	RD::FramebufferFormatID color_format = rd->framebuffer_get_format(fb_opaque);
+	std::vector<Color> clear_colors = { clear_color };
+	if (ss_frame.is_active()) {
+		clear_colors.resize(4, Color(0, 0, 0, 0)); // Normal, albedo, ambient: zero where no geometry.
+	}
+	list = rd->draw_list_begin(fb_opaque, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, clear_colors, 1.0f);
 	for (const DrawItem &item : items) {
 		rd->draw_list_bind_render_pipeline(list, _get_pipeline(color_variant, item.cull, color_format, area_methods));
 		rd->draw_list_bind_uniform_set(list, color_set, 0);
@@ -609,11 +629,18 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->draw_command_end_label();
 	rd->capture_timestamp(prefix + "opaque");
 
+	// 3b. SSIL / SSAO: image-space radiosity from the opaque pass's targets, composed into the colour.
+	if (ss_frame.is_active()) {
+		rd->draw_command_begin_label("Image-Space Radiosity");
+		ss_radiosity.render(p_render_target, clip_from_view, env.ss_lighting, ss_frame, prefix + "ss_radiosity");
+		rd->draw_command_end_label();
+	}
+
 	// 4. Sky background (only with background_mode SKY): the far-plane pixels no geometry covered.
 	if (sky.has_frame_background()) {
 		rd->draw_command_begin_label("Draw Sky");
 		list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_LOAD, RD::INITIAL_ACTION_LOAD);
-		sky.draw_background(list, color_format);
+		sky.draw_background(list, rd->framebuffer_get_format(rt->fb_color));
 		rd->draw_list_end();
 		rd->draw_command_end_label();
 		rd->capture_timestamp(prefix + "sky");
@@ -626,9 +653,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const int pass_count = 8;
-	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "sky" };
-	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1 };
+	const int pass_count = 9;
+	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);

@@ -10,6 +10,9 @@
 /*   3. opaque pass      (colour variant, depth test LESS_OR_EQUAL        */
 /*      against the pre-pass, no depth write) into an RGBA16F HDR target  */
 /*      cleared to the background colour * energy (linear);              */
+/*   3b. SSIL / SSAO (effects/ss_radiosity_rd.h, image-space radiosity), */
+/*      only when the environment enables one: the opaque pass then also */
+/*      writes normal, albedo and ambient targets (USE_SS_RADIOSITY);    */
 /*   4. sky background (effects/sky_rd.h, only with background_mode Sky). */
 /* then waits for the GPU and keeps the pass timestamps (capture_         */
 /* timestamp) for get_last_frame_profile(): "area_shadows" (the area     */
@@ -17,7 +20,8 @@
 /* no map is redrawn), "depth_prepass", "area_reprojection" and          */
 /* "area_banding" (ADAPTIVE area shadows, only in frames with quad tests, */
 /* recorded after the depth pre-pass whose depth they read),             */
-/* "cluster_build", "opaque", "sky" (only with a sky background) in ms.  */
+/* "cluster_build", "opaque", "ss_radiosity" (only with SSIL/SSAO),      */
+/* "sky" (only with a sky background) in ms.                              */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
 /* (USE_AREA_LIGHTS) only when the view has area lights, from a ShaderRD  */
@@ -46,6 +50,7 @@
 #include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
+#include "servers/rendering/renderer_rd/effects/ss_radiosity_rd.h"
 #include "servers/rendering/renderer_rd/effects/sky_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_scene_render.h"
@@ -145,6 +150,7 @@ private:
 	ClusterBuilderRD cluster_builder;
 	LTCLutRD ltc_lut; // Uploaded on the first frame with area lights.
 	SkyRD sky; // Sky background and SH ambient; nothing exists before the first view with a sky.
+	SSRadiosityRD ss_radiosity; // SSIL/SSAO; nothing exists before the first view that enables one.
 	AreaShadowRendererRD area_shadows; // Area soft shadows: atlas, depth passes, bindings 12-14 of the area variant.
 	RID_Owner<RenderTarget> render_target_owner{ "RenderForwardClustered::RenderTarget" };
 
@@ -245,7 +251,9 @@ public:
 	// area lights uses the default version, which has none of this code.
 	static constexpr uint32_t SCENE_VERSION_DIRECTIONAL = 1u << 10;
 	static constexpr uint32_t SCENE_VERSION_SKY_AMBIENT = 1u << 11; // USE_SKY_AMBIENT: binding 9, the sky's SH.
-	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT;
+	// USE_SS_RADIOSITY: the colour pass also writes the image-space radiosity inputs (locations 1-3).
+	static constexpr uint32_t SCENE_VERSION_SS_RADIOSITY = 1u << 12;
+	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY;
 	// get_area_method_defines() plus the feature defines of p_key.
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
@@ -253,6 +261,8 @@ public:
 
 	// The sky (tests: update count, resources).
 	const SkyRD &get_sky() const { return sky; }
+	// Image-space radiosity (tests: resources, pass count, coarse result).
+	const SSRadiosityRD &get_ss_radiosity() const { return ss_radiosity; }
 
 	// Area soft shadows (atlas, maps, per-frame draws; one atlas per renderer for now).
 	AreaShadowRendererRD &get_area_shadow_renderer() { return area_shadows; }

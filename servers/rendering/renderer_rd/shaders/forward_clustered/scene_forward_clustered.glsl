@@ -18,6 +18,10 @@
 /* view with a DirectionalLight3D: binding 8 and the directional loop,   */
 /* scene_forward_directional_inc.glsl); without it there is no sun code.*/
 /* USE_SKY_AMBIENT adds the sky's irradiance SH (binding 9, SkyRD).       */
+/* USE_SS_RADIOSITY (SSIL/SSAO on, effects/ss_radiosity_rd.h) also writes */
+/* location 1 the view normal, 2 the diffuse albedo albedo * (1 -         */
+/* metallic), 3 the ambient part of the colour (image-space radiosity     */
+/* inputs; zero albedo and ambient for unshaded and debug pixels).        */
 /* Output of the colour pass, per pixel: emission + ambient * albedo *    */
 /* (1 - metallic) + sum over lights of (diffuse * albedo * (1 - metallic) */
 /* + specular); see scene_forward_lights_inc.glsl for light units.        */
@@ -98,6 +102,11 @@ layout(location = 3) in vec3 binormal_interp;
 layout(location = 4) in vec2 uv_interp;
 
 layout(location = 0) out vec4 frag_color;
+#ifdef USE_SS_RADIOSITY
+layout(location = 1) out vec4 ss_normal_out; // View normal (xyz), w = 1.
+layout(location = 2) out vec4 ss_albedo_out; // Diffuse albedo rho (rgb).
+layout(location = 3) out vec4 ss_ambient_out; // Ambient part of frag_color (rgb).
+#endif
 
 vec3 srgb_to_linear(vec3 p_c) {
 	return mix(pow((p_c + vec3(0.055)) * (1.0 / 1.055), vec3(2.4)), p_c * (1.0 / 12.92), lessThan(p_c, vec3(0.04045)));
@@ -107,6 +116,12 @@ vec3 srgb_to_linear(vec3 p_c) {
 
 void main() {
 #ifndef MODE_DEPTH
+#ifdef USE_SS_RADIOSITY
+	// Defaults for the early returns (unshaded, debug): the pixel emits but receives nothing.
+	ss_normal_out = vec4(normalize(normal_interp) * (gl_FrontFacing ? 1.0 : -1.0), 1.0);
+	ss_albedo_out = vec4(0.0);
+	ss_ambient_out = vec4(0.0);
+#endif
 #ifdef MODE_DEBUG_CLUSTER
 	// Only in the debug variants (a software rasterizer runs untaken branches, so the production variants
 	// carry no debug code). The flag stays a run-time test so every variant uses the same bindings.
@@ -323,5 +338,10 @@ void main() {
 #endif
 	vec3 color = material.emission.rgb + (ambient_light + diffuse_light) * albedo * (1.0 - metallic) + specular_light;
 	frag_color = vec4(color, alpha);
+#ifdef USE_SS_RADIOSITY
+	ss_normal_out = vec4(N, 1.0);
+	ss_albedo_out = vec4(albedo * (1.0 - metallic), 1.0);
+	ss_ambient_out = vec4(ambient_light * albedo * (1.0 - metallic), 1.0);
+#endif
 #endif
 }
