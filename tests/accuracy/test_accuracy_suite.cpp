@@ -36,12 +36,25 @@ static double corner_integral(double p_a, double p_b, double p_h) {
 
 TEST_CASE("[Accuracy] the scene generator covers the suite and exposes every scene") {
 	std::vector<AccuracyScenes::Scene> full = AccuracyScenes::full_suite();
-	CHECK(full.size() == 2u * 6u * 2u * 4u * 6u);
+	// Standard camera: 2 receivers x 6 roughness x 2 metallic x 4 sizes x 7 placements; view axis: the plane
+	// x 6 x 2 x 2 sizes x 3 placements x 3 elevations.
+	CHECK(full.size() == 2u * 6u * 2u * 4u * 7u + 6u * 2u * 2u * 3u * 3u);
 	std::set<String> ids;
 	int per_placement[AccuracyScenes::PLACEMENT_MAX] = {};
+	int low_views = 0;
 	for (const AccuracyScenes::Scene &s : full) {
 		ids.insert(s.id);
-		per_placement[s.placement]++;
+		if (s.view_elevation == 0.0f) {
+			per_placement[s.placement]++;
+		} else {
+			low_views++;
+			CHECK(s.view_elevation <= 20.0f);
+			// The camera looks at p from the +Z side at that elevation.
+			const Transform3D cam = AccuracyScenes::camera_transform(s);
+			const float elevation = std::asin(cam.origin.y / cam.origin.length()) * 180.0f / float(Math::PI);
+			CHECK(elevation == doctest::Approx(s.view_elevation).epsilon(1e-4));
+			CHECK(s.id.find("_v") != String::npos);
+		}
 		INFO(s.id);
 		CHECK(std::isfinite(s.light_energy));
 		CHECK(s.light_energy > 0.0f);
@@ -50,12 +63,25 @@ TEST_CASE("[Accuracy] the scene generator covers the suite and exposes every sce
 		CHECK(s.light_range > (s.light_transform.origin - target).length());
 	}
 	CHECK(ids.size() == full.size());
+	CHECK(low_views == 6 * 2 * 2 * 3 * 3);
 	for (int p = 0; p < AccuracyScenes::PLACEMENT_MAX; p++) {
-		CHECK(per_placement[p] == int(full.size()) / AccuracyScenes::PLACEMENT_MAX);
+		CHECK(per_placement[p] == 2 * 6 * 2 * 4);
 	}
 	std::vector<AccuracyScenes::Scene> ci = AccuracyScenes::ci_subset();
-	CHECK(ci.size() <= 24u);
+	CHECK(ci.size() <= 30u);
 	CHECK(ci.size() >= 16u);
+
+	// Vertical (TV / window): upright 1 m behind p, emitting towards the camera (+Z), lower edge 5 cm up.
+	AccuracyScenes::Scene tv = AccuracyScenes::make_scene(AccuracyScenes::RECEIVER_PLANE, 0.5f, 1.0f, Vector2(1, 1), AccuracyScenes::PLACEMENT_VERTICAL, 10.0f);
+	CHECK(tv.id == "plane_r0.5_m1_1x1_vertical_v10");
+	CHECK(tv.light_transform.origin.z == doctest::Approx(-1.0f));
+	CHECK(tv.light_transform.origin.y == doctest::Approx(0.55f));
+	CHECK((-tv.light_transform.basis.get_column(2)).dot(Vector3(0, 0, 1)) == doctest::Approx(1.0f));
+	// A view elevation outside [1, 89] is refused with a message.
+	set_error_print_silenced(true);
+	AccuracyScenes::Scene bad = AccuracyScenes::make_scene(AccuracyScenes::RECEIVER_PLANE, 0.5f, 1.0f, Vector2(1, 1), AccuracyScenes::PLACEMENT_VERTICAL, 95.0f);
+	set_error_print_silenced(false);
+	CHECK(bad.id.empty());
 
 	// Horizon placement: the light's centre lies in the target's tangent plane, so part of it is below.
 	AccuracyScenes::Scene horizon = AccuracyScenes::make_scene(AccuracyScenes::RECEIVER_PLANE, 0.5f, 0.0f, Vector2(1, 1), AccuracyScenes::PLACEMENT_HORIZON);
@@ -90,12 +116,39 @@ TEST_CASE("[Accuracy] write_csv and summary_table report every row") {
 		rows[i].method_name = "LTC";
 		rows[i].flip = flip[i];
 		rows[i].rmse = 0.01 * (i + 1);
+		rows[i].relative_rmse = 0.1 * (i + 1);
+		rows[i].brightness_ratio = 1.0 + 0.1 * i;
 		rows[i].ssim = 0.9;
 	}
+	rows[2].placement = "horizon"; // A plane crossing: its own class.
 	String table = AccuracySuite::summary_table(rows);
 	CHECK(table.find("| LTC | 0.25 | 2 | 0.0400 | 0.0600 |") != String::npos);
+	CHECK(table.find("| 0.1500 | 0.2000 |") != String::npos); // relRMSE mean and worst of roughness 0.25.
 	CHECK(table.find("scene1") != String::npos);
 	CHECK(table.find("| LTC | 1 | 1 |") != String::npos);
+	CHECK(table.find("| LTC | facing | 2 | 0.1500 | 0.2000 | 1.000..1.100 |") != String::npos);
+	CHECK(table.find("| LTC | crossing | 1 | 0.3000 | 0.3000 | 1.200..1.200 |") != String::npos);
+	CHECK(table.find("| LTC | facing, roughness >= 0.1 | 2 |") != String::npos);
+	// A black reference (NaN relative errors) is skipped from the relative columns and counted.
+	rows[0].relative_rmse = std::nan("");
+	rows[0].brightness_ratio = std::nan("");
+	table = AccuracySuite::summary_table(rows);
+	CHECK(table.find("1 black references skipped") != String::npos);
+	CHECK(table.find("nan") == String::npos);
+	// Classes: crossing (plane horizon), grazing view (elevation <= 25), facing, oblique.
+	AccuracySuite::Row c;
+	c.receiver = "plane";
+	c.placement = "vertical";
+	c.view_elevation = 10.0f;
+	CHECK(AccuracySuite::scene_class(c) == AccuracySuite::CLASS_GRAZING_VIEW);
+	c.view_elevation = 0.0f;
+	CHECK(AccuracySuite::scene_class(c) == AccuracySuite::CLASS_OBLIQUE);
+	c.placement = "far";
+	CHECK(AccuracySuite::scene_class(c) == AccuracySuite::CLASS_FACING);
+	c.placement = "horizon";
+	CHECK(AccuracySuite::scene_class(c) == AccuracySuite::CLASS_CROSSING);
+	c.receiver = "sphere";
+	CHECK(AccuracySuite::scene_class(c) == AccuracySuite::CLASS_OBLIQUE);
 
 	const String path = "/tmp/godot_area_test_accuracy.csv";
 	String error;
@@ -105,6 +158,7 @@ TEST_CASE("[Accuracy] write_csv and summary_table report every row") {
 	int lines = 0;
 	std::getline(in, line);
 	CHECK(line.rfind("scene_id,receiver,roughness,metallic,light_width,light_height,placement,method,", 0) == 0);
+	CHECK(line.find(",relative_rmse,brightness_ratio,view_elevation") != std::string::npos);
 	while (std::getline(in, line)) {
 		lines++;
 	}
