@@ -267,6 +267,44 @@ TEST_CASE("[Accuracy] the CI subset stays within the per-class error bounds (LTC
 		INFO("class ", c);
 		CHECK(per_class[c] >= 2);
 	}
+
+	// Radiance errors per AccuracySuite class (issue #18): relative RMSE (worst and mean over the class)
+	// and the range of the brightness ratio engine / reference.
+	struct RadianceBounds {
+		double worst, mean, ratio_min, ratio_max;
+	};
+	// Measured at 40 x 40 (LTC, surface-horizon clipping, free-axis polygon refit of the grazing block,
+	// 2026-12-02; doc/accuracy.md section 5; before the refit in parentheses):
+	//   facing        worst 0.050 (0.062) sphere_r0.5_m1_4x4_far, mean 0.014 (0.017), ratio 0.938..1.002
+	//   oblique       worst 0.038 (0.082) sphere_r0.5_m1_1x1_horizon, mean 0.014 (0.022), ratio 0.981..1.008
+	//   grazing view  worst 0.121 (0.121) plane_r0.5_m1_1x1_vertical_v10, mean 0.063 (0.067), ratio 0.920..1.000
+	//   crossing      worst 0.090 (0.117) plane_r0.5_m1_1x1_horizon_v10, mean 0.035 (0.043), ratio 0.945..1.000
+	// Bounds: about 1.25x the measured worst / mean, so a regression of a class fails here.
+	static const RadianceBounds RADIANCE_BOUNDS[AccuracySuite::CLASS_MAX] = {
+		{ 0.062, 0.018, 0.91, 1.03 }, // CLASS_FACING
+		{ 0.05, 0.018, 0.955, 1.03 }, // CLASS_OBLIQUE
+		{ 0.15, 0.079, 0.89, 1.04 }, // CLASS_GRAZING_VIEW
+		{ 0.113, 0.044, 0.92, 1.03 }, // CLASS_CROSSING
+	};
+	double rel_sum[AccuracySuite::CLASS_MAX] = {};
+	int rel_count[AccuracySuite::CLASS_MAX] = {};
+	for (const AccuracySuite::Row &r : rows) {
+		const AccuracySuite::SceneClass c = AccuracySuite::scene_class(r);
+		const RadianceBounds &b = RADIANCE_BOUNDS[c];
+		INFO(r.scene_id, " (", AccuracySuite::scene_class_name(c), "): relRMSE ", r.relative_rmse, ", brightness ratio ", r.brightness_ratio);
+		REQUIRE(std::isfinite(r.relative_rmse)); // Every CI scene is lit.
+		CHECK(r.relative_rmse < b.worst);
+		CHECK(r.brightness_ratio > b.ratio_min);
+		CHECK(r.brightness_ratio < b.ratio_max);
+		rel_sum[c] += r.relative_rmse;
+		rel_count[c]++;
+	}
+	for (int c = 0; c < AccuracySuite::CLASS_MAX; c++) {
+		INFO(AccuracySuite::scene_class_name(AccuracySuite::SceneClass(c)));
+		REQUIRE(rel_count[c] >= 2);
+		MESSAGE(AccuracySuite::scene_class_name(AccuracySuite::SceneClass(c)), ": mean relRMSE ", rel_sum[c] / rel_count[c], " over ", rel_count[c], " scenes");
+		CHECK(rel_sum[c] / rel_count[c] < RADIANCE_BOUNDS[c].mean);
+	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
