@@ -47,6 +47,8 @@ const char *AccuracyScenes::placement_name(Placement p_placement) {
 			return "close";
 		case PLACEMENT_FAR:
 			return "far";
+		case PLACEMENT_VERTICAL:
+			return "vertical";
 		default:
 			return "unknown";
 	}
@@ -77,14 +79,19 @@ double AccuracyScenes::irradiance_integral(const Transform3D &p_light, const Vec
 	return sum;
 }
 
-AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement) {
+AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement, float p_view_elevation) {
 	Scene s;
 	s.receiver = p_receiver;
 	s.roughness = p_roughness;
 	s.metallic = p_metallic;
 	s.light_size = p_light_size;
 	s.placement = p_placement;
+	ERR_FAIL_COND_V_MSG(p_view_elevation != 0.0f && !(p_view_elevation >= 1.0f && p_view_elevation <= 89.0f), s, vformat("Accuracy scene view elevation must be 0 (standard camera) or in [1, 89] degrees, got %g.", p_view_elevation));
+	s.view_elevation = p_view_elevation;
 	s.id = vformat("%s_r%g_m%g_%gx%g_%s", receiver_name(p_receiver), p_roughness, p_metallic, p_light_size.x, p_light_size.y, placement_name(p_placement));
+	if (p_view_elevation != 0.0f) {
+		s.id += vformat("_v%g", p_view_elevation);
+	}
 
 	const Vector3 p = p_receiver == RECEIVER_SPHERE ? Vector3(0, SPHERE_RADIUS, 0) : Vector3();
 	const Vector3 n(0, 1, 0), t(1, 0, 0), b(0, 0, 1);
@@ -111,6 +118,10 @@ AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_ro
 		} break;
 		case PLACEMENT_CLOSE:
 			s.light_transform = light_frame(-n, t, p + n * (0.1f * w));
+			break;
+		case PLACEMENT_VERTICAL:
+			// Upright (local Y along -n), emitting towards the camera side (+b), 1 m behind p.
+			s.light_transform = light_frame(b, t, p - b * 1.0f + n * (h * 0.5f + 0.05f));
 			break;
 		case PLACEMENT_FAR:
 		default:
@@ -144,6 +155,18 @@ std::vector<AccuracyScenes::Scene> AccuracyScenes::full_suite() {
 			}
 		}
 	}
+	const Placement view_placements[] = { PLACEMENT_VERTICAL, PLACEMENT_FACING, PLACEMENT_HORIZON };
+	for (float elevation : VIEW_ELEVATIONS) {
+		for (float roughness : roughnesses) {
+			for (float metallic : metallics) {
+				for (const Vector2 &size : { sizes[1], sizes[3] }) {
+					for (Placement p : view_placements) {
+						scenes.push_back(make_scene(RECEIVER_PLANE, roughness, metallic, size, p, elevation));
+					}
+				}
+			}
+		}
+	}
 	return scenes;
 }
 
@@ -172,11 +195,28 @@ std::vector<AccuracyScenes::Scene> AccuracyScenes::ci_subset() {
 	s.push_back(make_scene(RECEIVER_SPHERE, 0.5f, 1.0f, unit, PLACEMENT_HORIZON));
 	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 0.0f, thin, PLACEMENT_TILTED));
 	s.push_back(make_scene(RECEIVER_SPHERE, 0.25f, 1.0f, unit, PLACEMENT_TILTED));
+	// Issue #18: a TV / window over a glossy floor seen at grazing angles, and a light crossing the plane.
+	s.push_back(make_scene(RECEIVER_PLANE, 0.25f, 1.0f, unit, PLACEMENT_VERTICAL, 10.0f));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 1.0f, unit, PLACEMENT_VERTICAL, 10.0f));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 0.0f, thin, PLACEMENT_VERTICAL, 20.0f));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.25f, 1.0f, unit, PLACEMENT_FACING, 10.0f));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 1.0f, unit, PLACEMENT_HORIZON, 10.0f));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.25f, 1.0f, unit, PLACEMENT_VERTICAL));
 	return s;
 }
 
 Transform3D AccuracyScenes::camera_transform() {
 	const Vector3 eye(0, 2.5f, 3.2f), target(0, 0.2f, 0);
+	return Transform3D(Basis::looking_at(target - eye), eye);
+}
+
+Transform3D AccuracyScenes::camera_transform(const Scene &p_scene) {
+	if (p_scene.view_elevation == 0.0f) {
+		return camera_transform();
+	}
+	const float e = p_scene.view_elevation * float(Math::PI) / 180.0f;
+	const Vector3 target = p_scene.receiver == RECEIVER_SPHERE ? Vector3(0, SPHERE_RADIUS, 0) : Vector3();
+	const Vector3 eye = target + Vector3(0, std::sin(e), std::cos(e)) * 3.5f;
 	return Transform3D(Basis::looking_at(target - eye), eye);
 }
 
@@ -239,7 +279,7 @@ bool AccuracyScenes::build(RenderingServer *p_rs, const Scene &p_scene, int p_re
 
 	b.camera = p_rs->camera_create();
 	p_rs->camera_set_perspective(b.camera, CAMERA_FOVY, 0.05f, 200.0f);
-	p_rs->camera_set_transform(b.camera, camera_transform());
+	p_rs->camera_set_transform(b.camera, camera_transform(p_scene));
 	b.viewport = p_rs->viewport_create();
 	p_rs->viewport_set_size(b.viewport, p_resolution, p_resolution);
 	p_rs->viewport_attach_camera(b.viewport, b.camera);

@@ -24,6 +24,16 @@
 /*            the light plane are unlit: one-sided emission).             */
 /*   close    facing at distance 0.1 w (distance << size).               */
 /*   far      facing at distance 10 w (distance >> size).                 */
+/*   vertical a TV / window over a floor: the light stands upright 1 m    */
+/*            behind p (towards -Z, away from the camera), emitting       */
+/*            towards the camera (+Z), lower edge 5 cm above p's tangent  */
+/*            plane: a floor seen at a low angle mirrors it (the pose     */
+/*            where a 3-parameter LTC errs most, issue #18).              */
+/* View axis: view_elevation 0 is the suite's standard camera (eye        */
+/* (0, 2.5, 3.2) looking at (0, 0.2, 0): about 36 degrees above the       */
+/* plane); a positive value puts the eye 3.5 m from p on the +Z side at   */
+/* that many degrees above p's tangent plane, looking at p (5 to 20:      */
+/* theta_v 70 to 85 degrees at p, the grazing views of issue #18).        */
 /* Energy: chosen per scene so that a Lambert surface at p would have     */
 /* radiance 0.5 (the irradiance at p integrated by a 64 x 64 midpoint     */
 /* rule), so every scene is well exposed for the LDR metrics. Range is    */
@@ -53,6 +63,7 @@ public:
 		PLACEMENT_TILTED,
 		PLACEMENT_CLOSE,
 		PLACEMENT_FAR,
+		PLACEMENT_VERTICAL,
 		PLACEMENT_MAX,
 	};
 
@@ -63,6 +74,7 @@ public:
 		float metallic = 0.0f;
 		Vector2 light_size = Vector2(1, 1);
 		Placement placement = PLACEMENT_FACING;
+		float view_elevation = 0.0f; // Degrees above the tangent plane at p; 0 = the standard camera.
 		// Derived by make_scene():
 		Transform3D light_transform;
 		float light_energy = 1.0f;
@@ -85,18 +97,26 @@ public:
 	static const char *receiver_name(Receiver p_receiver);
 	static const char *placement_name(Placement p_placement);
 
-	// Fills the derived fields (transform, energy, range) and the id.
-	static Scene make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement);
+	// Fills the derived fields (transform, energy, range) and the id. p_view_elevation: see the banner
+	// (0 = the standard camera; otherwise in [1, 89] degrees). The id gets "_v<degrees>" when not 0.
+	static Scene make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement, float p_view_elevation = 0.0f);
 
 	// The full suite: receivers {plane, sphere} x roughness {0.05, 0.1, 0.25, 0.5, 0.75, 1} x metallic
-	// {0, 1} x light sizes {0.25 x 0.25, 1 x 1, 4 x 4, 2 x 0.5 (thin 4:1)} x the six placements.
+	// {0, 1} x light sizes {0.25 x 0.25, 1 x 1, 4 x 4, 2 x 0.5 (thin 4:1)} x the seven placements, seen by
+	// the standard camera; then the view axis: the plane x the same roughness and metallic values x
+	// light sizes {1 x 1, 2 x 0.5} x placements {vertical, facing, horizon} x view elevations
+	// VIEW_ELEVATIONS.
 	static std::vector<Scene> full_suite();
-	// The CI subset (22 scenes): diffuse-only (roughness 1, metallic 0) in every placement, specular
-	// (metallic 1) facing/far/close, and rough/glossy dielectrics at grazing, horizon and tilted.
+	static constexpr float VIEW_ELEVATIONS[3] = { 5.0f, 10.0f, 20.0f };
+	// The CI subset (28 scenes): diffuse-only (roughness 1, metallic 0) in every placement, specular
+	// (metallic 1) facing/far/close, rough/glossy dielectrics at grazing, horizon and tilted, and the
+	// issue #18 poses: vertical lights over a floor seen at 10 and 20 degrees, a light crossing the
+	// plane.
 	static std::vector<Scene> ci_subset();
 
-	// The camera every scene uses (pixel centres identical for both backends).
+	// The standard camera (view_elevation 0); camera_transform(scene) is the one p_scene uses.
 	static Transform3D camera_transform();
+	static Transform3D camera_transform(const Scene &p_scene);
 	static constexpr float CAMERA_FOVY = 55.0f;
 
 	// Builds p_scene in the current RenderingServer as a p_resolution^2 viewport with shading method

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -184,11 +185,14 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 			row.light_width = s.light_size.x;
 			row.light_height = s.light_size.y;
 			row.placement = AccuracyScenes::placement_name(s.placement);
+			row.view_elevation = s.view_elevation;
 			row.method = method;
 			row.method_name = method_name(method);
 			row.resolution = res;
 			row.rmse = m.rmse;
 			row.relative_mse = m.relative_mse;
+			row.relative_rmse = m.relative_rmse;
+			row.brightness_ratio = m.brightness_ratio;
 			row.mae = m.mae;
 			row.pearson = m.pearson;
 			row.ssim = m.ssim;
@@ -200,7 +204,7 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 			row.reference_samples_per_pixel = reference_spp[i];
 			r_rows->push_back(row);
 			if (p_options.progress) {
-				printf("[%s %zu/%zu] %s: FLIP %.4f RMSE %.4f SSIM %.4f\n", row.method_name.c_str(), i + 1, scenes.size(), s.id.c_str(), m.flip, m.rmse, m.ssim);
+				printf("[%s %zu/%zu] %s: relRMSE %.4f ratio %.3f FLIP %.4f RMSE %.4f SSIM %.4f\n", row.method_name.c_str(), i + 1, scenes.size(), s.id.c_str(), m.relative_rmse, m.brightness_ratio, m.flip, m.rmse, m.ssim);
 				fflush(stdout);
 			}
 			if (!p_options.thumbnails_dir.empty() && keep > 0) {
@@ -255,46 +259,138 @@ bool AccuracySuite::write_csv(const String &p_path, const std::vector<Row> &p_ro
 		}
 		return false;
 	}
-	fprintf(f, "scene_id,receiver,roughness,metallic,light_width,light_height,placement,method,method_name,resolution,rmse,relative_mse,mae,pearson,ssim,flip,hdr_flip,engine_ms,engine_gpu_ms,reference_ms,reference_samples_per_pixel\n");
+	fprintf(f, "scene_id,receiver,roughness,metallic,light_width,light_height,placement,method,method_name,resolution,rmse,relative_mse,mae,pearson,ssim,flip,hdr_flip,engine_ms,engine_gpu_ms,reference_ms,reference_samples_per_pixel,relative_rmse,brightness_ratio,view_elevation\n");
 	for (const Row &r : p_rows) {
-		fprintf(f, "%s,%s,%g,%g,%g,%g,%s,%d,%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.3f,%.3f,%.1f,%.1f\n", csv_field(r.scene_id).c_str(), csv_field(r.receiver).c_str(), r.roughness, r.metallic, r.light_width, r.light_height,
+		fprintf(f, "%s,%s,%g,%g,%g,%g,%s,%d,%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.3f,%.3f,%.1f,%.1f,%.6g,%.6g,%g\n", csv_field(r.scene_id).c_str(), csv_field(r.receiver).c_str(), r.roughness, r.metallic, r.light_width, r.light_height,
 				csv_field(r.placement).c_str(), r.method, csv_field(r.method_name).c_str(), r.resolution, r.rmse, r.relative_mse, r.mae, r.pearson, r.ssim, r.flip, r.hdr_flip, r.engine_ms, r.engine_gpu_ms,
-				r.reference_ms, r.reference_samples_per_pixel);
+				r.reference_ms, r.reference_samples_per_pixel, r.relative_rmse, r.brightness_ratio, r.view_elevation);
 	}
 	return out.commit(p_path, r_error);
 }
 
+AccuracySuite::SceneClass AccuracySuite::scene_class(const Row &p_row) {
+	if (p_row.placement == "horizon" && p_row.receiver == "plane") {
+		return CLASS_CROSSING;
+	}
+	if (p_row.view_elevation > 0.0f && p_row.view_elevation <= 25.0f) {
+		return CLASS_GRAZING_VIEW;
+	}
+	if (p_row.view_elevation == 0.0f && (p_row.placement == "facing" || p_row.placement == "close" || p_row.placement == "far")) {
+		return CLASS_FACING;
+	}
+	return CLASS_OBLIQUE;
+}
+
+const char *AccuracySuite::scene_class_name(SceneClass p_class) {
+	switch (p_class) {
+		case CLASS_FACING:
+			return "facing";
+		case CLASS_OBLIQUE:
+			return "oblique";
+		case CLASS_GRAZING_VIEW:
+			return "grazing view";
+		case CLASS_CROSSING:
+			return "crossing";
+		default:
+			return "unknown";
+	}
+}
+
+namespace {
+
+// Error statistics of a group of rows. Relative RMSE and brightness ratio skip rows whose reference is
+// black (NaN there); `black` counts them so nothing is dropped silently.
+struct GroupStats {
+	int count = 0;
+	int black = 0;
+	double flip_sum = 0.0, flip_max = -1.0, rmse_sum = 0.0, rmse_max = 0.0, ssim_sum = 0.0, ssim_min = 2.0;
+	double rel_sum = 0.0, rel_max = -1.0, ratio_min = 1e300, ratio_max = -1e300;
+	String worst; // By relative RMSE (by FLIP when every reference is black).
+	String worst_flip;
+
+	void add(const AccuracySuite::Row &p_row) {
+		count++;
+		flip_sum += p_row.flip;
+		rmse_sum += p_row.rmse;
+		ssim_sum += p_row.ssim;
+		rmse_max = std::max(rmse_max, p_row.rmse);
+		ssim_min = std::min(ssim_min, p_row.ssim);
+		if (p_row.flip > flip_max) {
+			flip_max = p_row.flip;
+			worst_flip = p_row.scene_id;
+		}
+		if (!std::isfinite(p_row.relative_rmse) || !std::isfinite(p_row.brightness_ratio)) {
+			black++;
+			return;
+		}
+		rel_sum += p_row.relative_rmse;
+		ratio_min = std::min(ratio_min, p_row.brightness_ratio);
+		ratio_max = std::max(ratio_max, p_row.brightness_ratio);
+		if (p_row.relative_rmse > rel_max) {
+			rel_max = p_row.relative_rmse;
+			worst = p_row.scene_id;
+		}
+	}
+	int lit() const { return count - black; }
+	double rel_mean() const { return lit() > 0 ? rel_sum / lit() : 0.0; }
+	String worst_scene() const { return worst.empty() ? worst_flip : worst; }
+	String black_note() const { return black ? vformat(" (%d black references skipped)", black) : String(); }
+};
+
+} // namespace
+
 String AccuracySuite::summary_table(const std::vector<Row> &p_rows) {
-	struct Stats {
-		int count = 0;
-		double flip_sum = 0.0, flip_max = -1.0, rmse_sum = 0.0, rmse_max = 0.0, ssim_sum = 0.0, ssim_min = 2.0;
-		String worst;
-	};
 	// Methods in order of first appearance, roughness ascending.
 	std::vector<String> methods;
-	std::map<String, std::map<float, Stats>> table;
+	std::map<String, std::map<float, GroupStats>> table;
+	std::map<String, std::map<int, GroupStats>> classes;
+	std::map<String, GroupStats> targets[3];
 	for (const Row &r : p_rows) {
 		if (std::find(methods.begin(), methods.end(), r.method_name) == methods.end()) {
 			methods.push_back(r.method_name);
 		}
-		Stats &s = table[r.method_name][r.roughness];
-		s.count++;
-		s.flip_sum += r.flip;
-		s.rmse_sum += r.rmse;
-		s.ssim_sum += r.ssim;
-		s.rmse_max = std::max(s.rmse_max, r.rmse);
-		s.ssim_min = std::min(s.ssim_min, r.ssim);
-		if (r.flip > s.flip_max) {
-			s.flip_max = r.flip;
-			s.worst = r.scene_id;
+		table[r.method_name][r.roughness].add(r);
+		const SceneClass c = scene_class(r);
+		classes[r.method_name][c].add(r);
+		if (c == CLASS_GRAZING_VIEW && r.roughness >= 0.25f && r.roughness <= 0.6f) {
+			targets[0][r.method_name].add(r);
+		} else if (c == CLASS_FACING && r.roughness >= 0.1f) {
+			targets[1][r.method_name].add(r);
+		} else if (c == CLASS_CROSSING) {
+			targets[2][r.method_name].add(r);
 		}
 	}
-	String out = "| method | roughness | scenes | FLIP mean | FLIP worst | RMSE mean | RMSE worst | SSIM mean | SSIM worst | worst scene (FLIP) |\n";
-	out += "|---|---|---|---|---|---|---|---|---|---|\n";
+	String out = "| method | roughness | scenes | FLIP mean | FLIP worst | RMSE mean | RMSE worst | relRMSE mean | relRMSE worst | SSIM mean | SSIM worst | worst scene (relRMSE) |\n";
+	out += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 	for (const String &m : methods) {
 		for (const auto &entry : table[m]) {
-			const Stats &s = entry.second;
-			out += vformat("| %s | %g | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %s |\n", m.c_str(), entry.first, s.count, s.flip_sum / s.count, s.flip_max, s.rmse_sum / s.count, s.rmse_max, s.ssim_sum / s.count, s.ssim_min, s.worst.c_str());
+			const GroupStats &s = entry.second;
+			out += vformat("| %s | %g | %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %s%s |\n", m.c_str(), entry.first, s.count, s.flip_sum / s.count, s.flip_max, s.rmse_sum / s.count, s.rmse_max, s.rel_mean(),
+					std::max(0.0, s.rel_max), s.ssim_sum / s.count, s.ssim_min, s.worst_scene().c_str(), s.black_note().c_str());
+		}
+	}
+	auto class_row = [](const String &p_method, const char *p_name, const GroupStats &p_s) {
+		if (p_s.lit() == 0) {
+			return vformat("| %s | %s | %d | - | - | - | %.4f | %s%s |\n", p_method.c_str(), p_name, p_s.count, p_s.flip_sum / p_s.count, p_s.worst_scene().c_str(), p_s.black_note().c_str());
+		}
+		return vformat("| %s | %s | %d | %.4f | %.4f | %.3f..%.3f | %.4f | %s%s |\n", p_method.c_str(), p_name, p_s.count, p_s.rel_mean(), p_s.rel_max, p_s.ratio_min, p_s.ratio_max, p_s.flip_sum / p_s.count, p_s.worst_scene().c_str(),
+				p_s.black_note().c_str());
+	};
+	out += "\n| method | class | scenes | relRMSE mean | relRMSE worst | brightness ratio | FLIP mean | worst scene (relRMSE) |\n";
+	out += "|---|---|---|---|---|---|---|---|\n";
+	for (const String &m : methods) {
+		for (const auto &entry : classes[m]) {
+			out += class_row(m, scene_class_name(SceneClass(entry.first)), entry.second);
+		}
+	}
+	const char *target_names[3] = { "grazing view, roughness 0.25-0.6", "facing, roughness >= 0.1", "crossing" };
+	out += "\n| method | issue #18 target class | scenes | relRMSE mean | relRMSE worst | brightness ratio | FLIP mean | worst scene (relRMSE) |\n";
+	out += "|---|---|---|---|---|---|---|---|\n";
+	for (const String &m : methods) {
+		for (int t = 0; t < 3; t++) {
+			if (targets[t].count(m)) {
+				out += class_row(m, target_names[t], targets[t][m]);
+			}
 		}
 	}
 	return out;

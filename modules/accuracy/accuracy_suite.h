@@ -41,12 +41,15 @@ public:
 		float metallic = 0.0f;
 		float light_width = 0.0f;
 		float light_height = 0.0f;
-		String placement; // facing, grazing, horizon, tilted, close, far.
+		String placement; // facing, grazing, horizon, tilted, close, far, vertical.
+		float view_elevation = 0.0f; // Degrees; 0 = the standard camera (accuracy_scenes.h).
 		int method = 0; // RS::LightAreaShadingMethod.
 		String method_name;
 		int resolution = 0;
 		double rmse = 0.0;
 		double relative_mse = 0.0;
+		double relative_rmse = 0.0; // Radiance: sqrt(sum (a - b)^2 / sum b^2) (image_metrics.h).
+		double brightness_ratio = 1.0; // Mean brightness engine / reference.
 		double mae = 0.0;
 		double pearson = 1.0;
 		double ssim = 1.0;
@@ -62,11 +65,30 @@ public:
 	// method) and writes the CSV / thumbnails if asked. False (r_error set) on any failure.
 	static bool run(const Options &p_options, std::vector<Row> *r_rows, String *r_error);
 
-	// The CSV: one header line, then one line per row (columns as in Row, in that order).
+	// The CSV: one header line, then one line per row (the columns of the first version, then
+	// relative_rmse, brightness_ratio, view_elevation appended so older readers keep working).
 	static bool write_csv(const String &p_path, const std::vector<Row> &p_rows, String *r_error = nullptr);
 
-	// Markdown table: per method and roughness, the number of scenes, mean and worst LDR-FLIP,
-	// RMSE and SSIM, and the worst scene (by FLIP).
+	// Scene classes of the radiance-error report and of the CI bounds (doc/accuracy.md):
+	//   CLASS_CROSSING      the light crosses the receiver's plane (horizon placement on the plane).
+	//   CLASS_GRAZING_VIEW  seen from view_elevation <= 25 degrees (theta_v >= 65 at p), not crossing.
+	//   CLASS_FACING        facing / close / far with the standard camera (top-down views).
+	//   CLASS_OBLIQUE       the rest (grazing / tilted / vertical lights, sphere horizon).
+	enum SceneClass {
+		CLASS_FACING,
+		CLASS_OBLIQUE,
+		CLASS_GRAZING_VIEW,
+		CLASS_CROSSING,
+		CLASS_MAX,
+	};
+	static SceneClass scene_class(const Row &p_row);
+	static const char *scene_class_name(SceneClass p_class);
+
+	// Markdown tables: (1) per method and roughness, the number of scenes, mean and worst LDR-FLIP,
+	// RMSE, relative RMSE and SSIM, and the worst scene (by relative RMSE); (2) per method and scene
+	// class, mean and worst relative RMSE, the range of the brightness ratio, mean FLIP; (3) the
+	// issue #18 target classes: grazing views at roughness 0.25 to 0.6, facing views at roughness >=
+	// 0.1, crossing lights.
 	static String summary_table(const std::vector<Row> &p_rows);
 
 	// Display name of a shading method value ("LTC", ...; unknown values: "method_<n>").

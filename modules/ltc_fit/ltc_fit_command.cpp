@@ -22,11 +22,12 @@
 namespace {
 
 void _print_usage() {
-	fprintf(stderr, "Usage: godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N]\n");
+	fprintf(stderr, "Usage: godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--free-axis] [--norm 1|2|3 | --polygons] [--smoothness S]\n");
 	fprintf(stderr, "       godot-area ltc-fit --polynomial [-o PATH] [--glsl PATH]\n");
 }
 
-// `ltc-fit --polynomial`: fits the degree-5 polynomials to the built-in LTC_LUT_ENGINE_GGX (thesis
+// `ltc-fit --polynomial`: fits the degree-5 polynomials to the built-in LTC_LUT_ENGINE_GGX with its
+// free-axis block refitted as the 3-parameter fit (LTCFitter::get_three_parameter_engine_table; thesis
 // section 5.4.3) and writes the C++ include (-o) and the GLSL include (--glsl).
 int _polynomial_command(const std::vector<String> &p_args, size_t p_first) {
 	String out_path;
@@ -56,7 +57,12 @@ int _polynomial_command(const std::vector<String> &p_args, size_t p_first) {
 		glsl_path = String(LTCPolynomial::DEFAULT_GLSL_PATH);
 	}
 	LTCPolynomial::Fit fit;
-	if (!LTCPolynomial::fit_table(LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX), LTCTableIO::get_builtin_size(), fit)) {
+	std::vector<float> table;
+	if (!LTCFitter::get_three_parameter_engine_table(table)) {
+		ERR_PRINT("ltc-fit --polynomial: could not rebuild the 3-parameter table.");
+		return 1;
+	}
+	if (!LTCPolynomial::fit_table(table.data(), LTCTableIO::get_builtin_size(), fit)) {
 		ERR_PRINT("ltc-fit --polynomial: the fit failed.");
 		return 1;
 	}
@@ -154,14 +160,14 @@ String _format_stats(const char *p_name, const VariantStats &p_s) {
 }
 
 // Fits one variant with a progress bar on stderr.
-bool _fit_with_progress(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> &r_cells, double *r_seconds) {
+bool _fit_with_progress(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, const LTCFitOptions &p_options, std::vector<float> &r_table, std::vector<LTCCell> &r_cells, double *r_seconds) {
 	std::atomic<int> done(0);
 	std::atomic<bool> finished(false);
 	bool ok = false;
 	const int total = (p_r1 - p_r0 + 1) * (p_t1 - p_t0 + 1);
 	const auto start = std::chrono::steady_clock::now();
 	std::thread fitter([&]() {
-		ok = LTCFitter::fit_table(p_variant, p_size, p_r0, p_r1, p_t0, p_t1, p_threads, r_table, &r_cells, &done);
+		ok = LTCFitter::fit_table(p_variant, p_size, p_r0, p_r1, p_t0, p_t1, p_threads, r_table, &r_cells, &done, p_options);
 		finished.store(true);
 	});
 	const bool tty = isatty(2);
@@ -194,6 +200,7 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 	String brdf = "both";
 	String out_path;
 	String cells_arg;
+	LTCFitOptions fit_options;
 	size_t i = 0;
 	if (!p_args.empty() && p_args[0] == "ltc-fit") {
 		i = 1;
@@ -210,7 +217,17 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 			_print_usage();
 			return 0;
 		}
-		const bool takes_value = a == "--size" || a == "--brdf" || a == "-o" || a == "--cells" || a == "--threads";
+		if (a == "--free-axis") {
+			fit_options.free_axis = true;
+			command += " --free-axis";
+			continue;
+		}
+		if (a == "--polygons") {
+			fit_options.polygons = true;
+			command += " --polygons";
+			continue;
+		}
+		const bool takes_value = a == "--size" || a == "--brdf" || a == "-o" || a == "--cells" || a == "--threads" || a == "--norm" || a == "--smoothness";
 		if (!takes_value) {
 			ERR_PRINT(vformat("ltc-fit: unknown argument '%s'.", a.c_str()));
 			_print_usage();
@@ -231,6 +248,18 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 		} else if (a == "--threads") {
 			if (!_parse_int(value, &threads) || threads < 0 || threads > 1024) {
 				ERR_PRINT(vformat("ltc-fit: --threads must be an integer in [0, 1024], got '%s'.", value.c_str()));
+				return 2;
+			}
+		} else if (a == "--smoothness") {
+			char *end = nullptr;
+			fit_options.smoothness = std::strtod(value.c_str(), &end);
+			if (value.empty() || *end != '\0' || !(fit_options.smoothness >= 0.0) || fit_options.smoothness > 1e6) {
+				ERR_PRINT(vformat("ltc-fit: --smoothness must be a number in [0, 1e6], got '%s'.", value.c_str()));
+				return 2;
+			}
+		} else if (a == "--norm") {
+			if (!_parse_int(value, &fit_options.norm) || fit_options.norm < 1 || fit_options.norm > 3) {
+				ERR_PRINT(vformat("ltc-fit: --norm must be 1, 2 or 3, got '%s'.", value.c_str()));
 				return 2;
 			}
 		} else if (a == "--brdf") {
@@ -291,7 +320,7 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 		}
 		std::vector<LTCCell> cells;
 		double seconds = 0.0;
-		if (!_fit_with_progress((LTCBRDFVariant)v, size, r0, r1, t0, t1, threads, tables[v], cells, &seconds)) {
+		if (!_fit_with_progress((LTCBRDFVariant)v, size, r0, r1, t0, t1, threads, fit_options, tables[v], cells, &seconds)) {
 			ERR_PRINT("ltc-fit: the fit failed.");
 			return 1;
 		}
@@ -303,7 +332,7 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 			ERR_PRINT(vformat("ltc-fit: the %s table has non-finite values or a matrix with det <= 0.", LTCBRDF::get_variant_name((LTCBRDFVariant)v)));
 			return 1;
 		}
-		if (partial) {
+		if (partial && (r1 - r0 + 1) * (t1 - t0 + 1) <= 64) {
 			const float *builtin = size == builtin_size ? LTCTableIO::get_builtin_table((LTCBRDFVariant)v) : nullptr;
 			for (int t = t0; t <= t1; t++) {
 				for (int r = r0; r <= r1; r++) {

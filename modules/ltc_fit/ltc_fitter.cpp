@@ -6,6 +6,8 @@
 #include "modules/ltc_fit/ltc_fitter.h"
 
 #include "core/error/error_macros.h"
+#include "modules/ltc_fit/ltc_polygon_objective.h"
+#include "modules/ltc_fit/ltc_table_io.h"
 #include "modules/ltc_fit/nelder_mead.h"
 
 #include <algorithm>
@@ -13,6 +15,8 @@
 #include <thread>
 
 namespace {
+
+const double ENGINE_REFIT_SMOOTHNESS = 1.0; // The --smoothness of the committed engine refit.
 
 struct Vec {
 	double x, y, z;
@@ -75,6 +79,11 @@ void extract_parameters(const float *p_cell, double *r_m11, double *r_m22, doubl
 	*r_m13 = m11 > 0.0 ? (a * b + d * e) / m11 : 0.0;
 }
 
+// The axis angle phi of a stored matrix: X = (a, 0, d) / m11 = (cos phi, 0, -sin phi).
+double extract_axis_angle(const float *p_cell) {
+	return std::atan2(-(double)p_cell[3], (double)p_cell[0]);
+}
+
 struct BRDFSample {
 	Vec l;
 	double rho; // Normalised f cos / fn.
@@ -89,6 +98,8 @@ public:
 	double inv_fn = 1.0;
 	double zx = 0.0, zz = 1.0;
 	bool isotropic = false;
+	bool free_axis = false; // x[3] = phi, Z = (sin phi, 0, cos phi).
+	int norm = 3;
 	std::vector<BRDFSample> brdf_samples;
 	std::vector<double> grid_u; // Stratum centres (i + 0.5) / n.
 
@@ -102,7 +113,15 @@ public:
 		double m11 = std::exp(p_x[0]);
 		double m22 = isotropic ? m11 : std::exp(p_x[1]);
 		double m13 = isotropic ? 0.0 : p_x[2] * m11;
-		build_matrix(zx, zz, m11, m22, m13, r_m);
+		if (free_axis && !isotropic) {
+			build_matrix(std::sin(p_x[3]), std::cos(p_x[3]), m11, m22, m13, r_m);
+		} else {
+			build_matrix(zx, zz, m11, m22, m13, r_m);
+		}
+	}
+
+	double power(double p_diff) const {
+		return norm == 1 ? p_diff : (norm == 2 ? p_diff * p_diff : p_diff * p_diff * p_diff);
 	}
 
 	// Returns E3 and, when r_l1 is not null, the L1 distance.
@@ -116,7 +135,7 @@ public:
 				continue;
 			}
 			double diff = std::fabs(s.rho - dl);
-			e3 += diff * diff * diff / denom;
+			e3 += power(diff) / denom;
 			e1 += diff / denom;
 		}
 		for (double u1 : grid_u) {
@@ -131,7 +150,7 @@ public:
 					continue;
 				}
 				double diff = std::fabs(rho(lv) - dl);
-				e3 += diff * diff * diff / denom;
+				e3 += power(diff) / denom;
 				e1 += diff / denom;
 			}
 		}
@@ -155,6 +174,21 @@ void LTCCell::write(float *r_out) const {
 	r_out[5] = fn;
 	r_out[6] = fg;
 	r_out[7] = 0.0f;
+}
+
+LTCFitOptions LTCFitter::engine_refit_options() {
+	LTCFitOptions options;
+	options.free_axis = true;
+	options.polygons = true;
+	options.smoothness = ENGINE_REFIT_SMOOTHNESS;
+	return options;
+}
+
+bool LTCFitter::get_three_parameter_engine_table(std::vector<float> &r_table, int p_threads) {
+	const int n = LTCTableIO::get_builtin_size();
+	const float *src = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX);
+	r_table.assign(src, src + (size_t)n * n * FLOATS_PER_CELL);
+	return fit_table(LTC_BRDF_ENGINE_GGX, n, ENGINE_REFIT_R0, ENGINE_REFIT_R1, ENGINE_REFIT_T0, ENGINE_REFIT_T1, p_threads, r_table, nullptr, nullptr);
 }
 
 double LTCFitter::get_roughness(int p_size, int p_roughness_index) {
@@ -248,7 +282,7 @@ void LTCFitter::integrate_albedo(LTCBRDFVariant p_variant, double p_alpha, doubl
 	}
 }
 
-LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughness_index, int p_angle_index, const float *p_init_or_null) {
+LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughness_index, int p_angle_index, const float *p_init_or_null, const LTCFitOptions &p_options, const float *p_self_or_null) {
 	LTCCell cell;
 	ERR_FAIL_INDEX_V_MSG((int)p_variant, (int)LTC_BRDF_MAX, cell, "Unknown LTC BRDF variant.");
 	ERR_FAIL_COND_V_MSG(p_size < 2, cell, "The LTC table needs at least 2 x 2 cells.");
@@ -261,6 +295,9 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 	const double theta = get_theta(p_size, p_angle_index);
 	obj.v = Vec{ std::sin(theta), 0.0, std::cos(theta) };
 	obj.isotropic = p_angle_index == 0;
+	ERR_FAIL_COND_V_MSG(p_options.norm < 1 || p_options.norm > 3, cell, vformat("LTC fit norm must be 1, 2 or 3, got %d.", p_options.norm));
+	obj.free_axis = p_options.free_axis;
+	obj.norm = p_options.norm;
 
 	double fn = 0.0, fg = 0.0, dominant[3];
 	integrate_albedo(p_variant, obj.alpha, theta, ALBEDO_SAMPLES, &fn, &fg, dominant);
@@ -291,31 +328,85 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 		}
 	}
 
-	double m11 = 1.0, m22 = 1.0, m13 = 0.0;
-	if (p_init_or_null) {
-		extract_parameters(p_init_or_null, &m11, &m22, &m13);
-		if (!(m11 > 0.0) || !(m22 > 0.0) || !std::isfinite(m13)) {
-			WARN_PRINT("LTC fit: unusable initial cell, starting from the default.");
-			m11 = m22 = 1.0;
-			m13 = 0.0;
+	// A start x from stored floats (the chain's rougher neighbour, or the cell itself); default without.
+	auto start_from = [&](const float *p_cell) {
+		double m11 = 1.0, m22 = 1.0, m13 = 0.0;
+		double phi = std::atan2(obj.zx, obj.zz);
+		if (p_cell) {
+			extract_parameters(p_cell, &m11, &m22, &m13);
+			if (!(m11 > 0.0) || !(m22 > 0.0) || !std::isfinite(m13)) {
+				WARN_PRINT("LTC fit: unusable initial cell, starting from the default.");
+				m11 = m22 = 1.0;
+				m13 = 0.0;
+			} else if (obj.free_axis) {
+				phi = extract_axis_angle(p_cell);
+			}
 		}
+		if (obj.isotropic) {
+			return std::vector<double>{ std::log(std::sqrt(m11 * m22)) };
+		}
+		if (obj.free_axis) {
+			return std::vector<double>{ std::log(m11), std::log(m22), m13 / m11, phi };
+		}
+		return std::vector<double>{ std::log(m11), std::log(m22), m13 / m11 };
+	};
+	std::vector<double> x0 = start_from(p_init_or_null);
+	LTCPolygonObjective polygons;
+	if (p_options.polygons) {
+		const int n = LTCPolygonObjective::SAMPLES;
+		std::vector<double> directions, weights;
+		directions.reserve(size_t(n) * n * 3);
+		weights.reserve(size_t(n) * n);
+		for (int i = 0; i < n; i++) {
+			for (int j = 0; j < n; j++) {
+				Vec h = sample_vndf(obj.v, obj.alpha, (i + 0.5) / n, (j + 0.5) / n);
+				Vec l = reflect_about(obj.v, h);
+				double pdf = pdf_vndf(obj.v, l, obj.alpha);
+				directions.insert(directions.end(), { l.x, l.y, l.z });
+				weights.push_back(pdf > 0.0 && l.z > 0.0 ? obj.rho(l) / pdf : 0.0);
+			}
+		}
+		polygons.build(directions, weights);
 	}
-	std::vector<double> x0;
-	if (obj.isotropic) {
-		x0 = { std::log(std::sqrt(m11 * m22)) };
-	} else {
-		x0 = { std::log(m11), std::log(m22), m13 / m11 };
+	double previous[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
+	const bool smooth = p_options.smoothness > 0.0 && p_init_or_null;
+	for (int j = 0; j < 5 && smooth; j++) {
+		previous[j] = p_init_or_null[j];
 	}
-	NelderMead::Function f = [&obj](const std::vector<double> &p_x) {
+	NelderMead::Function f = [&obj, &polygons, &p_options, &previous, smooth](const std::vector<double> &p_x) {
 		double m[5];
 		obj.matrix_from(p_x, m);
-		double e = obj.error(m, nullptr);
+		if (p_options.polygons) {
+			// Scored as stored: float entries, and a matrix the shader can invert (a e - b d > 0 in float).
+			for (double &v : m) {
+				v = double(float(v));
+			}
+			if (!(float(m[0]) * float(m[4]) - float(m[1]) * float(m[3]) > 0.0f) || !(m[2] > 0.0)) {
+				return 1e300;
+			}
+		}
+		double e = p_options.polygons ? polygons.error(m) : obj.error(m, nullptr);
+		if (smooth) {
+			double d2 = 0.0;
+			for (int j = 0; j < 5; j++) {
+				d2 += (m[j] - previous[j]) * (m[j] - previous[j]);
+			}
+			e *= 1.0 + p_options.smoothness * d2;
+		}
 		return std::isfinite(e) ? e : 1e300;
 	};
 	// Nelder-Mead, restarted from its own result (fresh simplex) while that still improves: a collapsed
 	// simplex is the usual way the method stalls on the elongated valleys of grazing, glossy cells.
 	NelderMead::Result res = NelderMead::minimize(f, x0, 0.1, 1e-6, MAX_ITERATIONS);
 	int iterations = res.iterations;
+	if (p_self_or_null && p_self_or_null != p_init_or_null && !p_options.polygons) {
+		// A refit also starts from the cell's own value: never worse than the table it replaces.
+		NelderMead::Result own = NelderMead::minimize(f, start_from(p_self_or_null), 0.05, 1e-6, MAX_ITERATIONS);
+		iterations += own.iterations;
+		if (own.value < res.value) {
+			res = own;
+		}
+	}
 	for (int restart = 0; restart < MAX_RESTARTS; restart++) {
 		NelderMead::Result again = NelderMead::minimize(f, res.x, 0.05, 1e-6, MAX_ITERATIONS);
 		iterations += again.iterations;
@@ -340,6 +431,8 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 		std::vector<double> x1;
 		if (obj.isotropic) {
 			x1 = { std::log(obj.alpha) };
+		} else if (obj.free_axis) {
+			x1 = { std::log(obj.alpha), std::log(obj.alpha), 0.0, std::atan2(obj.zx, obj.zz) };
 		} else {
 			x1 = { std::log(obj.alpha), std::log(obj.alpha), 0.0 };
 		}
@@ -360,11 +453,15 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 	// Report the error of the stored (float) matrix.
 	double mf[5] = { cell.a, cell.b, cell.c, cell.d, cell.e };
 	cell.error_l3 = obj.error(mf, &cell.error_l1);
+	if (p_options.polygons) {
+		cell.error_l3 = polygons.error(mf);
+	}
 	cell.iterations = iterations;
 	return cell;
 }
 
-bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done) {
+bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done,
+		const LTCFitOptions &p_options) {
 	ERR_FAIL_INDEX_V_MSG((int)p_variant, (int)LTC_BRDF_MAX, false, "Unknown LTC BRDF variant.");
 	ERR_FAIL_COND_V_MSG(p_size < 2, false, "The LTC table needs at least 2 x 2 cells.");
 	ERR_FAIL_COND_V_MSG(p_r0 < 0 || p_r1 >= p_size || p_r0 > p_r1, false, vformat("Bad LTC roughness range %d:%d for size %d.", p_r0, p_r1, p_size));
@@ -386,8 +483,10 @@ bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_
 				init = &r_table[((size_t)t * p_size + p_r1 + 1) * FLOATS_PER_CELL];
 			}
 			for (int r = p_r1; r >= p_r0; r--) {
-				LTCCell cell = fit_cell(p_variant, p_size, r, t, init);
 				float *out = &r_table[((size_t)t * p_size + r) * FLOATS_PER_CELL];
+				float self[FLOATS_PER_CELL];
+				std::copy(out, out + FLOATS_PER_CELL, self);
+				LTCCell cell = fit_cell(p_variant, p_size, r, t, init, p_options, p_options.free_axis ? self : nullptr);
 				cell.write(out);
 				if (r_cells) {
 					(*r_cells)[(size_t)t * p_size + r] = cell;

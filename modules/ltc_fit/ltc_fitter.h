@@ -24,6 +24,20 @@
 /* is isotropic, x = (ln m11) with m22 = m11, m13 = 0. Nelder-Mead is     */
 /* restarted from its result while that improves; a cell whose fit does   */
 /* not overlap the lobe (L1 > FALLBACK_L1) also tries m11 = m22 = alpha.  */
+/* Free axis (FitOptions::free_axis, issue #18): Z is not fixed at the    */
+/* average direction but a 4th parameter, Z = (sin phi, 0, cos phi),      */
+/* x = (ln m11, ln m22, m13 / m11, phi); M keeps the same 5 entries, so   */
+/* the shader and the table layout do not change. phi starts from the     */
+/* stored matrix (X = M's first column / m11), and a refit also starts   */
+/* from the cell's own current value and keeps the better of the two.    */
+/* FitOptions::norm picks the objective E_p = integral |rho - D|^p, p in  */
+/* {1, 2, 3} (Heitz et al. use 3); the engine table's choice is made by   */
+/* the scene error of the accuracy suite (doc/methods.md).                */
+/* FitOptions::polygons minimises instead the error of the lobe's         */
+/* integrals over a set of test lights (ltc_polygon_objective.h): what    */
+/* the shader evaluates and a scene measures. With it, a refit starts    */
+/* only from the chain (no second start from the cell itself) and         */
+/* FitOptions::smoothness keeps each row on one branch of minima.         */
 /* Initialisation (Heitz et al.): every view-angle row is a chain walking */
 /* from the roughest cell down, each cell starting from the stored floats */
 /* of its rougher neighbour, so a re-fit of one cell from the committed   */
@@ -45,11 +59,22 @@ struct LTCCell {
 	float e = 1.0f;
 	float fn = 0.0f; // Directional albedo integral f cos dl (F = 1).
 	float fg = 0.0f; // Integral f cos (1 - v.h)^5 dl: F = f0 fn + (f90 - f0) fg (thesis eq. 5.10).
-	double error_l3 = 0.0; // Minimised objective E3 (see the banner).
+	double error_l3 = 0.0; // Minimised objective E_p (E3 unless FitOptions::norm says otherwise).
 	double error_l1 = 0.0; // Integral |rho - D| over the sphere, 0 (perfect) to 2 (disjoint).
 	int iterations = 0; // Nelder-Mead iterations.
 
 	void write(float *r_out) const;
+};
+
+// How a cell is fitted (the defaults are the 3-parameter L3 fit of Heitz et al. 2016).
+struct LTCFitOptions {
+	bool free_axis = false; // Fit the lobe axis too (4 parameters).
+	int norm = 3; // Objective integral |rho - D|^norm, norm in {1, 2, 3}.
+	bool polygons = false; // Objective: the polygon-integral error of ltc_polygon_objective.h (norm unused).
+	// Continuity: the objective is multiplied by 1 + smoothness * sum_j (m_j - m_j,prev)^2 over the five
+	// matrix entries of the chain's previous (rougher) cell, so a row does not jump between two nearly
+	// equal minima (linear filtering between cells of different minima gives neither lobe).
+	double smoothness = 0.0;
 };
 
 class LTCFitter {
@@ -63,6 +88,26 @@ public:
 	static constexpr double FALLBACK_L1 = 1.0; // Above this L1 distance a second start (m11 = m22 = alpha) is tried.
 	static constexpr int FLOATS_PER_CELL = 8;
 
+	// The committed engine table (ltc_lut_data.inc, issue #18): the cells roughness index
+	// ENGINE_REFIT_R0..R1 x view-angle index ENGINE_REFIT_T0..T1 (roughness 0.19..0.79, theta_v >= 52
+	// degrees) were refitted with engine_refit_options() from the 3-parameter L3 table, which the other
+	// cells (and the whole Smith table) keep:
+	//   godot-area ltc-fit --brdf engine --cells 12:50,40:63 --free-axis --polygons --smoothness 1
+	static constexpr int ENGINE_REFIT_R0 = 12;
+	static constexpr int ENGINE_REFIT_R1 = 50;
+	static constexpr int ENGINE_REFIT_T0 = 40;
+	static constexpr int ENGINE_REFIT_T1 = 63;
+	static LTCFitOptions engine_refit_options();
+	// The committed engine table with the refit block fitted again as the 3-parameter L3 fit (each row's
+	// chain starts from the untouched cell ENGINE_REFIT_R1 + 1, so this reproduces the table the block
+	// replaced, bit for bit in the same build). The LUT-free polynomials (LTC_POLYNOMIAL) are fitted
+	// to it: fitted to the refit table, degree-5 patches cannot follow the block's edge at roughness
+	// 0.19 and LTC_POLYNOMIAL regressed (plane_r0.1_m1_2x0.5_far relRMSE 0.027 -> 0.62).
+	static bool get_three_parameter_engine_table(std::vector<float> &r_table, int p_threads = 0);
+	static bool is_engine_refit_cell(int p_roughness_index, int p_angle_index) {
+		return p_roughness_index >= ENGINE_REFIT_R0 && p_roughness_index <= ENGINE_REFIT_R1 && p_angle_index >= ENGINE_REFIT_T0 && p_angle_index <= ENGINE_REFIT_T1;
+	}
+
 	// Table coordinates of a cell (see the banner).
 	static double get_roughness(int p_size, int p_roughness_index);
 	static double get_alpha(int p_size, int p_roughness_index);
@@ -71,7 +116,9 @@ public:
 	// Fits one cell. p_init_or_null: the 8 stored floats of the cell the full fit starts from (the next
 	// rougher cell at the same view angle, roughness_index + 1), or nullptr for the default start
 	// m11 = m22 = 1, m13 = 0 (used for the roughest column).
-	static LTCCell fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughness_index, int p_angle_index, const float *p_init_or_null);
+	// p_self_or_null: the cell's own current 8 floats, a second start (kept if better) for refits.
+	static LTCCell fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughness_index, int p_angle_index, const float *p_init_or_null, const LTCFitOptions &p_options = LTCFitOptions(),
+			const float *p_self_or_null = nullptr);
 
 	// Fits cells roughness [p_r0, p_r1] x angle [p_t0, p_t1] (inclusive) into r_table (p_size^2 * 8 floats,
 	// index (angle * p_size + roughness) * 8; it must hold the seed values of the other cells). Each view
@@ -79,7 +126,9 @@ public:
 	// p_r1 < p_size - 1, from the default otherwise. Chains run on p_threads std::threads (0 = hardware
 	// concurrency); the result does not depend on the thread count. r_cells receives the LTCCell of every
 	// fitted cell (same indexing, others untouched) when not null; r_done counts finished cells.
-	static bool fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done);
+	// With p_options.free_axis each cell also starts from its own value in r_table (see fit_cell).
+	static bool fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done,
+			const LTCFitOptions &p_options = LTCFitOptions());
 
 	// The LTC density D(l) of the stored matrix p_m = (a, b, c, d, e) at unit direction p_l (1/sr).
 	static double ltc_evaluate(const double *p_m, const double *p_l);

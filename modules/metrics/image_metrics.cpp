@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 namespace {
 
@@ -102,7 +103,7 @@ bool ImageMetrics::compare(const Image &p_image, const Image &p_reference, Resul
 	const float *a = p_image.ptr();
 	const float *b = p_reference.ptr();
 
-	double sum_sq = 0.0, sum_rel = 0.0, sum_abs = 0.0;
+	double sum_sq = 0.0, sum_rel = 0.0, sum_abs = 0.0, sum_ref_sq = 0.0, sum_a = 0.0, sum_b = 0.0;
 	std::vector<double> lum_a(count), lum_b(count);
 	std::vector<float> ssim_a(count), ssim_b(count);
 	for (size_t i = 0; i < count; i++) {
@@ -114,6 +115,9 @@ bool ImageMetrics::compare(const Image &p_image, const Image &p_reference, Resul
 			sum_sq += d * d;
 			sum_rel += d * d / (double(pb[c]) * pb[c] + RELATIVE_MSE_EPSILON);
 			sum_abs += std::fabs(d);
+			sum_ref_sq += double(pb[c]) * pb[c];
+			sum_a += pa[c];
+			sum_b += pb[c];
 			enc_a[c] = Tonemap::linear_to_srgb(Math::clamp(pa[c], 0.0f, 1.0f));
 			enc_b[c] = Tonemap::linear_to_srgb(Math::clamp(pb[c], 0.0f, 1.0f));
 		}
@@ -125,6 +129,9 @@ bool ImageMetrics::compare(const Image &p_image, const Image &p_reference, Resul
 	const double values = 3.0 * double(count);
 	r.rmse = std::sqrt(sum_sq / values);
 	r.relative_mse = sum_rel / values;
+	const double nan = std::numeric_limits<double>::quiet_NaN();
+	r.relative_rmse = sum_ref_sq > 0.0 ? std::sqrt(sum_sq / sum_ref_sq) : nan;
+	r.brightness_ratio = sum_b > 0.0 ? sum_a / sum_b : nan;
 	r.mae = sum_abs / values;
 	r.pearson = _pearson(lum_a, lum_b);
 	r.ssim = SSIM::compute(ssim_a, ssim_b, r.width, r.height);
@@ -192,6 +199,8 @@ String ImageMetrics::Result::to_json() const {
 	s += vformat("\"width\":%d,\"height\":%d", width, height);
 	s += ",\"rmse\":" + _json_number(rmse);
 	s += ",\"relative_mse\":" + _json_number(relative_mse);
+	s += ",\"relative_rmse\":" + _json_number(relative_rmse);
+	s += ",\"brightness_ratio\":" + _json_number(brightness_ratio);
 	s += ",\"mae\":" + _json_number(mae);
 	s += ",\"pearson\":" + _json_number(pearson);
 	s += ",\"ssim\":" + _json_number(ssim);
@@ -210,6 +219,8 @@ String ImageMetrics::Result::to_text() const {
 	s += vformat("size:         %dx%d\n", width, height);
 	s += vformat("RMSE:         %.6g\n", rmse);
 	s += vformat("relMSE:       %.6g\n", relative_mse);
+	s += vformat("relRMSE:      %.6g (radiance)\n", relative_rmse);
+	s += vformat("ratio:        %.6g (mean brightness, image / reference)\n", brightness_ratio);
 	s += vformat("MAE:          %.6g\n", mae);
 	s += vformat("Pearson:      %.6f\n", pearson);
 	s += vformat("SSIM:         %.6f\n", ssim);

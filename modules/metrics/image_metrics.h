@@ -7,6 +7,13 @@
 /*   relMSE    mean over pixels and R, G, B of (a - b)^2 / (b^2 + 0.01),  */
 /*             b = reference; eps = 1e-2 as common in rendering papers    */
 /*             (keeps dark reference pixels from dominating).             */
+/*   relRMSE   relative RMSE in radiance: sqrt(sum (a - b)^2 / sum b^2)   */
+/*             over pixels and R, G, B (an energy-weighted error that no  */
+/*             tone map flattens; black pixels of both add nothing, so    */
+/*             it does not depend on how much background is in view).     */
+/*   ratio     mean brightness ratio sum a / sum b over pixels and R, G,  */
+/*             B (> 1: the image is too bright). Both are NaN (JSON null) */
+/*             when the reference is black.                               */
 /*   MAE       ISR thesis eq. (19): mean over the 3wh values of |a - b|.  */
 /*   Pearson   ISR thesis eq. (20), population statistics, on luminance   */
 /*             lum = 0.27 R + 0.67 G + 0.06 B (ISR eq. (17)) of linear    */
@@ -41,6 +48,8 @@ public:
 		int height = 0;
 		double rmse = 0.0;
 		double relative_mse = 0.0;
+		double relative_rmse = 0.0; // sqrt(sum (a - b)^2 / sum b^2); NaN if the reference is black.
+		double brightness_ratio = 1.0; // sum a / sum b; NaN if the reference is black.
 		double mae = 0.0;
 		double pearson = 1.0;
 		double ssim = 1.0;

@@ -65,6 +65,8 @@ TEST_CASE("[Metrics] identical images give zero error and perfect similarity") {
 	CHECK(r.height == 32);
 	CHECK(r.rmse == 0.0);
 	CHECK(r.relative_mse == 0.0);
+	CHECK(r.relative_rmse == 0.0);
+	CHECK(r.brightness_ratio == 1.0);
 	CHECK(r.mae == 0.0);
 	CHECK(r.pearson == doctest::Approx(1.0).epsilon(1e-9));
 	CHECK(r.ssim == doctest::Approx(1.0).epsilon(1e-9));
@@ -85,6 +87,9 @@ TEST_CASE("[Metrics] a constant offset gives the analytic RMSE, MAE and relative
 	const double eps = ImageMetrics::RELATIVE_MSE_EPSILON;
 	const double expected_rel = (0.01 / (0.25 + eps) + 0.01 / (0.0625 + eps) + 0.01 / (1.0 + eps)) / 3.0;
 	CHECK(r.relative_mse == doctest::Approx(expected_rel).epsilon(1e-4));
+	// Radiance errors: sum d^2 = 3 n 0.01 over sum b^2 = n (0.25 + 0.0625 + 1); sum a / sum b.
+	CHECK(r.relative_rmse == doctest::Approx(std::sqrt(0.03 / 1.3125)).epsilon(1e-4));
+	CHECK(r.brightness_ratio == doctest::Approx(2.05 / 1.75).epsilon(1e-5));
 	// Alpha is ignored.
 	Image alpha_changed = reference;
 	alpha_changed.fill(Color(0.5f, 0.25f, 1.0f, 0.0f));
@@ -101,6 +106,10 @@ TEST_CASE("[Metrics] MAE follows ISR eq. 19 for mixed per-channel differences") 
 	REQUIRE(ImageMetrics::compare(image, reference, &r, nullptr, ldr_only()));
 	CHECK(r.mae == doctest::Approx((0.3 + 0.6 + 0.9) / 6.0).epsilon(1e-5));
 	CHECK(r.rmse == doctest::Approx(std::sqrt((0.09 + 0.36 + 0.81) / 6.0)).epsilon(1e-5));
+	// A black reference has no relative error: NaN, and null in JSON (never a made-up number).
+	CHECK(std::isnan(r.relative_rmse));
+	CHECK(std::isnan(r.brightness_ratio));
+	CHECK(r.to_json().find("\"relative_rmse\":null") != String::npos);
 }
 
 TEST_CASE("[Metrics] Pearson is 1 for an affine transform and -1 for a negated image") {
@@ -195,7 +204,7 @@ TEST_CASE("[Metrics] JSON and text output carry every metric") {
 	const String json = r.to_json();
 	CHECK(json.front() == '{');
 	CHECK(json.back() == '}');
-	for (const char *key : { "\"width\":16", "\"height\":16", "\"rmse\":", "\"relative_mse\":", "\"mae\":", "\"pearson\":", "\"ssim\":", "\"flip\":", "\"ppd\":", "\"hdr_flip\":", "\"hdr_flip_exposures\":" }) {
+	for (const char *key : { "\"width\":16", "\"height\":16", "\"rmse\":", "\"relative_mse\":", "\"relative_rmse\":", "\"brightness_ratio\":", "\"mae\":", "\"pearson\":", "\"ssim\":", "\"flip\":", "\"ppd\":", "\"hdr_flip\":", "\"hdr_flip_exposures\":" }) {
 		INFO(key);
 		CHECK(json.find(key) != String::npos);
 	}
@@ -203,6 +212,8 @@ TEST_CASE("[Metrics] JSON and text output carry every metric") {
 	const String text = r.to_text();
 	CHECK(text.find("RMSE") != String::npos);
 	CHECK(text.find("SSIM") != String::npos);
+	CHECK(text.find("relRMSE") != String::npos);
+	CHECK(text.find("ratio") != String::npos);
 	CHECK(text.find("LDR-FLIP") != String::npos);
 	CHECK(text.find("HDR-FLIP") != String::npos);
 	CHECK(r.hdr_exposures.count >= 2);

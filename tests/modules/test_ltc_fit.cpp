@@ -10,6 +10,7 @@
 
 #include "modules/ltc_fit/ltc_fit_command.h"
 #include "modules/ltc_fit/ltc_fitter.h"
+#include "modules/ltc_fit/ltc_polygon_objective.h"
 #include "modules/ltc_fit/ltc_table_io.h"
 #include "modules/ltc_fit/nelder_mead.h"
 
@@ -146,13 +147,15 @@ TEST_CASE("[LTCFit] re-fitting cells from their committed neighbour reproduces t
 	// (relative to the matrix column a cell value belongs to) leaves room for another compiler or
 	// optimisation level moving Nelder-Mead to a different point within its 1e-6 objective tolerance.
 	const int n = LTCTableIO::get_builtin_size();
-	const int cells[][2] = { { 63, 0 }, { 63, 40 }, { 45, 10 }, { 20, 32 }, { 8, 50 }, { 2, 63 }, { 30, 60 } };
+	const int cells[][2] = { { 63, 0 }, { 63, 40 }, { 45, 10 }, { 20, 32 }, { 8, 50 }, { 2, 63 }, { 30, 60 }, { 50, 40 }, { 12, 63 } };
 	for (LTCBRDFVariant variant : VARIANTS) {
 		const float *table = LTCTableIO::get_builtin_table(variant);
 		for (const auto &rc : cells) {
 			const int r = rc[0], t = rc[1];
 			const float *init = r < n - 1 ? cell_of(table, n, r + 1, t) : nullptr;
-			LTCCell cell = LTCFitter::fit_cell(variant, n, r, t, init);
+			// The engine table's grazing block was refitted with the free-axis polygon fit (issue #18).
+			const bool refit = variant == LTC_BRDF_ENGINE_GGX && LTCFitter::is_engine_refit_cell(r, t);
+			LTCCell cell = LTCFitter::fit_cell(variant, n, r, t, init, refit ? LTCFitter::engine_refit_options() : LTCFitOptions());
 			float got[8];
 			cell.write(got);
 			const float *want = cell_of(table, n, r, t);
@@ -292,8 +295,53 @@ TEST_CASE("[LTCFit] ltc-fit command rejects bad arguments") {
 	CHECK(ltc_fit_command({ "-o", "" }) == 2);
 	// A different size needs both variants (the other would be kept from the 64 x 64 table).
 	CHECK(ltc_fit_command({ "--size", "8", "--brdf", "engine" }) == 2);
+	CHECK(ltc_fit_command({ "--norm", "4" }) == 2);
+	CHECK(ltc_fit_command({ "--smoothness", "-1" }) == 2);
+	CHECK(ltc_fit_command({ "--smoothness", "x" }) == 2);
 	// A valid partial fit prints and returns 0 without writing a file.
 	CHECK(ltc_fit_command({ "ltc-fit", "--brdf", "engine", "--cells", "63:63,0:1" }) == 0);
+}
+
+TEST_CASE("[LTCFit] the polygon objective's form factor matches the closed-form configuration factor") {
+	// A 2 x 1 rectangle parallel to the receiver 1.5 above it, one corner straight above the origin
+	// (Howell's catalogue): FF = (1 / (2 pi)) (x / sx atan(y / sx) + y / sy atan(x / sy)).
+	const double a = 2.0, b = 1.0, h = 1.5;
+	const double quad[12] = { 0, 0, h, a, 0, h, a, b, h, 0, b, h };
+	const double x = a / h, y = b / h, sx = std::sqrt(1 + x * x), sy = std::sqrt(1 + y * y);
+	const double want = (x / sx * std::atan(y / sx) + y / sy * std::atan(x / sy)) / (2.0 * 3.14159265358979323846);
+	CHECK(LTCPolygonObjective::form_factor(quad, 4) == doctest::Approx(want).epsilon(1e-9));
+	// Wholly below the horizon: 0; half below: the upper half's value.
+	const double below[12] = { 0, 0, -1, 1, 0, -1, 1, 1, -1, 0, 1, -1 };
+	CHECK(LTCPolygonObjective::form_factor(below, 4) == 0.0);
+	// The identity LTC is the clamped cosine: ltc_integral == form_factor.
+	const double identity[5] = { 1, 0, 1, 0, 1 };
+	CHECK(LTCPolygonObjective::ltc_integral(identity, quad) == doctest::Approx(want).epsilon(1e-12));
+	const double singular[5] = { 1, 1, 1, 1, 1 };
+	CHECK(LTCPolygonObjective::ltc_integral(singular, quad) < 0.0);
+}
+
+TEST_CASE("[LTCFit] the free-axis polygon fit lowers the polygon-integral error of grazing cells") {
+	// Cells the floor-under-a-TV view reads (issue #18): roughness 0.3 and 0.5 at theta_v 68 and 80 degrees.
+	const int n = LTCTableIO::get_builtin_size();
+	const int cells[][2] = { { 19, 47 }, { 32, 57 } };
+	for (const auto &rc : cells) {
+		const int r = rc[0], t = rc[1];
+		INFO("cell ri ", r, " ti ", t);
+		// The 3-parameter L3 fit, the 3-parameter polygon fit and the free-axis polygon fit, one start.
+		const float *init = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX) + ((size_t)t * n + r + 1) * LTCFitter::FLOATS_PER_CELL;
+		LTCCell fixed_axis = LTCFitter::fit_cell(LTC_BRDF_ENGINE_GGX, n, r, t, init);
+		LTCFitOptions polygons_only;
+		polygons_only.polygons = true;
+		LTCCell scored = LTCFitter::fit_cell(LTC_BRDF_ENGINE_GGX, n, r, t, init, polygons_only);
+		LTCCell free_axis = LTCFitter::fit_cell(LTC_BRDF_ENGINE_GGX, n, r, t, init, LTCFitter::engine_refit_options());
+		// error_l3 holds the minimised objective (with polygons: the polygon-integral error).
+		MESSAGE("polygon error (relative MSE of test-light integrals): fixed-axis polygon fit ", scored.error_l3, ", free-axis polygon fit ", free_axis.error_l3, "; L1 lobe distance: L3 fit ",
+				fixed_axis.error_l1, ", free-axis polygon fit ", free_axis.error_l1);
+		CHECK(free_axis.error_l3 < scored.error_l3); // The 4th parameter helps on top of the objective.
+		CHECK(free_axis.error_l3 < 0.01); // Below 10 % relative RMS over the test lights.
+		const double det = (double)free_axis.c * ((double)free_axis.a * free_axis.e - (double)free_axis.b * free_axis.d);
+		CHECK(det > 0.0);
+	}
 }
 
 } // namespace TestLTCFit

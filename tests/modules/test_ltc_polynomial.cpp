@@ -42,9 +42,14 @@ namespace TestLTCPolynomial {
 // roughness 0.25 / 0.5 / 0.75 / 1) and 0.70 %, 0.93 % (Forward+, roughness 0.25 / 0.5). (One
 // polynomial per component over the whole table gave 5.9 %, 2.1 %, 2.0 %, 5.6 %.) The error is
 // largest at roughness 1 (edge of the fitted domain).
-static const double MAX_REL_025 = 0.02;
-static const double MAX_REL_050 = 0.02;
-static const double MAX_REL_075 = 0.02;
+// Since issue #18 the LUT's grazing block (roughness 0.19..0.79, theta_v >= 52 degrees) holds the
+// free-axis polygon fit while the polynomials still fit the 3-parameter table, so at roughness 0.25 /
+// 0.5 / 0.75 the two paths differ by design where the plane is seen at grazing angles: measured
+// 2.07 %, 10.4 %, 10.6 %, 3.6 % (compute) and 2.08 %, 10.4 % (Forward+); the bounds keep a margin
+// above these. The fit of the polynomials themselves is checked against that table above.
+static const double MAX_REL_025 = 0.03;
+static const double MAX_REL_050 = 0.13;
+static const double MAX_REL_075 = 0.13;
 static const double MAX_REL_100 = 0.05;
 
 static String read_text(const String &p_path) {
@@ -110,7 +115,11 @@ TEST_CASE("[LTCPolynomial] the solver rejects bad sizes and rank-deficient matri
 }
 
 TEST_CASE("[LTCPolynomial] the committed coefficients are a fit of the committed LUT and meet the RMSE bounds") {
-	const float *table = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX);
+	// The polynomials fit the 3-parameter table (the committed LUT with its free-axis block fitted
+	// again as before issue #18; see LTCFitter::get_three_parameter_engine_table).
+	std::vector<float> three_parameter;
+	REQUIRE(LTCFitter::get_three_parameter_engine_table(three_parameter));
+	const float *table = three_parameter.data();
 	const int size = LTCTableIO::get_builtin_size();
 	LTCPolynomial::Fit fit;
 	REQUIRE(LTCPolynomial::fit_table(table, size, fit));

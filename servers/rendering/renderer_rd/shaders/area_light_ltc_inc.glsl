@@ -22,6 +22,15 @@
 /* cosine space (Sutherland-Hodgman against one plane: 4 -> at most 5     */
 /* vertices). Exact, unlike the sphere form-factor approximation of       */
 /* Heitz 2017.                                                            */
+/* Surface horizon (issue #18): at grazing views the lobe D = D_o(M^-1 l) */
+/* has mass below the receiver's plane, where the BRDF times cos is 0, so */
+/* a light crossing that plane was lit by lobe mass under the surface     */
+/* (1.24x too bright on a floor seen at 10 degrees). Where a vertex of P  */
+/* is below z = 0, and only there (a real branch: lights wholly above     */
+/* pay one comparison), the specular polygon is first clipped to z >= 0   */
+/* of the receiver frame, then transformed by M^-1 and clipped to the     */
+/* cosine space's z >= 0 (4 -> 5 -> at most 6 vertices). The integral is  */
+/* then the lobe's mass over (light above the surface), as the BRDF's.    */
 /*                                                                        */
 /* Edge integral precision (thesis section 5.4.4): for unit vectors a, b  */
 /* the edge term is theta * normalize(a x b).z. Near-antipodal a, b make  */
@@ -168,6 +177,79 @@ float ltc_polygon_form_factor(vec3 p_q[4]) {
 		a = b;
 	}
 	// Lambert: integral of cos over the polygon = 1/2 sum theta_i n.gamma_i; divided by pi.
+	return abs(sum) * (0.5 / M_PI);
+}
+
+// Slot p_i of a polygon of at most 6 vertices (the surface-horizon path; named slots as above).
+vec3 ltc_clip_pick6(int p_i, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
+	return p_i == 0 ? c0 : (p_i == 1 ? c1 : (p_i == 2 ? c2 : (p_i == 3 ? c3 : (p_i == 4 ? c4 : c5))));
+}
+
+// Appends p_v as vertex n of a polygon of at most 6 vertices when p_emit.
+void ltc_clip_emit6(bool p_emit, vec3 p_v, inout int n, inout vec3 c0, inout vec3 c1, inout vec3 c2, inout vec3 c3, inout vec3 c4, inout vec3 c5) {
+	if (!p_emit || n >= 6) {
+		return;
+	}
+	c0 = n == 0 ? p_v : c0;
+	c1 = n == 1 ? p_v : c1;
+	c2 = n == 2 ? p_v : c2;
+	c3 = n == 3 ? p_v : c3;
+	c4 = n == 4 ? p_v : c4;
+	c5 = n == 5 ? p_v : c5;
+	n++;
+}
+
+// Specular form factor of the quad p_q (receiver frame) under the LTC p_m_inv with the surface horizon:
+// Sutherland-Hodgman to z >= 0 of the receiver frame (at most 5 vertices), M^-1, Sutherland-Hodgman
+// to z >= 0 of the cosine space (at most 6), then the edge integrals. Called only where the quad
+// crosses the receiver's plane; for a quad wholly above it equals ltc_polygon_form_factor(M^-1 p_q).
+float ltc_polygon_form_factor_horizon(vec3 p_q[4], mat3 p_m_inv) {
+	vec3 h0 = vec3(0.0), h1 = vec3(0.0), h2 = vec3(0.0), h3 = vec3(0.0), h4 = vec3(0.0);
+	int nh = 0;
+	for (int i = 0; i < 4; i++) {
+		vec3 a = p_q[i];
+		vec3 b = p_q[(i + 1) & 3];
+		bool a_in = a.z > 0.0;
+		bool b_in = b.z > 0.0;
+		ltc_clip_emit(a_in, p_m_inv * a, nh, h0, h1, h2, h3, h4);
+		vec3 p = mix(a, b, a.z / (a.z - b.z));
+		p.z = 0.0;
+		ltc_clip_emit(a_in != b_in, p_m_inv * p, nh, h0, h1, h2, h3, h4);
+	}
+	if (nh < 3) {
+		return 0.0; // Wholly below the surface.
+	}
+	vec3 c0 = vec3(0.0), c1 = vec3(0.0), c2 = vec3(0.0), c3 = vec3(0.0), c4 = vec3(0.0), c5 = vec3(0.0);
+	int n = 0;
+	for (int i = 0; i < 5; i++) {
+		if (i >= nh) {
+			break;
+		}
+		vec3 a = ltc_clip_pick(i, h0, h1, h2, h3, h4);
+		vec3 b = i + 1 < nh ? ltc_clip_pick(i + 1, h0, h1, h2, h3, h4) : h0;
+		bool a_in = a.z > 0.0;
+		bool b_in = b.z > 0.0;
+		ltc_clip_emit6(a_in, a, n, c0, c1, c2, c3, c4, c5);
+		vec3 p = mix(a, b, a.z / (a.z - b.z));
+		p.z = 0.0;
+		ltc_clip_emit6(a_in != b_in, p, n, c0, c1, c2, c3, c4, c5);
+	}
+	if (n < 3) {
+		return 0.0;
+	}
+	float sum = 0.0;
+	vec3 first = c0 / max(length(c0), 1e-30);
+	vec3 a = first;
+	for (int i = 0; i < 6; i++) {
+		if (i >= n) {
+			break;
+		}
+		vec3 v1 = ltc_clip_pick6(i, c0, c1, c2, c3, c4, c5);
+		vec3 v2 = i + 1 < n ? ltc_clip_pick6(i + 1, c0, c1, c2, c3, c4, c5) : c0;
+		vec3 b = i + 1 < n ? v2 / max(length(v2), 1e-30) : first;
+		sum += ltc_edge_integral(v1, v2, a, b);
+		a = b;
+	}
 	return abs(sum) * (0.5 / M_PI);
 }
 
@@ -338,11 +420,17 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 		float s = 1.0 / (a * e - b * d);
 		// GLSL matrices are column-major: columns of M^-1.
 		mat3 m_inv = mat3(vec3(s * e, 0.0, -s * d), vec3(0.0, 1.0 / c, 0.0), vec3(-s * b, 0.0, s * a));
-		vec3 qs[4];
-		for (int i = 0; i < 4; i++) {
-			qs[i] = m_inv * q[i];
+		float spec;
+		if (min(min(q[0].z, q[1].z), min(q[2].z, q[3].z)) < 0.0) {
+			// The light crosses (or is below) the receiver's plane: clip to the surface horizon first.
+			spec = ltc_polygon_form_factor_horizon(q, m_inv);
+		} else {
+			vec3 qs[4];
+			for (int i = 0; i < 4; i++) {
+				qs[i] = m_inv * q[i];
+			}
+			spec = ltc_polygon_form_factor(qs);
 		}
-		float spec = ltc_polygon_form_factor(qs);
 		// Thesis eq. 5.10.
 		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
 		r_specular += radiance * p_light.specular_amount * spec * F;
