@@ -155,9 +155,10 @@ bool DirectionalShadowRD::set_atlas_size(uint32_t p_size) {
 }
 
 uint32_t DirectionalShadowRD::get_requested_atlas_size() const {
-	if (requested_size) {
-		return requested_size;
-	}
+	return requested_size ? requested_size : get_project_atlas_size();
+}
+
+uint32_t DirectionalShadowRD::get_project_atlas_size() {
 	const int64_t v = GLOBAL_DEF(SETTING_ATLAS_SIZE, int64_t(DEFAULT_ATLAS_SIZE)).to_int();
 	if (v < 256 || v > 16384 || (v & (v - 1)) != 0) {
 		ERR_PRINT(vformat("%s must be a power of two in 256..16384; got %lld. Using %u.", SETTING_ATLAS_SIZE, (long long)v, DEFAULT_ATLAS_SIZE));

@@ -141,6 +141,8 @@ public:
 	uint32_t get_atlas_size() const { return atlas_size; }
 	// The size the next atlas gets (set_atlas_size() or the project setting, validated).
 	uint32_t get_requested_atlas_size() const;
+	// SETTING_ATLAS_SIZE (registered with its default on first call); bad values: an error and the default.
+	static uint32_t get_project_atlas_size();
 
 	// Fits the splits of every shadowed directional light of the view (LightStorage's directional order),
 	// writes their shadow index into the directional light block (re-uploaded), fills the shadow data and
