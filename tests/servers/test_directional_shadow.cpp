@@ -155,7 +155,7 @@ static double visibility_rmse(const std::vector<float> &p_open, const std::vecto
 	return r_pixels ? std::sqrt(sum / r_pixels) : 1.0;
 }
 
-TEST_CASE("[Render][DirectionalShadowRD] PSSM shadow of a box on a plane matches the Embree reference at 3 camera distances") {
+TEST_CASE("[Render][DirectionalShadowRD] the shadow of a box on a plane matches the Embree reference: PSSM at 3 camera distances, ORTHOGONAL, PSSM 2, blend_splits") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
 	{
@@ -185,22 +185,41 @@ TEST_CASE("[Render][DirectionalShadowRD] PSSM shadow of a box on a plane matches
 		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_FADE_START, 0.8f);
 		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS, 2.0f);
 		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_BIAS, 0.1f);
-		f.light_storage.light_directional_set_shadow_mode(sun, RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_4_SPLITS);
 		RID rt = f.renderer.render_target_create(W, H);
 		RID rt_open = ref_open.render_target_create(W, H);
 		RID rt_shadow = ref_shadow.render_target_create(W, H);
 		REQUIRE(rt.is_valid());
 
-		// Camera distances whose view of the box falls in splits 0, 1 and 2 (defaults 0.1, 0.2, 0.5 of 100 m).
-		const float distances[3] = { 4.0f, 15.0f, 35.0f };
-		// Soft (2 degree disk: blocker search + PCF) and hard (0 degrees: 1 texel PCF) sun shadows. Bounds: about
-		// twice the RMSE measured on lavapipe (doc/sun_sky.md).
-		const float angular_distances[2] = { 2.0f, 0.0f };
-		const double bounds[2] = { 0.04, 0.08 };
-		const double shadow_bounds[2] = { 0.2, 0.4 };
-		for (int a = 0; a < 2; a++) {
-		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SIZE, angular_distances[a]);
-		for (float dist : distances) {
+		// PSSM 4 at camera distances whose view of the box falls in splits 0, 1 and 2 (defaults 0.1, 0.2, 0.5 of
+		// 100 m), with a soft (2 degree disk: blocker search + PCF) and a hard (0 degrees: 1 texel PCF) sun; then
+		// ORTHOGONAL, PSSM 2 and blend_splits. Bounds: about twice the RMSE measured on lavapipe (doc/sun_sky.md).
+		struct Case {
+			RS::LightDirectionalShadowMode mode;
+			float angular_distance;
+			bool blend_splits;
+			float distance;
+			uint32_t passes;
+			double bound; // Visibility RMSE over the lit pixels.
+			double shadow_bound; // ... over the pixels either image shadows.
+		};
+		const RS::LightDirectionalShadowMode PSSM4 = RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_4_SPLITS;
+		const Case cases[] = {
+			{ PSSM4, 2.0f, false, 4.0f, 4, 0.04, 0.2 },
+			{ PSSM4, 2.0f, false, 15.0f, 4, 0.04, 0.2 },
+			{ PSSM4, 2.0f, false, 35.0f, 4, 0.04, 0.2 },
+			{ PSSM4, 0.0f, false, 4.0f, 4, 0.08, 0.4 },
+			{ PSSM4, 0.0f, false, 15.0f, 4, 0.08, 0.4 },
+			{ PSSM4, 0.0f, false, 35.0f, 4, 0.08, 0.4 },
+			{ RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL, 2.0f, false, 4.0f, 1, 0.04, 0.2 },
+			{ RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL, 2.0f, false, 15.0f, 1, 0.04, 0.2 },
+			{ RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_2_SPLITS, 2.0f, false, 15.0f, 2, 0.04, 0.2 },
+			{ PSSM4, 2.0f, true, 15.0f, 4, 0.04, 0.2 },
+		};
+		for (const Case &c : cases) {
+			f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SIZE, c.angular_distance);
+			f.light_storage.light_directional_set_shadow_mode(sun, c.mode);
+			f.light_storage.light_directional_set_blend_splits(sun, c.blend_splits);
+			const float dist = c.distance;
 			const Vector3 eye = Vector3(0.0f, 0.55f, 1.0f).normalized() * dist;
 			// The field of view narrows with distance so the box and its shadow keep their size on screen.
 			RenderSceneData d = make_scene(camera_at(eye, Vector3(0, 0.3f, 0)), Math::rad_to_deg(2.0f * std::atan(2.5f / dist)), W, H, 200.0f);
@@ -221,19 +240,18 @@ TEST_CASE("[Render][DirectionalShadowRD] PSSM shadow of a box on a plane matches
 			f.renderer.render_scene(d, rt);
 			const std::vector<float> shadowed = f.renderer.render_target_get_data(rt);
 			CHECK(has_pass(f.renderer.get_last_frame_profile(), "directional_shadows"));
-			CHECK(f.renderer.get_directional_shadows().get_frame_pass_count() == 4u);
+			CHECK(f.renderer.get_directional_shadows().get_frame_pass_count() == c.passes);
 			ref_shadow.render_scene(d, rt_shadow);
 			int pixels = 0, shadow_pixels = 0;
 			double mean_gpu = 0.0, mean_ref = 0.0, shadow_rmse = 1.0;
 			const double rmse = visibility_rmse(open, shadowed, ref_open.render_target_get_data(rt_open), ref_shadow.render_target_get_data(rt_shadow), pixels, mean_gpu, mean_ref, shadow_rmse, shadow_pixels);
-			MESSAGE("light_angular_distance ", angular_distances[a], ", camera distance ", dist, " m: visibility RMSE ", rmse, " over ", pixels, " lit pixels (", shadow_rmse, " over the ", shadow_pixels,
-					" shadowed ones); mean visibility GPU ", mean_gpu, " reference ", mean_ref);
+			MESSAGE("mode ", int(c.mode), " blend_splits ", c.blend_splits, " light_angular_distance ", c.angular_distance, ", camera distance ", dist, " m: visibility RMSE ", rmse, " over ", pixels,
+					" lit pixels (", shadow_rmse, " over the ", shadow_pixels, " shadowed ones); mean visibility GPU ", mean_gpu, " reference ", mean_ref);
 			CHECK(pixels > W * H / 2);
 			CHECK(shadow_pixels > 30); // The shadow is in view (else the comparison says nothing).
-			CHECK(rmse < bounds[a]);
-			CHECK(shadow_rmse < shadow_bounds[a]);
+			CHECK(rmse < c.bound);
+			CHECK(shadow_rmse < c.shadow_bound);
 			CHECK(std::fabs(mean_gpu - mean_ref) < 0.005);
-		}
 		}
 		CHECK((f.renderer.get_compiled_feature_mask() & RenderForwardClustered::SCENE_VERSION_DIRECTIONAL_SHADOWS) != 0u);
 		ref_open.render_target_free(rt_open);

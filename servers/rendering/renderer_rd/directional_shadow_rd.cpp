@@ -206,6 +206,8 @@ bool DirectionalShadowRD::_ensure_resources() {
 	if (!pipeline.is_valid()) {
 		RD::PipelineRasterizationState raster;
 		raster.cull_mode = RD::POLYGON_CULL_DISABLED; // Both sides cast (single-sided planes too).
+		// Pancaking: casters nearer the light than the box's near side flatten onto depth 0 per fragment.
+		raster.enable_depth_clamp = true;
 		RD::PipelineDepthStencilState depth;
 		depth.enable_depth_test = true;
 		depth.enable_depth_write = true;
@@ -305,6 +307,7 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 		Split splits[MAX_SPLITS];
 		compute_splits(settings, li.transform, world_from_view, p_data.cam_projection, splits, p_data.z_near, p_data.z_far);
 		const uint32_t caster_mask = light_storage->light_get_shadow_caster_mask(light);
+		const float pancake = light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_PANCAKE_SIZE);
 
 		ShadowData &sd = block.data[si];
 		const float bias = light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_BIAS);
@@ -332,6 +335,12 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 				s.z_max = std::fmax(s.z_max, hi.z);
 				pass.casters.push_back(g);
 			}
+			// directional_shadow_pancake_size (Godot's): the box starts at most that far in front of the slice's
+			// sphere; casters before it are flattened onto its near side (depth clamp), which keeps the depth
+			// range, and so the bias in metres, independent of huge casters such as a ground plane. 0: off.
+			if (pancake > 0.0f) {
+				s.z_max = std::fmin(s.z_max, s.radius + pancake);
+			}
 			pass.clip_from_world = s.get_clip_from_world();
 			memcpy(pass.rect, rects[k], sizeof(pass.rect));
 			// Atlas uv of the split's rect; (x / r, y / r) in -1..1 maps onto it (Vulkan: clip y -1 is row 0).
@@ -342,8 +351,10 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 			uv_from_clip.origin = Vector3(0.5f * (u0 + u1), 0.5f * (v0 + v1), 0.0f);
 			Projection::from_transform(uv_from_clip * pass.clip_from_world * world_from_view).to_floats(sd.shadow_from_view[k]);
 			sd.split_end[k] = s.range_end;
-			// Godot: shadow_bias / 100 in depth units, scaled by the split's size over the first split's.
-			sd.bias[k] = bias / 100.0f * (s.radius / splits[0].radius);
+			// Godot: shadow_bias / 100 times bias_scale = the split's radius over the first split's, in depth units.
+			// Units of split 0's depth range, so the offset in metres grows with the texel size (linearly: in each
+			// split's own depth units it would grow with the square, since the depth range grows too).
+			sd.bias[k] = bias / 100.0f * (s.radius / splits[0].radius) * (splits[0].z_max - splits[0].z_min) / (s.z_max - s.z_min);
 			sd.normal_bias[k] = normal_bias * 2.0f * s.radius / float(std::min(rects[k][2], rects[k][3]));
 			sd.radius[k] = s.radius;
 			sd.depth_range[k] = s.z_max - s.z_min;

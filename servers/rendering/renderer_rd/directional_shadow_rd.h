@@ -27,8 +27,11 @@
 /*                                                                        */
 /* Bias, Godot's units: shadow_bias / 100 is a depth offset in the 0..1   */
 /* depth of split 0, scaled per split by its radius over split 0's;       */
-/* shadow_normal_bias moves the receiver along its normal by that many    */
-/* texels of the split, times (1 - N.L). Soft shadows: the sun disk of    */
+/* shadow_normal_bias moves it along its normal (less the part along the  */
+/* light) by that many texels of the split, times (1 - N.L).              */
+/* directional_shadow_pancake_size: the box starts at most that far      */
+/* before the slice's sphere; nearer casters are flattened onto it (depth */
+/* clamp). Soft shadows: the sun disk of                                  */
 /* angular diameter light_angular_distance gives a penumbra of width       */
 /* 2 tan(a) * (receiver - blocker distance) (a blocker search, then PCF   */
 /* of that width: Fernando 2005, PCSS); 0 degrees: a 3 x 3 texel PCF     */

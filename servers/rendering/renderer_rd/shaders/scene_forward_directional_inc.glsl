@@ -68,7 +68,9 @@ vec2 directional_shadow_disk(int p_i, float p_rotation) {
 // a blocker search over the widest penumbra the receiver can have, then PCF of width
 // 2 tan(a) (receiver - blocker) (PCSS, Fernando 2005); at least shadow_blur texels.
 float directional_shadow_split(uint p_shadow, uint p_split, vec3 p_vertex, vec3 p_normal, vec3 p_L, float p_rotation) {
+	// Normal offset (Godot's): along the normal, more at grazing light, without its component along the light.
 	vec3 offset = p_normal * ((1.0 - max(0.0, dot(p_normal, p_L))) * directional_shadows.data[p_shadow].normal_bias[p_split]);
+	offset -= p_L * dot(p_L, offset);
 	vec4 c = directional_shadows.data[p_shadow].shadow_from_view[p_split] * vec4(p_vertex + offset, 1.0);
 	vec4 rect = directional_shadows.data[p_shadow].uv_rect[p_split];
 	if (c.x < rect.x || c.y < rect.y || c.x > rect.z || c.y > rect.w || c.z >= 1.0) {
