@@ -446,6 +446,34 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 		}
 	}
 	_fill_area_shadow_casters(*scenario, r_data);
+	// Shadowed suns cast from every mesh of the scenario, seen or not (DirectionalShadowRD culls them per
+	// split): the meshes missing from geometry and shadow_geometry join shadow_geometry, listed by no light.
+	uint32_t sun_caster_mask = 0;
+	for (const RenderSceneData::LightInstance &light : r_data.directional_lights) {
+		sun_caster_mask |= RSG::light_storage->light_has_shadow(light.light) ? RSG::light_storage->light_get_shadow_caster_mask(light.light) : 0u;
+	}
+	if (sun_caster_mask != 0) {
+		std::set<uint64_t> known;
+		for (const std::vector<RenderSceneData::GeometryInstance> *list : { &r_data.geometry, &r_data.shadow_geometry }) {
+			for (const RenderSceneData::GeometryInstance &g : *list) {
+				known.insert(g.instance.get_id());
+			}
+		}
+		for (const RID &rid : scenario->instances) {
+			const Instance *instance = instance_owner.get_or_null(rid);
+			if (!instance || !instance->visible || instance->base_type != RS::INSTANCE_MESH || !RSG::mesh_storage || !RSG::mesh_storage->owns_mesh(instance->base) || (instance->layer_mask & sun_caster_mask) == 0 || known.count(rid.get_id())) {
+				continue;
+			}
+			RenderSceneData::GeometryInstance geometry;
+			geometry.instance = rid;
+			geometry.mesh = instance->base;
+			geometry.material_override = (RSG::material_storage && RSG::material_storage->owns_material(instance->material_override)) ? instance->material_override : RID();
+			geometry.transform = instance->transform;
+			geometry.aabb = _instance_get_world_aabb(*instance);
+			geometry.layer_mask = instance->layer_mask;
+			r_data.shadow_geometry.push_back(geometry);
+		}
+	}
 	return true;
 }
 

@@ -286,7 +286,7 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
 
 	// The colour pass with every optional block compiled in.
-	const String scene_defines = "#define USE_AREA_LIGHTS\n#define USE_DIRECTIONAL_LIGHTS\n#define USE_SKY_AMBIENT\n#define AREA_METHOD_LTC\n";
+	const String scene_defines = "#define USE_AREA_LIGHTS\n#define USE_DIRECTIONAL_LIGHTS\n#define USE_DIRECTIONAL_SHADOWS\n#define USE_SKY_AMBIENT\n#define AREA_METHOD_LTC\n";
 	const std::vector<uint32_t> scene_fragment = compile_production_stage(rd, "forward_clustered/scene_forward_clustered.glsl", scene_defines, RenderingDevice::SHADER_STAGE_FRAGMENT);
 	using SU = RenderForwardClustered::SceneDataUBO;
 	check_block(scene_fragment, "SceneDataBlock",
@@ -297,7 +297,11 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	using DL = RendererRD::LightStorage::DirectionalLightData;
 	check_block(scene_fragment, "DirectionalLightData",
 			{ MEMBER(DL, direction), MEMBER(DL, energy), MEMBER(DL, color), MEMBER(DL, size), MEMBER(DL, specular_amount), MEMBER(DL, cull_mask),
-					MEMBER(DL, flags), MEMBER(DL, pad0) });
+					MEMBER(DL, flags), MEMBER(DL, shadow_index) });
+	using DS = DirectionalShadowRD::ShadowData;
+	check_block(scene_fragment, "DirectionalShadowData",
+			{ MEMBER(DS, shadow_from_view), MEMBER(DS, split_end), MEMBER(DS, bias), MEMBER(DS, normal_bias), MEMBER(DS, radius),
+					MEMBER(DS, depth_range), MEMBER(DS, uv_rect), MEMBER(DS, params), MEMBER(DS, params2) });
 	using MU = RendererRD::MaterialStorage::MaterialUBO;
 	check_block(scene_fragment, "MaterialBlock",
 			{ MEMBER(MU, albedo), MEMBER(MU, emission), MEMBER(MU, roughness), MEMBER(MU, metallic), MEMBER(MU, specular), MEMBER(MU, normal_scale),

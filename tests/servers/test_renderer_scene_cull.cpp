@@ -346,6 +346,22 @@ TEST_CASE("[SceneCull] objects outside the frustum are culled, objects in front 
 	}
 }
 
+TEST_CASE("[SceneCull] a shadowed sun adds the meshes the camera does not see to the shadow geometry") {
+	CullFixture f;
+	f.add_instance(f.mesh, at(Vector3(0, 0, -5)));
+	RID behind = f.add_instance(f.mesh, at(Vector3(0, 0, 5))); // Behind the camera: may shadow the view.
+	RID sun;
+	f.add_light(RS::LIGHT_DIRECTIONAL, 1.0f, Transform3D(), &sun);
+	CHECK(f.cull_scene().shadow_geometry.empty()); // Unshadowed sun: nothing more.
+	f.rs->light_set_shadow(sun, true);
+	const RenderSceneData data = f.cull_scene();
+	REQUIRE(data.geometry.size() == 1);
+	REQUIRE(data.shadow_geometry.size() == 1);
+	CHECK(data.shadow_geometry[0].instance == behind);
+	f.rs->light_set_shadow_caster_mask(sun, 0u);
+	CHECK(f.cull_scene().shadow_geometry.empty());
+}
+
 TEST_CASE("[SceneCull] the spot cone bound culls a spot pointing away whose range sphere is visible") {
 	CullFixture f;
 	// Spot 2 m behind the camera with range 5: its sphere reaches into the frustum.

@@ -82,6 +82,7 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 		ERR_FAIL_COND_V_MSG(!material_storage->initialize_gpu(), false, "RenderForwardClustered: material storage GPU setup failed.");
 	}
 	ERR_FAIL_COND_V_MSG(!area_shadows.initialize(light_storage, mesh_storage, light_storage->get_max_lights()), false, "RenderForwardClustered: area shadows failed to initialize.");
+	directional_shadows.initialize(light_storage, mesh_storage); // GPU resources on the first shadowed sun.
 	scene_ubo = rd->uniform_buffer_create(sizeof(SceneDataUBO));
 	rd->set_resource_name(scene_ubo, "RenderForwardClustered scene data");
 	initialized = true;
@@ -115,6 +116,7 @@ void RenderForwardClustered::finalize() {
 	sky.finalize();
 	ss_radiosity.finalize();
 	area_shadows.finalize();
+	directional_shadows.finalize();
 	cluster_builder.finalize();
 	scene_shader.clear();
 	initialized = false;
@@ -266,6 +268,9 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 	if (p_key & SCENE_VERSION_SS_RADIOSITY) {
 		defines += "#define USE_SS_RADIOSITY\n";
 	}
+	if (p_key & SCENE_VERSION_DIRECTIONAL_SHADOWS) {
+		defines += "#define USE_DIRECTIONAL_SHADOWS\n";
+	}
 	return defines;
 }
 
@@ -339,7 +344,8 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		const RID shadow_atlas = has_area ? area_shadows.get_atlas_texture() : RID();
 		const RID directional_buffer = (p_area_methods & SCENE_VERSION_DIRECTIONAL) ? light_storage->get_directional_light_buffer() : RID();
 		const RID sky_buffer = (p_area_methods & SCENE_VERSION_SKY_AMBIENT) ? sky.get_ambient_buffer() : RID();
-		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer;
+		const RID sun_atlas = (p_area_methods & SCENE_VERSION_DIRECTIONAL_SHADOWS) ? directional_shadows.get_atlas_texture() : RID();
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer && av.scene_set_directional_shadow_atlas == sun_atlas;
 		if (!area_ok) {
 			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
 				rd->free(av.scene_set);
@@ -367,11 +373,19 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 				ERR_FAIL_COND_V_MSG(!sky_buffer.is_valid(), false, "RenderForwardClustered: a sky ambient version without the sky buffer.");
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 9, sky_buffer));
 			}
+			if (p_area_methods & SCENE_VERSION_DIRECTIONAL_SHADOWS) {
+				ERR_FAIL_COND_V_MSG(!sun_atlas.is_valid(), false, "RenderForwardClustered: a directional shadow version without the directional shadow atlas.");
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 16, directional_shadows.get_data_buffer()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 17, sun_atlas));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 18, directional_shadows.get_compare_sampler()));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 19, directional_shadows.get_nearest_sampler()));
+			}
 			av.scene_set = rd->uniform_set_create(u, shader, 0);
 			av.scene_set_cluster_buffer = cluster_buffer;
 			av.scene_set_shadow_atlas = shadow_atlas;
 			av.scene_set_directional_buffer = directional_buffer;
 			av.scene_set_sky_buffer = sky_buffer;
+			av.scene_set_directional_shadow_atlas = sun_atlas;
 		}
 		if (!av.scene_set.is_valid()) {
 			return false;
@@ -427,6 +441,8 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	}
 	light_storage->update_light_buffers(p_data.lights, view_from_world, &cluster_builder);
 	light_storage->update_directional_light_buffer(p_data.directional_lights, view_from_world);
+	// Sun shadows: splits fitted to this view; nothing at all without a shadowed directional light.
+	ERR_FAIL_COND_MSG(!directional_shadows.prepare(p_data, view_from_world), "render_scene: directional shadows could not be prepared.");
 	// Sky: SH recomputed only when the sky changes; nothing at all without a sky.
 	ERR_FAIL_COND_MSG(!sky.prepare(p_data, light_storage, clip_from_view, rt->width, rt->height), "render_scene: the sky could not be prepared.");
 	// Area shadows: share the atlas and fill the shadow data of the GPU area lights (before the sets).
@@ -481,6 +497,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
 	if (light_storage->get_directional_light_count() > 0) {
 		area_methods |= SCENE_VERSION_DIRECTIONAL;
+	}
+	if (directional_shadows.has_frame_shadows()) {
+		area_methods |= SCENE_VERSION_DIRECTIONAL_SHADOWS;
 	}
 	if (sky.has_frame_ambient()) {
 		area_methods |= SCENE_VERSION_SKY_AMBIENT;
@@ -568,6 +587,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		rd->capture_timestamp(prefix + "area_shadows"); // Profiled only in frames with shadowed area lights.
 	}
 
+	// 0b. Directional shadow splits (only with a shadowed directional light in view).
+	if (directional_shadows.has_frame_shadows()) {
+		rd->draw_command_begin_label("Render Directional Shadows");
+		directional_shadows.render_shadows();
+		rd->draw_command_end_label();
+		rd->capture_timestamp(prefix + "directional_shadows");
+	}
+
 	// 1. Depth pre-pass.
 	rd->draw_command_begin_label("Render Depth Pre-Pass");
 	RD::FramebufferFormatID depth_format = rd->framebuffer_get_format(rt->fb_depth);
@@ -653,9 +680,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const int pass_count = 9;
-	const char *names[pass_count] = { "begin", "area_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky" };
-	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+	const int pass_count = 10;
+	const char *names[pass_count] = { "begin", "area_shadows", "directional_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);

@@ -21,7 +21,9 @@
 /* "area_banding" (ADAPTIVE area shadows, only in frames with quad tests, */
 /* recorded after the depth pre-pass whose depth they read),             */
 /* "cluster_build", "opaque", "ss_radiosity" (only with SSIL/SSAO),      */
-/* "sky" (only with a sky background) in ms.                              */
+/* "sky" (only with a sky background) in ms; "directional_shadows" (the   */
+/* sun's split depth passes, after "area_shadows"; only in frames with a  */
+/* shadowed directional light).                                           */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
 /* (USE_AREA_LIGHTS) only when the view has area lights, from a ShaderRD  */
@@ -49,6 +51,7 @@
 #include "core/templates/rid_owner.h"
 #include "servers/rendering/renderer_rd/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
+#include "servers/rendering/renderer_rd/directional_shadow_rd.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
 #include "servers/rendering/renderer_rd/effects/ss_radiosity_rd.h"
 #include "servers/rendering/renderer_rd/effects/sky_rd.h"
@@ -152,6 +155,7 @@ private:
 	SkyRD sky; // Sky background and SH ambient; nothing exists before the first view with a sky.
 	SSRadiosityRD ss_radiosity; // SSIL/SSAO; nothing exists before the first view that enables one.
 	AreaShadowRendererRD area_shadows; // Area soft shadows: atlas, depth passes, bindings 12-14 of the area variant.
+	DirectionalShadowRD directional_shadows; // Sun shadows: own atlas, one depth pass per split, bindings 16-19.
 	RID_Owner<RenderTarget> render_target_owner{ "RenderForwardClustered::RenderTarget" };
 
 	RID scene_ubo;
@@ -168,6 +172,7 @@ private:
 		RID scene_set_shadow_atlas; // Area shadow atlas texture scene_set was made with (RID() without area lights).
 		RID scene_set_directional_buffer; // Directional light buffer scene_set was made with (RID() without).
 		RID scene_set_sky_buffer; // Sky ambient buffer scene_set was made with (RID() without).
+		RID scene_set_directional_shadow_atlas; // Directional shadow atlas scene_set was made with (RID() without).
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
@@ -253,11 +258,17 @@ public:
 	static constexpr uint32_t SCENE_VERSION_SKY_AMBIENT = 1u << 11; // USE_SKY_AMBIENT: binding 9, the sky's SH.
 	// USE_SS_RADIOSITY: the colour pass also writes the image-space radiosity inputs (locations 1-3).
 	static constexpr uint32_t SCENE_VERSION_SS_RADIOSITY = 1u << 12;
-	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY;
+	// USE_DIRECTIONAL_SHADOWS: some directional light of the view casts shadows this frame (bindings 16-19,
+	// directional_shadow_rd.h); always together with SCENE_VERSION_DIRECTIONAL.
+	static constexpr uint32_t SCENE_VERSION_DIRECTIONAL_SHADOWS = 1u << 14;
+	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY | SCENE_VERSION_DIRECTIONAL_SHADOWS;
 	// get_area_method_defines() plus the feature defines of p_key.
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
 	uint32_t get_compiled_feature_mask() const { return compiled_feature_mask; }
+
+	// Directional (sun) shadows: atlas, splits and passes of the last frame (tests, bench).
+	DirectionalShadowRD &get_directional_shadows() { return directional_shadows; }
 
 	// The sky (tests: update count, resources).
 	const SkyRD &get_sky() const { return sky; }

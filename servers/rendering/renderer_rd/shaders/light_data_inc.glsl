@@ -64,7 +64,7 @@ struct DirectionalLightData {
 	float specular_amount; // 32: "light_specular".
 	uint cull_mask; // 36: "light_cull_mask".
 	uint flags; // 40: DIRECTIONAL_FLAG_*.
-	float pad0; // 44
+	int shadow_index; // 44: into directional_shadows.data (USE_DIRECTIONAL_SHADOWS), -1: unshadowed.
 };
 
 #endif // LIGHT_DATA_INC_GLSL

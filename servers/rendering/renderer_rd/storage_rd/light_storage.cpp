@@ -350,6 +350,7 @@ bool LightStorage::fill_directional_light_data(RID p_light, const Transform3D &p
 	r_data.specular_amount = light->param[RS::LIGHT_PARAM_SPECULAR];
 	r_data.cull_mask = light->cull_mask;
 	r_data.flags = 0;
+	r_data.shadow_index = -1; // DirectionalShadowRD::prepare() sets it for shadowed lights in view.
 	return true;
 }
 
@@ -375,8 +376,15 @@ void LightStorage::update_directional_light_buffer(const std::vector<RenderScene
 	if (directional_block.count == 0) {
 		return; // Nothing to upload; a scene without a sun never creates the buffer.
 	}
+	upload_directional_light_buffer();
+}
+
+void LightStorage::upload_directional_light_buffer() {
+	if (directional_block.count == 0) {
+		return;
+	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
-	ERR_FAIL_NULL_MSG(rd, "update_directional_light_buffer: no RenderingDevice.");
+	ERR_FAIL_NULL_MSG(rd, "upload_directional_light_buffer: no RenderingDevice.");
 	if (!directional_light_buffer.is_valid()) {
 		directional_light_buffer = rd->uniform_buffer_create(sizeof(DirectionalLightBlock));
 		ERR_FAIL_COND_MSG(!directional_light_buffer.is_valid(), "LightStorage: the directional light buffer could not be created.");

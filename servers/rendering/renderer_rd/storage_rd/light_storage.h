@@ -96,7 +96,7 @@ public:
 		float specular_amount; // LIGHT_PARAM_SPECULAR.
 		uint32_t cull_mask; // light_cull_mask.
 		uint32_t flags; // DIRECTIONAL_FLAG_*.
-		float pad0;
+		int32_t shadow_index; // Index into the directional shadow block (DirectionalShadowRD), -1: unshadowed.
 	};
 	static_assert(sizeof(DirectionalLightData) == 48, "DirectionalLightData must match shaders/light_data_inc.glsl (48 bytes).");
 	// Header + array of the directional light uniform buffer (std140): count, then the lights.
@@ -168,6 +168,14 @@ public:
 	// angular radius in radians).
 	bool fill_directional_light_data(RID p_light, const Transform3D &p_world_from_light, const Transform3D &p_view_from_world, DirectionalLightData &r_data) const;
 	RID get_directional_light_buffer() const { return directional_light_buffer; }
+	// DirectionalShadowRD::prepare(): the shadow of GPU directional light p_index this frame (-1: none);
+	// upload_directional_light_buffer() sends the block again after such changes.
+	void directional_light_set_shadow_index(uint32_t p_index, int32_t p_shadow_index) {
+		if (p_index < directional_block.count) {
+			directional_block.data[p_index].shadow_index = p_shadow_index;
+		}
+	}
+	void upload_directional_light_buffer();
 	uint32_t get_directional_light_count() const { return directional_block.count; }
 	uint32_t get_directional_lights_dropped() const { return directional_dropped; }
 	const DirectionalLightBlock &get_directional_light_block() const { return directional_block; }

@@ -17,6 +17,7 @@
 /* Any colour variant may carry USE_DIRECTIONAL_LIGHTS (a version of a   */
 /* view with a DirectionalLight3D: binding 8 and the directional loop,   */
 /* scene_forward_directional_inc.glsl); without it there is no sun code.*/
+/* USE_DIRECTIONAL_SHADOWS (with it): the sun shadow lookup, bindings 16-19. */
 /* USE_SKY_AMBIENT adds the sky's irradiance SH (binding 9, SkyRD).       */
 /* USE_SS_RADIOSITY (SSIL/SSAO on, effects/ss_radiosity_rd.h) also writes */
 /* location 1 the view normal, 2 the diffuse albedo albedo * (1 -         */
@@ -319,7 +320,13 @@ void main() {
 		if ((directional_lights.data[i].cull_mask & draw.layer_mask) == 0u) {
 			continue;
 		}
-		light_process_directional(directional_lights.data[i], N, V, diffuse_mode, roughness, f0, f90, specular_enabled, 1.0, diffuse_light, specular_light);
+		float sun_shadow = 1.0;
+#ifdef USE_DIRECTIONAL_SHADOWS
+		if (directional_lights.data[i].shadow_index >= 0) { // Shadowed lights only (directional_shadow_rd.h).
+			sun_shadow = directional_shadow_visibility(uint(directional_lights.data[i].shadow_index), vertex, N, -directional_lights.data[i].direction);
+		}
+#endif
+		light_process_directional(directional_lights.data[i], N, V, diffuse_mode, roughness, f0, f90, specular_enabled, sun_shadow, diffuse_light, specular_light);
 	}
 #endif
 
