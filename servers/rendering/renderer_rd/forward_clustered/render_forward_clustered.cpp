@@ -658,7 +658,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 
 	// 3b. SSIL / SSAO: image-space radiosity from the opaque pass's targets, composed into the colour.
 	if (ss_frame.is_active()) {
-		rd->draw_command_begin_label("Image-Space Radiosity");
+		rd->draw_command_begin_label("SSIL/SSAO (Image-Space Radiosity)");
 		ss_radiosity.render(p_render_target, clip_from_view, env.ss_lighting, ss_frame, prefix + "ss_radiosity");
 		rd->draw_command_end_label();
 	}
