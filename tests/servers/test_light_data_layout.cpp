@@ -18,6 +18,7 @@
 #include "servers/rendering/renderer_rd/effects/sky_rd.h"
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
+#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "tests/servers/rd_test_fixture.h"
 
 #include <doctest/doctest.h>
@@ -297,6 +298,11 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	check_block(scene_fragment, "DirectionalLightData",
 			{ MEMBER(DL, direction), MEMBER(DL, energy), MEMBER(DL, color), MEMBER(DL, size), MEMBER(DL, specular_amount), MEMBER(DL, cull_mask),
 					MEMBER(DL, flags), MEMBER(DL, pad0) });
+	using MU = RendererRD::MaterialStorage::MaterialUBO;
+	check_block(scene_fragment, "MaterialBlock",
+			{ MEMBER(MU, albedo), MEMBER(MU, emission), MEMBER(MU, roughness), MEMBER(MU, metallic), MEMBER(MU, specular), MEMBER(MU, normal_scale),
+					MEMBER(MU, flags), MEMBER(MU, diffuse_mode), MEMBER(MU, pad0), MEMBER(MU, pad1), MEMBER(MU, uv1), MEMBER(MU, roughness_channel),
+					MEMBER(MU, metallic_channel) });
 	using SA = SkyRD::SkyAmbientUBO;
 	check_block(scene_fragment, "SkyAmbient", { MEMBER(SA, sh), MEMBER(SA, pad) });
 

@@ -343,7 +343,6 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, light_storage->get_omni_light_buffer()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, light_storage->get_spot_light_buffer()));
 			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, cluster_buffer));
-			u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 4, material_storage->get_sampler()));
 			if (has_area) {
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 5, light_storage->get_area_light_buffer()));
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 6, ltc_lut.get_texture()));
@@ -381,7 +380,6 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, light_storage->get_omni_light_buffer()));
 		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 2, light_storage->get_spot_light_buffer()));
 		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 3, cluster_buffer));
-		u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 4, material_storage->get_sampler()));
 		scene_set_color = rd->uniform_set_create(u, scene_shader.version_get_shader(SCENE_SHADER_COLOR), 0);
 		scene_set_cluster_buffer = cluster_buffer;
 	}
