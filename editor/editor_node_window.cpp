@@ -350,9 +350,13 @@ public:
 
 	void draw_output() {
 		if (!load_report.empty()) {
-			ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Scene load report: %d line(s) (kept as placeholders or text, or not applied):", (int)load_report.size());
+			// Wrapped like Godot's Output dock: a report line never runs past the panel.
+			ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+			ImGui::TextWrapped("Scene load report: %d line(s) (kept as placeholders or text, or not applied):", (int)load_report.size());
+			ImGui::PopStyleColor();
 			for (const String &line : load_report) {
-				ImGui::BulletText("%s", line.c_str());
+				ImGui::Bullet();
+				ImGui::TextWrapped("%s", line.c_str());
 			}
 			ImGui::Separator();
 		}
