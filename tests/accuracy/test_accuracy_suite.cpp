@@ -17,6 +17,8 @@
 
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -150,7 +152,7 @@ TEST_CASE("[Accuracy] write_csv and summary_table report every row") {
 	c.receiver = "sphere";
 	CHECK(AccuracySuite::scene_class(c) == AccuracySuite::CLASS_OBLIQUE);
 
-	const String path = "/tmp/godot_area_test_accuracy.csv";
+	const String path = "/tmp/godot_area_test_accuracy_" + std::to_string(getpid()) + ".csv";
 	String error;
 	REQUIRE(AccuracySuite::write_csv(path, rows, &error));
 	std::ifstream in(path);
@@ -382,7 +384,7 @@ namespace TestAccuracySuite {
 // Not part of the default run (it makes and finalizes its own RenderingDevice, so it must run alone):
 //   godot-area-tests --test-case="*command line*" --no-skip
 TEST_CASE("[Accuracy][Full] the command line runs the CI subset on its own device and writes the CSV" * doctest::skip()) {
-	const String csv = "/tmp/godot_area_accuracy_command_test.csv";
+	const String csv = "/tmp/godot_area_accuracy_command_test_" + std::to_string(getpid()) + ".csv";
 	std::remove(csv.c_str());
 	CHECK(accuracy_command({ "--accuracy", "--ci", "--filter", "_far", "--resolution", "16", "--csv", csv }) == 0);
 	std::ifstream in(csv);

@@ -10,6 +10,8 @@
 
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -56,7 +58,7 @@ int run_cli_process(const String &p_args) {
 
 TEST_CASE("[CLI][Render] render and reference of the embedded demo write finite, non-black EXRs that agree") {
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli";
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
 	String gpu = (dir / "demo.exr").string(), ref = (dir / "demo_ref.exr").string(), png = (dir / "demo.png").string();
 	CHECK(run_cli_process("render --width 64 --height 36 -o '" + gpu + "' --png '" + png + "'") == 0);
@@ -83,7 +85,7 @@ TEST_CASE("[CLI][Render] render and reference of the embedded demo write finite,
 
 TEST_CASE("[CLI][Render] render draws until ADAPTIVE area shadows settle (--settle-frames)") {
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_settle";
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_settle_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
 	// The demo with its three area lights shadowed in ADAPTIVE mode.
 	std::ifstream in(String(GODOT_AREA_ROOT) + "/demo/demo.tscn");
@@ -126,7 +128,7 @@ TEST_CASE("[CLI][Render] render draws until ADAPTIVE area shadows settle (--sett
 
 // Runs bin/godot-area and returns its exit status; stdout and stderr together in r_output.
 int run_cli_capture(const String &p_args, String *r_output) {
-	std::filesystem::path log = std::filesystem::temp_directory_path() / "godot_area_test_cli_capture.log";
+	std::filesystem::path log = std::filesystem::temp_directory_path() / ("godot_area_test_cli_capture_" + std::to_string(getpid()) + ".log");
 	String cmd = String("'") + GODOT_AREA_CLI_PATH + "' " + p_args + " > '" + log.string() + "' 2>&1";
 	int status = std::system(cmd.c_str());
 	std::ifstream f(log);
@@ -151,7 +153,7 @@ TEST_CASE("[CLI] a failed write exits non-zero, names the path and never says \"
 	CHECK_MESSAGE(out.find("\"/dev/full\"") != String::npos, out);
 	CHECK_MESSAGE(out.find("wrote /dev/full") == String::npos, out);
 
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_full";
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_full_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
 	String exr = (dir / "ok.exr").string();
 	CHECK(run_cli_capture("render --width 16 --height 16 -o '" + exr + "' --png /dev/full", &out) == 1);
@@ -161,7 +163,7 @@ TEST_CASE("[CLI] a failed write exits non-zero, names the path and never says \"
 }
 
 TEST_CASE("[CLI] a malformed scene file exits 2 with an error naming file and line") {
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_bad_scene";
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_bad_scene_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
 	const String bad = (dir / "bad.tscn").string();
 	{
@@ -204,7 +206,7 @@ static String _lights_scene(int p_lights, bool p_bad_property) {
 
 TEST_CASE("[CLI][Render] lights over capacity warn once with counts; --strict turns warnings into exit 1") {
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_cli_strict";
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_strict_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
 	const String many = (dir / "many.tscn").string(), bad = (dir / "bad.tscn").string(), exr = (dir / "x.exr").string();
 	{
