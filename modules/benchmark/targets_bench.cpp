@@ -333,6 +333,10 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 				configs[add(vformat("SHADOW_%d_PCF", grid * grid), vp)].sample_filter_off = true;
 			}
 			configs[add("SHADOW_25_PCF", configs[find("SHADOW_25")].viewport)].sample_filter_off = true;
+			RID g = scenes.scenario_with_floor();
+			scenes.add_box(g, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
+			scenes.add_shadow_light(g, true, RS::LIGHT_AREA_SHADOW_FIXED, 9);
+			add("SHADOW_81", scenes.viewport(g, w, h));
 		}
 		// C1: the embedded demo scene (the CLI's default scene) in a scene tree.
 		SceneTree tree;
@@ -426,7 +430,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 			ratio("P4", "no-area scene / same frame with the area code off", "NO_AREA", "NO_AREA_CODE_OFF", 1.01, true);
 			ratio("S1", "one 25-map shadowed area light / unshadowed", "SHADOW_25", "SHADOW_OFF", 1.25, true);
-			for (const char *name : { "SHADOW_4", "SHADOW_9", "SHADOW_25", "SHADOW_4_PCF", "SHADOW_9_PCF", "SHADOW_25_PCF" }) {
+			for (const char *name : { "SHADOW_4", "SHADOW_9", "SHADOW_25", "SHADOW_81", "SHADOW_4_PCF", "SHADOW_9_PCF", "SHADOW_25_PCF" }) {
 				ratio("S2", vformat("%s / the PCSS baseline", name), name, "SHADOW_PCSS", 1.5, String(name) == "SHADOW_4");
 			}
 			const int demo_index = find("DEMO");

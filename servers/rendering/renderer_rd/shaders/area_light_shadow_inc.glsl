@@ -321,7 +321,7 @@ float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p
 	// Pattern shift of a map: golden-ratio steps of its other coordinate, so the maps of one row (or
 	// column), which throw the same edge positions across it, sample between each other's points.
 	// Taps per axis of each map's patterns (search and filter): the light's maps x taps stay about constant.
-	int taps = p_count <= 4u ? 6 : (p_count <= 9u ? 4 : (p_count <= 25u ? 2 : 1));
+	int taps = p_count <= 4u ? 6 : (p_count <= 9u ? 4 : (p_count <= 25u ? 3 : 1));
 	// The search runs on every lit pixel in range (the filter only where it finds blockers): sparser.
 	int search_taps = p_count <= 4u ? 4 : (p_count <= 9u ? 2 : 1);
 	vec2 ratio = vec2(1e6, -1e6);
