@@ -48,6 +48,7 @@ void register_scene_types() {
 	GDREGISTER_ABSTRACT_CLASS(Material);
 	GDREGISTER_ABSTRACT_CLASS(BaseMaterial3D);
 	GDREGISTER_CLASS(StandardMaterial3D);
+	GDREGISTER_CLASS(ORMMaterial3D);
 	GDREGISTER_ABSTRACT_CLASS(Mesh);
 	GDREGISTER_CLASS(ArrayMesh);
 	GDREGISTER_ABSTRACT_CLASS(PrimitiveMesh);
@@ -55,6 +56,10 @@ void register_scene_types() {
 	GDREGISTER_CLASS(QuadMesh);
 	GDREGISTER_CLASS(BoxMesh);
 	GDREGISTER_CLASS(SphereMesh);
+	GDREGISTER_CLASS(CylinderMesh);
+	GDREGISTER_CLASS(CapsuleMesh);
+	GDREGISTER_CLASS(TorusMesh);
+	GDREGISTER_CLASS(PrismMesh);
 	GDREGISTER_CLASS(ProceduralSkyMaterial);
 	GDREGISTER_CLASS(Sky);
 	GDREGISTER_CLASS(Environment);

@@ -78,6 +78,32 @@ public:
 		MATERIAL_SPECULAR_DISABLED,
 	};
 
+	// Which channel of a roughness or metallic texture is read (BaseMaterial3D::TextureChannel).
+	enum MaterialTextureChannel {
+		MATERIAL_TEXTURE_CHANNEL_RED,
+		MATERIAL_TEXTURE_CHANNEL_GREEN,
+		MATERIAL_TEXTURE_CHANNEL_BLUE,
+		MATERIAL_TEXTURE_CHANNEL_ALPHA,
+		MATERIAL_TEXTURE_CHANNEL_GRAYSCALE,
+	};
+
+	// BaseMaterial3D::TextureFilter. Textures have no mip chain here: the *_WITH_MIPMAPS filters read
+	// the base level with their nearest or linear filter.
+	enum MaterialTextureFilter {
+		MATERIAL_TEXTURE_FILTER_NEAREST,
+		MATERIAL_TEXTURE_FILTER_LINEAR,
+		MATERIAL_TEXTURE_FILTER_NEAREST_WITH_MIPMAPS,
+		MATERIAL_TEXTURE_FILTER_LINEAR_WITH_MIPMAPS, // Godot's default.
+		MATERIAL_TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC,
+		MATERIAL_TEXTURE_FILTER_LINEAR_WITH_MIPMAPS_ANISOTROPIC,
+	};
+	// The weights dot()-ed with a texel to read p_channel (GRAYSCALE: the mean of r, g, b, as Godot);
+	// the renderers convert the channel here.
+	static void material_texture_channel_weights(MaterialTextureChannel p_channel, float r_weights[4]);
+	static bool material_texture_filter_is_nearest(MaterialTextureFilter p_filter) {
+		return p_filter == MATERIAL_TEXTURE_FILTER_NEAREST || p_filter == MATERIAL_TEXTURE_FILTER_NEAREST_WITH_MIPMAPS || p_filter == MATERIAL_TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC;
+	}
+
 	// Typed parameters of our one built-in material (StandardMaterial3D's subset), set as a whole
 	// with material_set_params(). Simpler than Godot's per-uniform material_set_param(name, Variant).
 	// Colours are sRGB as the inspector shows them; the renderer converts them to linear once.
@@ -85,7 +111,14 @@ public:
 		Color albedo = Color(1, 1, 1, 1); // albedo_color (sRGB).
 		RID albedo_texture; // albedo_texture (texels sRGB-encoded, decoded by the renderer).
 		float roughness = 1.0f; // roughness, 0..1.
+		RID roughness_texture; // roughness_texture (linear): roughness *= its roughness_texture_channel.
+		MaterialTextureChannel roughness_texture_channel = MATERIAL_TEXTURE_CHANNEL_RED;
 		float metallic = 0.0f; // metallic, 0..1.
+		RID metallic_texture; // metallic_texture (linear): metallic *= its metallic_texture_channel.
+		MaterialTextureChannel metallic_texture_channel = MATERIAL_TEXTURE_CHANNEL_RED;
+		Vector3 uv1_scale = Vector3(1, 1, 1); // uv1_scale: UV = UV * scale.xy + offset.xy (z unused: no triplanar).
+		Vector3 uv1_offset; // uv1_offset.
+		MaterialTextureFilter texture_filter = MATERIAL_TEXTURE_FILTER_LINEAR_WITH_MIPMAPS;
 		float specular = 0.5f; // metallic_specular, 0..1 (0.5 = 4% F0).
 		RID normal_texture; // normal_texture (linear, OpenGL convention +Y up); used when valid.
 		float normal_scale = 1.0f; // normal_scale.
@@ -493,6 +526,13 @@ public:
 	virtual uint64_t get_rendering_info(RenderingInfo p_info) const = 0;
 	// Renderer tests: when true the renderer shades every light per pixel (no clustering).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
+	// Benchmarks: when true the renderer skips its per-frame area-light work (area shadow frame setup,
+	// AUTO receiver scan), the baseline a scene without area lights is timed against ("pays nothing").
+	virtual void set_debug_disable_area_lights(bool p_disable) = 0;
+	// Shader statistics: the colour pass's fragment sources as the renderer composes them, as (file name,
+	// GLSL): "base.frag" without area lights, then "area_<METHOD>.frag" per area shading method. Empty
+	// for renderers without GLSL.
+	virtual std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const = 0;
 
 	RenderingServer();
 	virtual ~RenderingServer();

@@ -167,6 +167,18 @@ ReferenceRenderer::ShadingMaterial ReferenceRenderer::_resolve_material(RID p_ma
 	if (p.normal_texture.is_valid() && material_storage->owns_texture(p.normal_texture)) {
 		m.normal_texture = material_storage->texture_get_image(p.normal_texture);
 	}
+	if (p.roughness_texture.is_valid() && material_storage->owns_texture(p.roughness_texture)) {
+		m.roughness_texture = material_storage->texture_get_image(p.roughness_texture);
+	}
+	if (p.metallic_texture.is_valid() && material_storage->owns_texture(p.metallic_texture)) {
+		m.metallic_texture = material_storage->texture_get_image(p.metallic_texture);
+	}
+	// The GPU's conversions (RendererRD::MaterialStorage::_make_ubo).
+	RS::material_texture_channel_weights(p.roughness_texture_channel, m.roughness_channel);
+	RS::material_texture_channel_weights(p.metallic_texture_channel, m.metallic_channel);
+	m.uv1_scale = Vector2(p.uv1_scale.x, p.uv1_scale.y);
+	m.uv1_offset = Vector2(p.uv1_offset.x, p.uv1_offset.y);
+	m.nearest = RS::material_texture_filter_is_nearest(p.texture_filter);
 	return m;
 }
 
@@ -314,6 +326,17 @@ bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_inst
 /*************************************************************************/
 /* Texture sampling                                                      */
 /*************************************************************************/
+
+Color reference_sample_texture_nearest(const Image &p_image, const Vector2 &p_uv) {
+	const int w = p_image.get_width();
+	const int h = p_image.get_height();
+	if (w <= 0 || h <= 0) {
+		return Color(1, 1, 1, 1);
+	}
+	auto wrap = [](float p_t, int p_n) { long i = long(std::floor(p_t * float(p_n))) % p_n; return int(i < 0 ? i + p_n : i); };
+	const float *t = p_image.ptr() + (size_t(wrap(p_uv.y, h)) * w + wrap(p_uv.x, w)) * 4;
+	return Color(t[0], t[1], t[2], t[3]);
+}
 
 Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv) {
 	const int w = p_image.get_width();
@@ -683,13 +706,15 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 	Vector3 vertex = s.positions[i0] * b0 + s.positions[i1] * b1 + s.positions[i2] * b2;
 	Vector3 normal_interp = s.normals[i0] * b0 + s.normals[i1] * b1 + s.normals[i2] * b2;
 	Vector2 uv = s.uvs[i0] * b0 + s.uvs[i1] * b1 + s.uvs[i2] * b2;
+	uv = uv * m.uv1_scale + m.uv1_offset;
+	auto sample = [&m](const Image &p_image, const Vector2 &p_uv) { return m.nearest ? reference_sample_texture_nearest(p_image, p_uv) : reference_sample_texture_bilinear(p_image, p_uv); };
 	const bool front_facing = s.face_normals[prim].dot(dir) < 0.0f;
 
 	// Fragment shader (scene_forward_clustered.glsl).
 	Vector3 albedo = m.albedo;
 	float alpha = m.alpha;
 	if (m.albedo_texture) {
-		Color texel = reference_sample_texture_bilinear(*m.albedo_texture, uv);
+		Color texel = sample(*m.albedo_texture, uv);
 		albedo = albedo * Vector3(Color::srgb_to_linear_channel(texel.r), Color::srgb_to_linear_channel(texel.g), Color::srgb_to_linear_channel(texel.b));
 		alpha *= texel.a;
 	}
@@ -707,15 +732,24 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		Vector3 binormal_interp = s.binormals[i0] * b0 + s.binormals[i1] * b1 + s.binormals[i2] * b2;
 		Vector3 T = (tangent_interp - N * N.dot(tangent_interp)).normalized();
 		Vector3 B = binormal_interp.normalized();
-		Color t = reference_sample_texture_bilinear(*m.normal_texture, uv);
+		Color t = sample(*m.normal_texture, uv);
 		Vector3 nm(t.r * 2.0f - 1.0f, t.g * 2.0f - 1.0f, t.b * 2.0f - 1.0f);
 		nm.x *= m.normal_scale;
 		nm.y *= m.normal_scale;
 		N = (T * nm.x + B * nm.y + N * std::max(nm.z, 1e-4f)).normalized();
 	}
 
-	float roughness = glsl_clamp(m.roughness, 0.0f, 1.0f);
-	float metallic = glsl_clamp(m.metallic, 0.0f, 1.0f);
+	auto channel = [](const Color &p_texel, const float p_weights[4]) { return p_texel.r * p_weights[0] + p_texel.g * p_weights[1] + p_texel.b * p_weights[2] + p_texel.a * p_weights[3]; };
+	float roughness = m.roughness;
+	if (m.roughness_texture) {
+		roughness *= channel(sample(*m.roughness_texture, uv), m.roughness_channel);
+	}
+	float metallic = m.metallic;
+	if (m.metallic_texture) {
+		metallic *= channel(sample(*m.metallic_texture, uv), m.metallic_channel);
+	}
+	roughness = glsl_clamp(roughness, 0.0f, 1.0f);
+	metallic = glsl_clamp(metallic, 0.0f, 1.0f);
 	float dielectric = 0.16f * m.specular * m.specular;
 	Vector3 f0 = Vector3(dielectric, dielectric, dielectric) * (1.0f - metallic) + albedo * metallic;
 	float f90 = brdf_specular_f90(f0, metallic);

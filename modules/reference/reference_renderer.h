@@ -126,6 +126,13 @@ private:
 		bool cull_back = true;
 		const Image *albedo_texture = nullptr; // Valid during render_scene() only.
 		const Image *normal_texture = nullptr;
+		const Image *roughness_texture = nullptr; // Read through roughness_channel (weights per channel).
+		const Image *metallic_texture = nullptr;
+		float roughness_channel[4] = { 1, 0, 0, 0 };
+		float metallic_channel[4] = { 1, 0, 0, 0 };
+		Vector2 uv1_scale = Vector2(1, 1);
+		Vector2 uv1_offset;
+		bool nearest = false; // texture_filter NEAREST*: Vulkan NEAREST instead of LINEAR.
 	};
 
 	// One mesh surface of one instance, in world space (one Embree geometry).
@@ -178,3 +185,5 @@ private:
 // Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres
 // at (i + 0.5) / size), as the GPU's material sampler. Returns raw texels (no colour conversion).
 Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv);
+// Vulkan NEAREST with REPEAT: the texel holding p_uv * size.
+Color reference_sample_texture_nearest(const Image &p_image, const Vector2 &p_uv);

@@ -36,6 +36,21 @@ RS::MaterialParams BaseMaterial3D::get_params() const {
 	p.albedo_texture = albedo_texture.is_valid() ? albedo_texture->get_rid() : RID();
 	p.roughness = roughness;
 	p.metallic = metallic;
+	if (orm) {
+		const RID orm_rid = orm_texture.is_valid() ? orm_texture->get_rid() : RID();
+		p.roughness_texture = orm_rid;
+		p.roughness_texture_channel = RS::MATERIAL_TEXTURE_CHANNEL_GREEN;
+		p.metallic_texture = orm_rid;
+		p.metallic_texture_channel = RS::MATERIAL_TEXTURE_CHANNEL_BLUE;
+	} else {
+		p.roughness_texture = roughness_texture.is_valid() ? roughness_texture->get_rid() : RID();
+		p.roughness_texture_channel = RS::MaterialTextureChannel(roughness_texture_channel);
+		p.metallic_texture = metallic_texture.is_valid() ? metallic_texture->get_rid() : RID();
+		p.metallic_texture_channel = RS::MaterialTextureChannel(metallic_texture_channel);
+	}
+	p.uv1_scale = uv1_scale;
+	p.uv1_offset = uv1_offset;
+	p.texture_filter = RS::MaterialTextureFilter(texture_filter);
 	p.specular = specular;
 	p.normal_texture = (normal_enabled && normal_texture.is_valid()) ? normal_texture->get_rid() : RID();
 	p.normal_scale = normal_scale;
@@ -150,7 +165,58 @@ void BaseMaterial3D::set_normal_texture(const Ref<Texture2D> &p_texture) {
 	_update_params();
 }
 
+void BaseMaterial3D::set_metallic_texture(const Ref<Texture2D> &p_texture) {
+	metallic_texture = p_texture;
+	_update_params();
+}
+
+void BaseMaterial3D::set_metallic_texture_channel(TextureChannel p_channel) {
+	ERR_FAIL_INDEX_MSG((int)p_channel, TEXTURE_CHANNEL_MAX, vformat("metallic_texture_channel must be 0..%d (Red, Green, Blue, Alpha, Gray); got %d. The old value is kept.", TEXTURE_CHANNEL_MAX - 1, (int)p_channel));
+	metallic_texture_channel = p_channel;
+	_update_params();
+}
+
+void BaseMaterial3D::set_roughness_texture(const Ref<Texture2D> &p_texture) {
+	roughness_texture = p_texture;
+	_update_params();
+}
+
+void BaseMaterial3D::set_roughness_texture_channel(TextureChannel p_channel) {
+	ERR_FAIL_INDEX_MSG((int)p_channel, TEXTURE_CHANNEL_MAX, vformat("roughness_texture_channel must be 0..%d (Red, Green, Blue, Alpha, Gray); got %d. The old value is kept.", TEXTURE_CHANNEL_MAX - 1, (int)p_channel));
+	roughness_texture_channel = p_channel;
+	_update_params();
+}
+
+void BaseMaterial3D::set_orm_texture(const Ref<Texture2D> &p_texture) {
+	orm_texture = p_texture;
+	_update_params();
+}
+
+void BaseMaterial3D::set_uv1_scale(const Vector3 &p_scale) {
+	ERR_FAIL_COND_MSG(!p_scale.is_finite(), "uv1_scale must be finite; the old value is kept.");
+	uv1_scale = p_scale;
+	_update_params();
+}
+
+void BaseMaterial3D::set_uv1_offset(const Vector3 &p_offset) {
+	ERR_FAIL_COND_MSG(!p_offset.is_finite(), "uv1_offset must be finite; the old value is kept.");
+	uv1_offset = p_offset;
+	_update_params();
+}
+
+void BaseMaterial3D::set_texture_filter(TextureFilter p_filter) {
+	ERR_FAIL_INDEX_MSG((int)p_filter, TEXTURE_FILTER_MAX, vformat("texture_filter must be 0..%d (Nearest, Linear, Nearest Mipmap, Linear Mipmap, Nearest Mipmap Anisotropic, Linear Mipmap Anisotropic); got %d. The old value is kept.", TEXTURE_FILTER_MAX - 1, (int)p_filter));
+	texture_filter = p_filter;
+	_update_params();
+}
+
 void BaseMaterial3D::_validate_property(PropertyInfo &p_property) const {
+	// As Godot: an ORM material shows orm_texture instead of the separate roughness and metallic maps.
+	const bool separate_maps = p_property.name == "roughness_texture" || p_property.name == "roughness_texture_channel" || p_property.name == "metallic_texture" ||
+			p_property.name == "metallic_texture_channel";
+	if ((orm && separate_maps) || (!orm && p_property.name == "orm_texture")) {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
 	// As Godot: a feature's properties are saved but not shown while the feature is off.
 	if (!emission_enabled && (p_property.name == "emission" || p_property.name == "emission_energy_multiplier")) {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
@@ -191,6 +257,22 @@ void BaseMaterial3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_normal_scale"), &BaseMaterial3D::get_normal_scale);
 	ClassDB::bind_method(D_METHOD("set_normal_texture", "texture"), &BaseMaterial3D::set_normal_texture);
 	ClassDB::bind_method(D_METHOD("get_normal_texture"), &BaseMaterial3D::get_normal_texture);
+	ClassDB::bind_method(D_METHOD("set_metallic_texture", "texture"), &BaseMaterial3D::set_metallic_texture);
+	ClassDB::bind_method(D_METHOD("get_metallic_texture"), &BaseMaterial3D::get_metallic_texture);
+	ClassDB::bind_method(D_METHOD("set_metallic_texture_channel", "channel"), &BaseMaterial3D::set_metallic_texture_channel);
+	ClassDB::bind_method(D_METHOD("get_metallic_texture_channel"), &BaseMaterial3D::get_metallic_texture_channel);
+	ClassDB::bind_method(D_METHOD("set_roughness_texture", "texture"), &BaseMaterial3D::set_roughness_texture);
+	ClassDB::bind_method(D_METHOD("get_roughness_texture"), &BaseMaterial3D::get_roughness_texture);
+	ClassDB::bind_method(D_METHOD("set_roughness_texture_channel", "channel"), &BaseMaterial3D::set_roughness_texture_channel);
+	ClassDB::bind_method(D_METHOD("get_roughness_texture_channel"), &BaseMaterial3D::get_roughness_texture_channel);
+	ClassDB::bind_method(D_METHOD("set_orm_texture", "texture"), &BaseMaterial3D::set_orm_texture);
+	ClassDB::bind_method(D_METHOD("get_orm_texture"), &BaseMaterial3D::get_orm_texture);
+	ClassDB::bind_method(D_METHOD("set_uv1_scale", "scale"), &BaseMaterial3D::set_uv1_scale);
+	ClassDB::bind_method(D_METHOD("get_uv1_scale"), &BaseMaterial3D::get_uv1_scale);
+	ClassDB::bind_method(D_METHOD("set_uv1_offset", "offset"), &BaseMaterial3D::set_uv1_offset);
+	ClassDB::bind_method(D_METHOD("get_uv1_offset"), &BaseMaterial3D::get_uv1_offset);
+	ClassDB::bind_method(D_METHOD("set_texture_filter", "mode"), &BaseMaterial3D::set_texture_filter);
+	ClassDB::bind_method(D_METHOD("get_texture_filter"), &BaseMaterial3D::get_texture_filter);
 
 	ADD_GROUP("Transparency", "");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "cull_mode", PROPERTY_HINT_ENUM, "Back,Front,Disabled"), "set_cull_mode", "get_cull_mode");
@@ -204,12 +286,19 @@ void BaseMaterial3D::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "albedo_color"), "set_albedo", "get_albedo");
 	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "albedo_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_albedo_texture", "get_albedo_texture");
 
+	ADD_GROUP("ORM", "orm_");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "orm_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_orm_texture", "get_orm_texture");
+
 	ADD_GROUP("Metallic", "metallic_");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "metallic", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_metallic", "get_metallic");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "metallic_specular", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_specular", "get_specular");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "metallic_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_metallic_texture", "get_metallic_texture");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "metallic_texture_channel", PROPERTY_HINT_ENUM, "Red,Green,Blue,Alpha,Gray"), "set_metallic_texture_channel", "get_metallic_texture_channel");
 
 	ADD_GROUP("Roughness", "roughness_");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "roughness", PROPERTY_HINT_RANGE, "0,1,0.01"), "set_roughness", "get_roughness");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "roughness_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_roughness_texture", "get_roughness_texture");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "roughness_texture_channel", PROPERTY_HINT_ENUM, "Red,Green,Blue,Alpha,Gray"), "set_roughness_texture_channel", "get_roughness_texture_channel");
 
 	ADD_GROUP("Emission", "emission_");
 	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "emission_enabled"), "set_emission_enabled", "is_emission_enabled");
@@ -220,6 +309,13 @@ void BaseMaterial3D::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "normal_enabled"), "set_normal_enabled", "is_normal_enabled");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "normal_scale", PROPERTY_HINT_RANGE, "-16,16,0.01"), "set_normal_scale", "get_normal_scale");
 	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "normal_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_normal_texture", "get_normal_texture");
+
+	ADD_GROUP("UV1", "uv1_");
+	ADD_PROPERTY(PropertyInfo(Variant::VECTOR3, "uv1_scale", PROPERTY_HINT_LINK), "set_uv1_scale", "get_uv1_scale");
+	ADD_PROPERTY(PropertyInfo(Variant::VECTOR3, "uv1_offset"), "set_uv1_offset", "get_uv1_offset");
+
+	ADD_GROUP("Sampling", "texture_");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "texture_filter", PROPERTY_HINT_ENUM, "Nearest,Linear,Nearest Mipmap,Linear Mipmap,Nearest Mipmap Anisotropic,Linear Mipmap Anisotropic"), "set_texture_filter", "get_texture_filter");
 	ADD_GROUP("", "");
 
 	BIND_ENUM_CONSTANT(SHADING_MODE_UNSHADED);
@@ -236,8 +332,21 @@ void BaseMaterial3D::_bind_methods() {
 	BIND_ENUM_CONSTANT(CULL_BACK);
 	BIND_ENUM_CONSTANT(CULL_FRONT);
 	BIND_ENUM_CONSTANT(CULL_DISABLED);
+	BIND_ENUM_CONSTANT(TEXTURE_CHANNEL_RED);
+	BIND_ENUM_CONSTANT(TEXTURE_CHANNEL_GREEN);
+	BIND_ENUM_CONSTANT(TEXTURE_CHANNEL_BLUE);
+	BIND_ENUM_CONSTANT(TEXTURE_CHANNEL_ALPHA);
+	BIND_ENUM_CONSTANT(TEXTURE_CHANNEL_GRAYSCALE);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_NEAREST);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_LINEAR);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_NEAREST_WITH_MIPMAPS);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_LINEAR_WITH_MIPMAPS);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_LINEAR_WITH_MIPMAPS_ANISOTROPIC);
+	BIND_ENUM_CONSTANT(TEXTURE_FILTER_MAX);
 }
 
-BaseMaterial3D::BaseMaterial3D() {
+BaseMaterial3D::BaseMaterial3D(bool p_orm) :
+		orm(p_orm) {
 	_update_params();
 }

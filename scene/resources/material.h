@@ -58,6 +58,24 @@ public:
 		CULL_DISABLED,
 		CULL_MAX
 	};
+	enum TextureChannel {
+		TEXTURE_CHANNEL_RED = RS::MATERIAL_TEXTURE_CHANNEL_RED,
+		TEXTURE_CHANNEL_GREEN = RS::MATERIAL_TEXTURE_CHANNEL_GREEN,
+		TEXTURE_CHANNEL_BLUE = RS::MATERIAL_TEXTURE_CHANNEL_BLUE,
+		TEXTURE_CHANNEL_ALPHA = RS::MATERIAL_TEXTURE_CHANNEL_ALPHA,
+		TEXTURE_CHANNEL_GRAYSCALE = RS::MATERIAL_TEXTURE_CHANNEL_GRAYSCALE,
+		TEXTURE_CHANNEL_MAX
+	};
+	// No mip chains here: the *_WITH_MIPMAPS filters sample the base level (RS::MaterialTextureFilter).
+	enum TextureFilter {
+		TEXTURE_FILTER_NEAREST = RS::MATERIAL_TEXTURE_FILTER_NEAREST,
+		TEXTURE_FILTER_LINEAR = RS::MATERIAL_TEXTURE_FILTER_LINEAR,
+		TEXTURE_FILTER_NEAREST_WITH_MIPMAPS = RS::MATERIAL_TEXTURE_FILTER_NEAREST_WITH_MIPMAPS,
+		TEXTURE_FILTER_LINEAR_WITH_MIPMAPS = RS::MATERIAL_TEXTURE_FILTER_LINEAR_WITH_MIPMAPS,
+		TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC = RS::MATERIAL_TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC,
+		TEXTURE_FILTER_LINEAR_WITH_MIPMAPS_ANISOTROPIC = RS::MATERIAL_TEXTURE_FILTER_LINEAR_WITH_MIPMAPS_ANISOTROPIC,
+		TEXTURE_FILTER_MAX
+	};
 
 private:
 	ShadingMode shading_mode = SHADING_MODE_PER_PIXEL;
@@ -67,8 +85,17 @@ private:
 	Color albedo = Color(1, 1, 1, 1);
 	Ref<Texture2D> albedo_texture;
 	float metallic = 0.0f;
+	Ref<Texture2D> metallic_texture;
+	TextureChannel metallic_texture_channel = TEXTURE_CHANNEL_RED;
 	float specular = 0.5f;
 	float roughness = 1.0f;
+	Ref<Texture2D> roughness_texture;
+	TextureChannel roughness_texture_channel = TEXTURE_CHANNEL_RED;
+	Ref<Texture2D> orm_texture; // ORMMaterial3D: ambient occlusion (r, not used), roughness (g), metallic (b).
+	bool orm = false;
+	Vector3 uv1_scale = Vector3(1, 1, 1);
+	Vector3 uv1_offset;
+	TextureFilter texture_filter = TEXTURE_FILTER_LINEAR_WITH_MIPMAPS;
 	bool emission_enabled = false;
 	Color emission = Color(0, 0, 0, 1);
 	float emission_energy = 1.0f;
@@ -104,6 +131,25 @@ public:
 	float get_specular() const { return specular; }
 	void set_roughness(float p_roughness);
 	float get_roughness() const { return roughness; }
+	void set_metallic_texture(const Ref<Texture2D> &p_texture);
+	Ref<Texture2D> get_metallic_texture() const { return metallic_texture; }
+	void set_metallic_texture_channel(TextureChannel p_channel);
+	TextureChannel get_metallic_texture_channel() const { return metallic_texture_channel; }
+	void set_roughness_texture(const Ref<Texture2D> &p_texture);
+	Ref<Texture2D> get_roughness_texture() const { return roughness_texture; }
+	void set_roughness_texture_channel(TextureChannel p_channel);
+	TextureChannel get_roughness_texture_channel() const { return roughness_texture_channel; }
+	// ORMMaterial3D only (saved and loaded on every BaseMaterial3D, shown on ORM materials, as Godot).
+	void set_orm_texture(const Ref<Texture2D> &p_texture);
+	Ref<Texture2D> get_orm_texture() const { return orm_texture; }
+
+	// UV = UV * uv1_scale.xy + uv1_offset.xy (finite values; z is for triplanar mapping, not supported).
+	void set_uv1_scale(const Vector3 &p_scale);
+	Vector3 get_uv1_scale() const { return uv1_scale; }
+	void set_uv1_offset(const Vector3 &p_offset);
+	Vector3 get_uv1_offset() const { return uv1_offset; }
+	void set_texture_filter(TextureFilter p_filter);
+	TextureFilter get_texture_filter() const { return texture_filter; }
 
 	void set_emission_enabled(bool p_enabled);
 	bool is_emission_enabled() const { return emission_enabled; }
@@ -122,7 +168,7 @@ public:
 	// The parameter block as sent to the server.
 	RS::MaterialParams get_params() const;
 
-	BaseMaterial3D();
+	explicit BaseMaterial3D(bool p_orm = false);
 };
 
 // The concrete material scene files name ("StandardMaterial3D").
@@ -133,7 +179,18 @@ public:
 	StandardMaterial3D() {}
 };
 
+// Godot's ORMMaterial3D: one texture holds occlusion, roughness and metallic (r, g, b).
+class ORMMaterial3D : public BaseMaterial3D {
+	GDCLASS(ORMMaterial3D, BaseMaterial3D);
+
+public:
+	ORMMaterial3D() :
+			BaseMaterial3D(true) {}
+};
+
 VARIANT_ENUM_CAST(BaseMaterial3D::ShadingMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::DiffuseMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::SpecularMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::CullMode);
+VARIANT_ENUM_CAST(BaseMaterial3D::TextureChannel);
+VARIANT_ENUM_CAST(BaseMaterial3D::TextureFilter);

@@ -14,6 +14,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -111,6 +112,113 @@ transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1)
 			}
 		}
 	}
+	std::filesystem::remove_all(dir);
+}
+
+// Mean colour of the p_size x p_size block centred at (p_cx, p_cy).
+static Color block_mean(const Image &p_image, int p_cx, int p_cy, int p_size) {
+	double sum[3] = { 0, 0, 0 };
+	for (int y = p_cy - p_size / 2; y < p_cy + p_size / 2; y++) {
+		for (int x = p_cx - p_size / 2; x < p_cx + p_size / 2; x++) {
+			const Color c = p_image.get_pixel(x, y);
+			sum[0] += c.r;
+			sum[1] += c.g;
+			sum[2] += c.b;
+		}
+	}
+	const double n = double(p_size) * p_size;
+	return Color(float(sum[0] / n), float(sum[1] / n), float(sum[2] / n), 1);
+}
+
+TEST_CASE("[CLI][Render] uv1_scale, nearest filtering and roughness/metallic textures agree between the GPU and the reference") {
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first");
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ga_texmaps_" + itos((long long)getpid()));
+	std::filesystem::create_directories(dir / "textures");
+	REQUIRE(PNGWriter::save_rgba8(quadrant_texels(8), 8, 8, (dir / "textures" / "quadrants.png").string()));
+	std::ofstream(dir / "project.godot") << "config_version=5\n";
+	// Left: unshaded, the texture tiled 2 x 2 with nearest filtering. Right: a lit metal whose metallic
+	// is the red channel and whose roughness is the grey level of the same texture.
+	std::ofstream(dir / "maps.tscn") << R"([gd_scene load_steps=6 format=3 uid="uid://btexmaps0001"]
+
+[ext_resource type="Texture2D" uid="uid://dquadrants002" path="res://textures/quadrants.png" id="1_q4d"]
+
+[sub_resource type="StandardMaterial3D" id="StandardMaterial3D_tiled"]
+shading_mode = 0
+albedo_texture = ExtResource("1_q4d")
+uv1_scale = Vector3(2, 2, 1)
+texture_filter = 0
+
+[sub_resource type="QuadMesh" id="QuadMesh_tiled"]
+material = SubResource("StandardMaterial3D_tiled")
+size = Vector2(1.5, 1.5)
+
+[sub_resource type="StandardMaterial3D" id="StandardMaterial3D_maps"]
+albedo_color = Color(0.9, 0.9, 0.9, 1)
+metallic = 1.0
+metallic_texture = ExtResource("1_q4d")
+roughness_texture = ExtResource("1_q4d")
+roughness_texture_channel = 4
+
+[sub_resource type="QuadMesh" id="QuadMesh_maps"]
+material = SubResource("StandardMaterial3D_maps")
+size = Vector2(1.5, 1.5)
+
+[node name="Root" type="Node3D"]
+
+[node name="Tiled" type="MeshInstance3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, -0.75, 0, 0)
+mesh = SubResource("QuadMesh_tiled")
+
+[node name="Maps" type="MeshInstance3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0.75, 0, 0)
+mesh = SubResource("QuadMesh_maps")
+
+[node name="OmniLight3D" type="OmniLight3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0.75, 0, 0.6)
+light_energy = 2.0
+omni_range = 10.0
+
+[node name="Camera3D" type="Camera3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1)
+fov = 73.7398
+)";
+	String gpu = (dir / "gpu.exr").string(), ref = (dir / "ref.exr").string();
+	String scene = (dir / "maps.tscn").string();
+	CHECK(run_cli("render '" + scene + "' --width 128 --height 64 -o '" + gpu + "'") == 0);
+	CHECK(run_cli("reference '" + scene + "' --width 128 --height 64 --spp 4 --shadows off -o '" + ref + "'") == 0);
+	Image images[2];
+	for (int i = 0; i < 2; i++) {
+		String error;
+		REQUIRE_MESSAGE(ImageLoaderEXR::load(i == 0 ? gpu : ref, images[i], &error), error);
+		REQUIRE(images[i].get_width() == 128);
+		// The tiled quad fills x 0..63 (fov 2 atan(0.75) at 1 m: a 3 m x 1.5 m view): UV x = (x + 0.5) / 64, scaled by 2.
+		// At x = 16 the scaled U is 0.516, texel coordinate 4.13: nearest reads texel 4 (the right
+		// quadrant's green) where linear filtering would blend in 37 % of texel 3's red.
+		// Tolerance: the GPU target is half float (2^-11 relative).
+		const String who = i == 0 ? "GPU" : "reference";
+		const Color got = images[i].get_pixel(16, 8);
+		CHECK_MESSAGE((std::fabs(got.r) < 2e-3f && std::fabs(got.g - 1.0f) < 2e-3f && std::fabs(got.b) < 2e-3f), who << ": " << got.r << " " << got.g << " " << got.b);
+		// x = 8 and x = 40 read the same tile position (the texture repeats twice).
+		const Color a = images[i].get_pixel(8, 40), b = images[i].get_pixel(40, 40);
+		CHECK_MESSAGE((std::fabs(a.r - b.r) < 2e-3f && std::fabs(a.g - b.g) < 2e-3f && std::fabs(a.b - b.b) < 2e-3f), who);
+	}
+	// The lit quad (x 64..127): quadrant means, GPU against the reference; metallic 1 (top left) and
+	// metallic 0 (top right) must differ.
+	const int centres[4][2] = { { 80, 16 }, { 112, 16 }, { 80, 48 }, { 112, 48 } };
+	Color means[2][4];
+	for (int i = 0; i < 2; i++) {
+		for (int q = 0; q < 4; q++) {
+			means[i][q] = block_mean(images[i], centres[q][0], centres[q][1], 12);
+		}
+	}
+	for (int q = 0; q < 4; q++) {
+		for (int c = 0; c < 3; c++) {
+			const float g = c == 0 ? means[0][q].r : (c == 1 ? means[0][q].g : means[0][q].b);
+			const float r = c == 0 ? means[1][q].r : (c == 1 ? means[1][q].g : means[1][q].b);
+			CHECK_MESSAGE(std::fabs(g - r) <= 0.02f * r + 2e-3f, "quadrant " << q << " channel " << c << ": GPU " << g << " reference " << r);
+		}
+	}
+	CHECK(std::fabs(means[0][0].r - means[0][1].r) > 0.05f * std::max(means[0][0].r, means[0][1].r));
 	std::filesystem::remove_all(dir);
 }
 

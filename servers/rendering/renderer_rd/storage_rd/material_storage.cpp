@@ -34,6 +34,9 @@ bool MaterialStorage::initialize_gpu() {
 	ss.repeat_u = RD::SAMPLER_REPEAT_MODE_REPEAT;
 	ss.repeat_v = RD::SAMPLER_REPEAT_MODE_REPEAT;
 	sampler = rd->sampler_create(ss);
+	ss.mag_filter = RD::SAMPLER_FILTER_NEAREST;
+	ss.min_filter = RD::SAMPLER_FILTER_NEAREST;
+	nearest_sampler = rd->sampler_create(ss);
 	default_material = material_create();
 	// Textures made before the device existed get their GPU copy now.
 	for (RID rid : texture_owner.get_owned_list()) {
@@ -49,7 +52,7 @@ bool MaterialStorage::initialize_gpu() {
 			t->rd_texture = rd->texture_create(tf, { bytes });
 		}
 	}
-	return white_texture.is_valid() && normal_texture.is_valid() && sampler.is_valid();
+	return white_texture.is_valid() && normal_texture.is_valid() && sampler.is_valid() && nearest_sampler.is_valid();
 }
 
 void MaterialStorage::finalize_gpu() {
@@ -86,10 +89,14 @@ void MaterialStorage::finalize_gpu() {
 		if (sampler.is_valid()) {
 			rd->free(sampler);
 		}
+		if (nearest_sampler.is_valid()) {
+			rd->free(nearest_sampler);
+		}
 	}
 	white_texture = RID();
 	normal_texture = RID();
 	sampler = RID();
+	nearest_sampler = RID();
 	if (default_material.is_valid()) {
 		material_owner.free(default_material);
 		default_material = RID();
@@ -100,7 +107,7 @@ MaterialStorage::~MaterialStorage() {
 	finalize_gpu();
 }
 
-MaterialStorage::MaterialUBO MaterialStorage::_make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal) {
+MaterialStorage::MaterialUBO MaterialStorage::_make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal, bool p_has_roughness, bool p_has_metallic) {
 	MaterialUBO ubo;
 	memset(&ubo, 0, sizeof(ubo));
 	// Unit conversion: node colours are sRGB.
@@ -130,6 +137,18 @@ MaterialStorage::MaterialUBO MaterialStorage::_make_ubo(const RS::MaterialParams
 	if (p_params.specular_mode == RS::MATERIAL_SPECULAR_DISABLED) {
 		ubo.flags |= MATERIAL_FLAG_SPECULAR_DISABLED;
 	}
+	if (p_has_roughness) {
+		ubo.flags |= MATERIAL_FLAG_ROUGHNESS_TEXTURE;
+	}
+	if (p_has_metallic) {
+		ubo.flags |= MATERIAL_FLAG_METALLIC_TEXTURE;
+	}
+	ubo.uv1[0] = p_params.uv1_scale.x;
+	ubo.uv1[1] = p_params.uv1_scale.y;
+	ubo.uv1[2] = p_params.uv1_offset.x;
+	ubo.uv1[3] = p_params.uv1_offset.y;
+	RS::material_texture_channel_weights(p_params.roughness_texture_channel, ubo.roughness_channel);
+	RS::material_texture_channel_weights(p_params.metallic_texture_channel, ubo.metallic_channel);
 	// Lambert wrap and toon are not implemented: they fall back to Lambert (the closest model).
 	ubo.diffuse_mode = p_params.diffuse_mode == RS::MATERIAL_DIFFUSE_BURLEY ? 0u : 1u;
 	return ubo;
@@ -151,31 +170,40 @@ RID MaterialStorage::material_get_uniform_set(RID p_material, RID p_shader) {
 		m = material_owner.get_or_null(default_material);
 		ERR_FAIL_NULL_V_MSG(m, RID(), "material_get_uniform_set: the default material is missing.");
 	}
-	RID albedo_tex = _rd_texture_for(m->params.albedo_texture, RID());
-	RID normal_tex = _rd_texture_for(m->params.normal_texture, RID());
+	const RID textures[4] = { _rd_texture_for(m->params.albedo_texture, RID()), _rd_texture_for(m->params.normal_texture, RID()),
+		_rd_texture_for(m->params.roughness_texture, RID()), _rd_texture_for(m->params.metallic_texture, RID()) };
+	const bool nearest = RS::material_texture_filter_is_nearest(m->params.texture_filter);
+	bool same_textures = nearest == m->set_nearest;
+	for (int i = 0; i < 4; i++) {
+		same_textures = same_textures && textures[i] == m->set_textures[i];
+	}
 	if (!m->uniform_buffer.is_valid()) {
 		m->uniform_buffer = rd->uniform_buffer_create(sizeof(MaterialUBO));
 		m->ubo_dirty = true;
 	}
-	if (m->ubo_dirty || albedo_tex != m->set_albedo_texture || normal_tex != m->set_normal_texture) {
-		MaterialUBO ubo = _make_ubo(m->params, albedo_tex.is_valid(), normal_tex.is_valid());
+	if (m->ubo_dirty || !same_textures) {
+		MaterialUBO ubo = _make_ubo(m->params, textures[0].is_valid(), textures[1].is_valid(), textures[2].is_valid(), textures[3].is_valid());
 		rd->buffer_update(m->uniform_buffer, 0, sizeof(ubo), &ubo);
 		m->ubo_dirty = false;
 	}
-	bool set_ok = m->uniform_set.is_valid() && rd->uniform_set_is_valid(m->uniform_set) && m->uniform_set_shader == p_shader &&
-			albedo_tex == m->set_albedo_texture && normal_tex == m->set_normal_texture;
+	bool set_ok = m->uniform_set.is_valid() && rd->uniform_set_is_valid(m->uniform_set) && m->uniform_set_shader == p_shader && same_textures;
 	if (!set_ok) {
 		if (m->uniform_set.is_valid() && rd->uniform_set_is_valid(m->uniform_set)) {
 			rd->free(m->uniform_set);
 		}
 		std::vector<RD::Uniform> uniforms;
 		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_UNIFORM_BUFFER, 0, m->uniform_buffer));
-		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 1, albedo_tex.is_valid() ? albedo_tex : white_texture));
-		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, normal_tex.is_valid() ? normal_tex : normal_texture));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 1, textures[0].is_valid() ? textures[0] : white_texture));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 2, textures[1].is_valid() ? textures[1] : normal_texture));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 3, textures[2].is_valid() ? textures[2] : white_texture));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 4, textures[3].is_valid() ? textures[3] : white_texture));
+		uniforms.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 5, nearest ? nearest_sampler : sampler));
 		m->uniform_set = rd->uniform_set_create(uniforms, p_shader, 1);
 		m->uniform_set_shader = p_shader;
-		m->set_albedo_texture = albedo_tex;
-		m->set_normal_texture = normal_tex;
+		for (int i = 0; i < 4; i++) {
+			m->set_textures[i] = textures[i];
+		}
+		m->set_nearest = nearest;
 	}
 	return m->uniform_set;
 }

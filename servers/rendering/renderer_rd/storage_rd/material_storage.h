@@ -23,10 +23,12 @@ public:
 		MATERIAL_FLAG_NORMAL_MAP = 2,
 		MATERIAL_FLAG_UNSHADED = 4,
 		MATERIAL_FLAG_SPECULAR_DISABLED = 8,
+		MATERIAL_FLAG_ROUGHNESS_TEXTURE = 16,
+		MATERIAL_FLAG_METALLIC_TEXTURE = 32,
 	};
 
 	// Mirror of MaterialBlock (set 1, binding 0, std140) in
-	// shaders/forward_clustered/scene_forward_clustered_inc.glsl. 64 bytes.
+	// shaders/forward_clustered/scene_forward_clustered_inc.glsl. 112 bytes.
 	struct MaterialUBO {
 		float albedo[4]; // Linear rgb, alpha.
 		float emission[4]; // Linear rgb * emission_energy, a unused.
@@ -38,8 +40,11 @@ public:
 		uint32_t diffuse_mode; // BRDF_DIFFUSE_* (brdf_inc.glsl): 0 Burley, 1 Lambert.
 		uint32_t pad0;
 		uint32_t pad1;
+		float uv1[4]; // uv1_scale.xy, uv1_offset.xy.
+		float roughness_channel[4]; // Weights of the roughness texture's channels (roughness_texture_channel).
+		float metallic_channel[4];
 	};
-	static_assert(sizeof(MaterialUBO) == 64, "MaterialUBO must match scene_forward_clustered_inc.glsl.");
+	static_assert(sizeof(MaterialUBO) == 112, "MaterialUBO must match scene_forward_clustered_inc.glsl.");
 	static_assert(sizeof(MaterialUBO) % 16 == 0, "MaterialUBO must stay a multiple of 16 bytes.");
 
 private:
@@ -48,8 +53,9 @@ private:
 		RID uniform_buffer;
 		RID uniform_set;
 		RID uniform_set_shader; // Shader the set was made for.
-		RID set_albedo_texture; // RD textures bound in uniform_set (to notice freed textures).
-		RID set_normal_texture;
+		// RD textures bound in uniform_set (to notice freed textures): albedo, normal, roughness, metallic.
+		RID set_textures[4];
+		bool set_nearest = false; // The sampler bound in uniform_set.
 		bool ubo_dirty = true;
 	};
 	struct Texture {
@@ -64,8 +70,9 @@ private:
 	RID white_texture; // RD texture (1, 1, 1, 1).
 	RID normal_texture; // RD texture (0.5, 0.5, 1, 1): flat normal.
 	RID sampler; // Linear, repeat.
+	RID nearest_sampler; // Nearest, repeat (texture_filter NEAREST*).
 
-	static MaterialUBO _make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal);
+	static MaterialUBO _make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal, bool p_has_roughness = false, bool p_has_metallic = false);
 	RID _rd_texture_for(RID p_texture, RID p_fallback) const;
 
 public:
@@ -82,7 +89,9 @@ public:
 	RID get_default_material() const { return default_material; }
 	RID get_sampler() const { return sampler; }
 	// Converts the parameters as the shader reads them (tests).
-	static MaterialUBO make_material_ubo(const RS::MaterialParams &p_params) { return _make_ubo(p_params, p_params.albedo_texture.is_valid(), p_params.normal_texture.is_valid()); }
+	static MaterialUBO make_material_ubo(const RS::MaterialParams &p_params) {
+		return _make_ubo(p_params, p_params.albedo_texture.is_valid(), p_params.normal_texture.is_valid(), p_params.roughness_texture.is_valid(), p_params.metallic_texture.is_valid());
+	}
 
 	RID material_create() override;
 	bool material_free(RID p_rid) override;

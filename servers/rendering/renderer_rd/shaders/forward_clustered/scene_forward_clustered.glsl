@@ -151,10 +151,12 @@ void main() {
 	}
 #endif
 
+	// uv1_scale and uv1_offset (Godot applies them in the vertex shader; the same for a linear map).
+	vec2 uv = uv_interp * material.uv1.xy + material.uv1.zw;
 	vec3 albedo = material.albedo.rgb;
 	float alpha = material.albedo.a;
 	if ((material.flags & MATERIAL_FLAG_ALBEDO_TEXTURE) != 0u) {
-		vec4 texel = texture(sampler2D(albedo_texture, material_sampler), uv_interp);
+		vec4 texel = texture(sampler2D(albedo_texture, material_texture_sampler), uv);
 		albedo *= srgb_to_linear(texel.rgb);
 		alpha *= texel.a;
 	}
@@ -176,13 +178,22 @@ void main() {
 	if ((material.flags & MATERIAL_FLAG_NORMAL_MAP) != 0u) {
 		vec3 T = normalize(tangent_interp - N * dot(N, tangent_interp));
 		vec3 B = normalize(binormal_interp);
-		vec3 nm = texture(sampler2D(normal_texture, material_sampler), uv_interp).xyz * 2.0 - 1.0;
+		vec3 nm = texture(sampler2D(normal_texture, material_texture_sampler), uv).xyz * 2.0 - 1.0;
 		nm.xy *= material.normal_scale;
 		N = normalize(T * nm.x + B * nm.y + N * max(nm.z, 1e-4));
 	}
 
-	float roughness = clamp(material.roughness, 0.0, 1.0);
-	float metallic = clamp(material.metallic, 0.0, 1.0);
+	// Godot: ROUGHNESS = roughness * dot(texel, channel), the same for METALLIC.
+	float roughness = material.roughness;
+	if ((material.flags & MATERIAL_FLAG_ROUGHNESS_TEXTURE) != 0u) {
+		roughness *= dot(texture(sampler2D(roughness_texture, material_texture_sampler), uv), material.roughness_channel);
+	}
+	float metallic = material.metallic;
+	if ((material.flags & MATERIAL_FLAG_METALLIC_TEXTURE) != 0u) {
+		metallic *= dot(texture(sampler2D(metallic_texture, material_texture_sampler), uv), material.metallic_channel);
+	}
+	roughness = clamp(roughness, 0.0, 1.0);
+	metallic = clamp(metallic, 0.0, 1.0);
 	// Godot's f0: dielectrics reflect 0.16 * specular^2 (0.5 -> 4 %), metals their albedo.
 	float dielectric = 0.16 * material.specular * material.specular;
 	vec3 f0 = dielectric * (1.0 - metallic) + albedo * metallic;

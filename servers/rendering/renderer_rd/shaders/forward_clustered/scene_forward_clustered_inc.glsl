@@ -37,6 +37,8 @@
 #define MATERIAL_FLAG_NORMAL_MAP 2u
 #define MATERIAL_FLAG_UNSHADED 4u
 #define MATERIAL_FLAG_SPECULAR_DISABLED 8u
+#define MATERIAL_FLAG_ROUGHNESS_TEXTURE 16u
+#define MATERIAL_FLAG_METALLIC_TEXTURE 32u
 
 /*************************************************************************/
 /* Set 0: render pass data                                               */
@@ -79,7 +81,7 @@ layout(set = 0, binding = 3, std430) restrict readonly buffer ClusterBuffer {
 }
 cluster_buffer;
 
-layout(set = 0, binding = 4) uniform sampler material_sampler; // Linear, repeat.
+// Set 0 binding 4 is free: material textures are sampled with their material's sampler (set 1, binding 5).
 
 #ifdef USE_AREA_LIGHTS
 // Thesis Listing A.2: area lights in their own buffer.
@@ -118,7 +120,7 @@ sky_ambient;
 /* Set 1: material                                                       */
 /*************************************************************************/
 
-layout(set = 1, binding = 0, std140) uniform MaterialBlock { // 64 bytes.
+layout(set = 1, binding = 0, std140) uniform MaterialBlock { // 112 bytes.
 	vec4 albedo; // 0: linear rgb, alpha.
 	vec4 emission; // 16: linear rgb * emission energy.
 	float roughness; // 32: perceptual roughness.
@@ -129,11 +131,17 @@ layout(set = 1, binding = 0, std140) uniform MaterialBlock { // 64 bytes.
 	uint diffuse_mode; // 52: BRDF_DIFFUSE_*.
 	uint pad0; // 56
 	uint pad1; // 60
+	vec4 uv1; // 64: uv1_scale.xy, uv1_offset.xy.
+	vec4 roughness_channel; // 80: weights of the roughness texture's channels.
+	vec4 metallic_channel; // 96
 }
 material;
 
 layout(set = 1, binding = 1) uniform texture2D albedo_texture; // sRGB-encoded texels (decoded in the shader).
 layout(set = 1, binding = 2) uniform texture2D normal_texture; // Linear, OpenGL convention (+Y up).
+layout(set = 1, binding = 3) uniform texture2D roughness_texture; // Linear; white without one.
+layout(set = 1, binding = 4) uniform texture2D metallic_texture; // Linear; white without one.
+layout(set = 1, binding = 5) uniform sampler material_texture_sampler; // Repeat; nearest or linear per texture_filter.
 
 #endif // !MODE_DEPTH
 
