@@ -214,7 +214,7 @@ public:
 	// Bounds of light_area_set_shadow_grid() (grid x grid sample maps).
 	static constexpr int LIGHT_AREA_SHADOW_GRID_MIN = 2;
 	static constexpr int LIGHT_AREA_SHADOW_GRID_MAX = 9;
-	static constexpr int LIGHT_AREA_SHADOW_GRID_DEFAULT = 3;
+	static constexpr int LIGHT_AREA_SHADOW_GRID_DEFAULT = 5; // 25 maps: the cheapest grid without banding (doc/shadows.md, "The default").
 
 	/* ENVIRONMENT API enums */
 

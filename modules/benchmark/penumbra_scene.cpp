@@ -84,7 +84,7 @@ bool PenumbraScene::create(RendererLightStorage *p_light_storage, RendererMeshSt
 	floor_mesh = mesh_storage->mesh_create();
 	mesh_storage->mesh_add_surface(floor_mesh, make_plane(p_settings.floor_half));
 	box_mesh = mesh_storage->mesh_create();
-	mesh_storage->mesh_add_surface(box_mesh, make_box(p_settings.box_center, p_settings.box_half));
+	mesh_storage->mesh_add_surface(box_mesh, make_box(p_settings.box_center, Vector3(p_settings.box_half, p_settings.box_half_height < 0.0f ? p_settings.box_half : p_settings.box_half_height, p_settings.box_half)));
 	material = material_storage->material_create();
 	material_storage->material_set_params(material, lambert());
 	light = light_storage->light_create(RS::LIGHT_AREA);
@@ -125,7 +125,7 @@ bool PenumbraScene::create_in_server(RenderingServer *p_rs, int p_width, int p_h
 	floor_mesh = rs->mesh_create();
 	rs->mesh_add_surface(floor_mesh, make_plane(p_settings.floor_half));
 	box_mesh = rs->mesh_create();
-	rs->mesh_add_surface(box_mesh, make_box(p_settings.box_center, p_settings.box_half));
+	rs->mesh_add_surface(box_mesh, make_box(p_settings.box_center, Vector3(p_settings.box_half, p_settings.box_half_height < 0.0f ? p_settings.box_half : p_settings.box_half_height, p_settings.box_half)));
 	material = rs->material_create();
 	rs->material_set_params(material, lambert());
 	light = rs->area_light_create();
@@ -250,4 +250,137 @@ void PenumbraScene::visibility_error(const std::vector<float> &p_open, const std
 	if (r_penumbra_rmse && penumbra_n > 0) {
 		*r_penumbra_rmse = std::sqrt(penumbra_sum / penumbra_n);
 	}
+}
+
+std::vector<float> PenumbraScene::visibility_image(const std::vector<float> &p_open, const std::vector<float> &p_shadowed) {
+	ERR_FAIL_COND_V_MSG(p_open.size() != p_shadowed.size(), std::vector<float>(), "PenumbraScene::visibility_image: open and shadowed images differ in size.");
+	std::vector<float> v(p_open.size() / 4, -1.0f);
+	for (size_t i = 0; i < v.size(); i++) {
+		if (p_open[i * 4] > 1e-3f) {
+			v[i] = std::min(std::max(p_shadowed[i * 4] / p_open[i * 4], 0.0f), 1.5f);
+		}
+	}
+	return v;
+}
+
+int PenumbraScene::count_banded_pixels(const std::vector<float> &p_visibility, int p_width, int p_height, int *r_penumbra, float p_step, std::vector<uint8_t> *r_mask) {
+	ERR_FAIL_COND_V_MSG(p_width < 1 || p_height < 1 || p_visibility.size() < size_t(p_width) * size_t(p_height), 0, "PenumbraScene::count_banded_pixels: bad image size.");
+	const int R = 6; // Window each side (pixels) in which the plateau's two steps are looked for.
+	std::vector<uint8_t> banded(size_t(p_width) * size_t(p_height), 0);
+	auto penumbra = [](float p_v) { return p_v > 0.02f && p_v < 0.98f; };
+	std::vector<float> g;
+	// One line (a row or a column): pixel i at p_visibility[p_start + i * p_stride]. g[i]: the signed central
+	// step at i (NAN next to unlit pixels).
+	auto scan = [&](size_t p_start, size_t p_stride, int p_count) {
+		auto at = [&](int p_i) { return p_visibility[p_start + size_t(p_i) * p_stride]; };
+		g.assign(size_t(p_count), NAN);
+		for (int i = 1; i + 1 < p_count; i++) {
+			if (at(i - 1) >= 0.0f && at(i) >= 0.0f && at(i + 1) >= 0.0f) {
+				g[i] = 0.5f * (at(i + 1) - at(i - 1));
+			}
+		}
+		for (int i = 1; i + 1 < p_count; i++) {
+			if (!penumbra(at(i)) || std::isnan(g[i])) {
+				continue;
+			}
+			// The steepest step going each way within R pixels, stopping at unlit pixels.
+			float best[2] = { 0.0f, 0.0f };
+			for (int side = 0; side < 2; side++) {
+				for (int d = 1; d <= R; d++) {
+					int k = side ? i + d : i - d;
+					if (k < 0 || k >= p_count || std::isnan(g[k])) {
+						break;
+					}
+					if (std::fabs(g[k]) > std::fabs(best[side])) {
+						best[side] = g[k];
+					}
+				}
+			}
+			float lo = std::min(std::fabs(best[0]), std::fabs(best[1]));
+			if (lo >= p_step && (best[0] > 0.0f) == (best[1] > 0.0f) && std::fabs(g[i]) * 3.0f <= lo) {
+				banded[p_start + size_t(i) * p_stride] = 1;
+			}
+		}
+	};
+	for (int y = 0; y < p_height; y++) {
+		scan(size_t(y) * size_t(p_width), 1, p_width);
+	}
+	for (int x = 0; x < p_width; x++) {
+		scan(size_t(x), size_t(p_width), p_height);
+	}
+	int count = 0, penumbra_count = 0;
+	for (size_t i = 0; i < banded.size(); i++) {
+		count += banded[i];
+		penumbra_count += penumbra(p_visibility[i]) ? 1 : 0;
+	}
+	if (r_penumbra) {
+		*r_penumbra = penumbra_count;
+	}
+	if (r_mask) {
+		*r_mask = banded;
+	}
+	return count;
+}
+
+PenumbraScene::ShadowError PenumbraScene::shadow_error(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, int p_width,
+		const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, int p_ref_width, int p_ref_height, int p_step) {
+	ShadowError e;
+	visibility_error(p_open, p_shadowed, p_width, p_ref_open, p_ref_shadowed, p_ref_width, p_ref_height, p_step, e.rmse);
+	ERR_FAIL_COND_V(p_step < 1 || p_width < 1 || p_open.size() != p_shadowed.size() || p_ref_open.size() != p_ref_shadowed.size() || p_ref_open.size() < size_t(p_ref_width) * size_t(p_ref_height) * 4, e);
+	const size_t height = p_open.size() / (size_t(p_width) * 4);
+	double sum = 0.0, ref_sum = 0.0;
+	std::vector<double> rel;
+	for (int y = 0; y < p_ref_height; y++) {
+		size_t ey = size_t(y) * p_step + p_step / 2;
+		if (ey >= height) {
+			break;
+		}
+		for (int x = 0; x < p_ref_width; x++) {
+			size_t ex = size_t(x) * p_step + p_step / 2;
+			if (ex >= size_t(p_width)) {
+				break;
+			}
+			size_t ei = (ey * size_t(p_width) + ex) * 4;
+			size_t ri = (size_t(y) * size_t(p_ref_width) + size_t(x)) * 4;
+			if (p_open[ei] <= 1e-3f || p_ref_open[ri] <= 1e-3f) {
+				continue;
+			}
+			// Silhouettes: a reference pixel that straddles two surfaces (the box's top and the floor) is a
+			// blend the engine's single sample cannot match whatever its shadows; skip pixels whose open
+			// image differs from a 4-neighbour's by more than 10 %.
+			bool edge = false;
+			const int nx[4] = { -1, 1, 0, 0 };
+			const int ny[4] = { 0, 0, -1, 1 };
+			for (int n = 0; n < 4 && !edge; n++) {
+				int x2 = x + nx[n], y2 = y + ny[n];
+				if (x2 < 0 || y2 < 0 || x2 >= p_ref_width || y2 >= p_ref_height) {
+					continue;
+				}
+				float o2 = p_ref_open[(size_t(y2) * size_t(p_ref_width) + size_t(x2)) * 4];
+				edge = std::fabs(o2 - p_ref_open[ri]) > 0.1f * p_ref_open[ri];
+			}
+			if (edge) {
+				continue;
+			}
+			double v = std::min(std::max(double(p_shadowed[ei] / p_open[ei]), 0.0), 1.5);
+			double vr = std::min(std::max(double(p_ref_shadowed[ri] / p_ref_open[ri]), 0.0), 1.5);
+			if (v >= 0.98 && vr >= 0.98) {
+				continue;
+			}
+			sum += (v - vr) * (v - vr);
+			ref_sum += vr;
+			rel.push_back(std::fabs(v - vr) / std::max(vr, 0.05));
+		}
+	}
+	e.pixels = int(rel.size());
+	if (rel.empty()) {
+		e.rel_rmse = 0.0;
+		e.p99 = 0.0;
+		return e;
+	}
+	e.rel_rmse = std::sqrt(sum / double(rel.size())) / std::max(ref_sum / double(rel.size()), 1e-6);
+	size_t k = std::min(rel.size() - 1, size_t(std::ceil(0.99 * double(rel.size()))) - 1);
+	std::nth_element(rel.begin(), rel.begin() + k, rel.end());
+	e.p99 = rel[k];
+	return e;
 }

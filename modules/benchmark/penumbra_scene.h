@@ -23,6 +23,7 @@
 #include "core/math/vector3.h"
 #include "servers/rendering/renderer_scene_render.h"
 
+#include <cstdint>
 #include <vector>
 
 class RenderingServer;
@@ -38,6 +39,7 @@ public:
 		float light_energy = 2.0f;
 		float light_range = 20.0f;
 		float box_half = 0.25f;
+		float box_half_height = -1.0f; // Vertical half extent; < 0: box_half (a cube). Small: a plate.
 		Vector3 box_center = Vector3(0.0f, 0.55f, 0.0f);
 		float floor_half = 4.0f;
 	};
@@ -93,6 +95,31 @@ public:
 	static void visibility_error(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, int p_width,
 			const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, int p_ref_width, int p_ref_height,
 			int p_step, double &r_rmse, double *r_penumbra_rmse = nullptr);
+
+	// Visibility image (shadowed / open, clamped to [0, 1.5]; -1 where the light does not reach).
+	static std::vector<float> visibility_image(const std::vector<float> &p_open, const std::vector<float> &p_shadowed);
+
+	// Banding (what the ADAPTIVE pass' detector looks for, thesis 6.3, on a whole image): a penumbra pixel
+	// (0.02 < v < 0.98) is banded when it sits on a plateau of a row or column: its central step is at most
+	// a third of the steepest step within 6 pixels on either side, those two steps go the same way and are
+	// each at least p_step per pixel. N hard shadows make N - 1 plateaus between their edges; a continuous
+	// penumbra has one steep part per edge (and Monte Carlo noise goes up and down). Returns the banded
+	// pixels; r_penumbra: the penumbra pixels (optional). Unlit pixels (v < 0) end the search.
+	// r_mask (optional): 1 per banded pixel.
+	static int count_banded_pixels(const std::vector<float> &p_visibility, int p_width, int p_height, int *r_penumbra = nullptr, float p_step = 0.003f, std::vector<uint8_t> *r_mask = nullptr);
+
+	// Error of the visibility against the reference over the shadow region (pixels where either
+	// visibility is below 0.98; same sampling as visibility_error(); silhouette pixels, where the open
+	// reference differs from a 4-neighbour by over 10 %, left out): rel_rmse = RMSE / mean reference
+	// visibility there, p99 = the 99th percentile of |v - v_ref| / max(v_ref, 0.05).
+	struct ShadowError {
+		double rmse = 1.0; // Over every lit pixel (as visibility_error()).
+		double rel_rmse = 1.0;
+		double p99 = 1.0;
+		int pixels = 0; // In the shadow region.
+	};
+	static ShadowError shadow_error(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, int p_width,
+			const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, int p_ref_width, int p_ref_height, int p_step);
 
 	~PenumbraScene() { free(); }
 };

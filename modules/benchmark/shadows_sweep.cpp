@@ -7,7 +7,10 @@
 #include "core/io/file_io.h"
 
 #include "core/math/math_funcs.h"
+#include "drivers/png/png_writer.h"
 #include "modules/benchmark/penumbra_scene.h"
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "modules/reference/renderer_compositor_reference.h"
 #include "scene/main/godot_instance.h"
 #include "servers/rendering_server.h"
@@ -41,6 +44,75 @@ int ShadowsSweep::subdivision_for_grid(int p_grid) {
 		s *= 2;
 	}
 	return s;
+}
+
+// Visibility (clamped to [0, 1], unlit pixels black) as an 8-bit grey PNG, each pixel p_scale x p_scale.
+static bool write_visibility_png(const std::vector<float> &p_visibility, int p_res, int p_scale, const String &p_path, String &r_error) {
+	std::vector<uint8_t> px(size_t(p_res * p_scale) * size_t(p_res * p_scale) * 4);
+	for (int y = 0; y < p_res * p_scale; y++) {
+		for (int x = 0; x < p_res * p_scale; x++) {
+			float v = p_visibility[size_t(y / p_scale) * p_res + x / p_scale];
+			uint8_t c = uint8_t(std::lround(std::min(std::max(v, 0.0f), 1.0f) * 255.0f));
+			size_t i = (size_t(y) * p_res * p_scale + x) * 4;
+			px[i] = px[i + 1] = px[i + 2] = c;
+			px[i + 3] = 255;
+		}
+	}
+	return PNGWriter::save_rgba8(px, p_res * p_scale, p_res * p_scale, p_path, &r_error);
+}
+
+bool ShadowsSweep::_write_images(const Options &p_options, RenderingServer *p_rs, PenumbraScene &p_objects, GodotInstance &p_engine, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, String &r_error) {
+	const int res = p_options.resolution;
+	RendererCompositorRD *compositor = dynamic_cast<RendererCompositorRD *>(p_engine.get_compositor());
+	if (!compositor || !compositor->get_render_forward_clustered()) {
+		r_error = "the images need the Forward+ renderer.";
+		return false;
+	}
+	if (p_ref_open.empty()) {
+		r_error = "--images needs the reference (drop --no-errors).";
+		return false;
+	}
+	AreaShadowRendererRD &shadows = compositor->get_render_forward_clustered()->get_area_shadow_renderer();
+	const RID light = p_objects.get_light();
+	p_rs->area_shadow_atlas_set_size(p_objects.get_viewport(), 0, 0); // The renderer's default atlas.
+	p_rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f); // The default.
+	p_rs->light_set_shadow(light, false);
+	std::vector<float> open = p_objects.render();
+	const String dir = p_options.images_dir + "/";
+	if (!write_visibility_png(PenumbraScene::visibility_image(p_ref_open, p_ref_shadowed), res, 2, dir + "penumbra_reference.png", r_error)) {
+		return false;
+	}
+	struct Shot {
+		const char *file;
+		RS::LightAreaShadowMode mode;
+		int grid;
+		bool filter;
+	};
+	const Shot shots[5] = {
+		{ "penumbra_pcss.png", RS::LIGHT_AREA_SHADOW_PCSS_BASELINE, 2, true },
+		{ "penumbra_9_pcf.png", RS::LIGHT_AREA_SHADOW_FIXED, 3, false },
+		{ "penumbra_9_filtered.png", RS::LIGHT_AREA_SHADOW_FIXED, 3, true },
+		{ "penumbra_25_pcf.png", RS::LIGHT_AREA_SHADOW_FIXED, 5, false },
+		{ "penumbra_25_filtered.png", RS::LIGHT_AREA_SHADOW_FIXED, 5, true },
+	};
+	p_rs->light_set_shadow(light, true);
+	for (const Shot &shot : shots) {
+		p_rs->light_area_set_shadow_mode(light, shot.mode);
+		p_rs->light_area_set_shadow_grid(light, shot.grid);
+		shadows.set_sample_penumbra_filter(shot.filter);
+		std::vector<float> shadowed = p_objects.render();
+		std::vector<float> v = PenumbraScene::visibility_image(open, shadowed);
+		PenumbraScene::ShadowError e = PenumbraScene::shadow_error(open, shadowed, res, p_ref_open, p_ref_shadowed, res, res, 1);
+		int penumbra = 0;
+		int banded = PenumbraScene::count_banded_pixels(v, res, res, &penumbra);
+		printf("%s: visibility rel-RMSE %.4f, p99 relative error %.3f (%d shadow pixels), banded %d of %d penumbra pixels\n", shot.file, e.rel_rmse, e.p99, e.pixels, banded, penumbra);
+		if (!write_visibility_png(v, res, 2, dir + shot.file, r_error)) {
+			shadows.set_sample_penumbra_filter(true);
+			return false;
+		}
+	}
+	shadows.set_sample_penumbra_filter(true);
+	return true;
 }
 
 bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, String *r_error) {
@@ -109,6 +181,12 @@ bool ShadowsSweep::run(const Options &p_options, std::vector<Row> &r_rows, Strin
 		};
 		const RID light = objects.get_light();
 		const Transform3D rest = PenumbraScene::light_transform(PenumbraScene::Settings());
+		if (ok && !p_options.images_dir.empty()) {
+			ok = _write_images(p_options, rs, objects, engine, ref_open, ref_shadowed, error);
+			objects.free();
+			engine.stop();
+			return ok ? true : fail(error);
+		}
 		for (size_t a = 0; ok && a < p_options.atlas_sizes.size(); a++) {
 			const int atlas = p_options.atlas_sizes[a];
 			for (size_t g = 0; ok && g < p_options.grids.size(); g++) {

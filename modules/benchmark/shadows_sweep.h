@@ -29,6 +29,10 @@
 
 #include <vector>
 
+class GodotInstance;
+class PenumbraScene;
+class RenderingServer;
+
 class ShadowsSweep {
 public:
 	struct Options {
@@ -43,6 +47,10 @@ public:
 		bool errors = true;
 		bool timing = true;
 		bool progress = false;
+		// Not empty: only render the doc's images (the reference, PCSS, 3 x 3 and 5 x 5 with the fixed PCF and
+		// the per-sample penumbra filter, default atlas) as visibility PNGs into this folder, and print their
+		// errors and banding; no CSV rows.
+		String images_dir;
 	};
 
 	struct Row {
@@ -57,6 +65,10 @@ public:
 		double shadow_ms = -1.0; // timing rows: median GPU ms of the shadow pass.
 	};
 
+private:
+	static bool _write_images(const Options &p_options, RenderingServer *p_rs, PenumbraScene &p_objects, GodotInstance &p_engine, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, String &r_error);
+
+public:
 	// Smallest power of two >= p_grid (tiles per side for p_grid^2 maps).
 	static int subdivision_for_grid(int p_grid);
 

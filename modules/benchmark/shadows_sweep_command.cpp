@@ -114,6 +114,11 @@ int shadows_sweep_command(const std::vector<String> &p_args) {
 			for (double b : list) {
 				options.blurs.push_back(float(b));
 			}
+		} else if (a == "--images") {
+			if (i + 1 >= p_args.size()) {
+				return shadows_usage_error("--images expects a folder.");
+			}
+			options.images_dir = p_args[++i];
 		} else {
 			return shadows_usage_error(vformat("unknown option '%s'.", a.c_str()));
 		}
@@ -123,6 +128,10 @@ int shadows_sweep_command(const std::vector<String> &p_args) {
 	if (!ShadowsSweep::run(options, rows, &error)) {
 		fprintf(stderr, "godot-area bench --sweep shadows: %s\n", error.c_str());
 		return 1;
+	}
+	if (!options.images_dir.empty()) {
+		printf("shadows sweep: images written to %s\n", options.images_dir.c_str());
+		return 0;
 	}
 	if (!ShadowsSweep::write_csv(csv, rows, &error)) {
 		fprintf(stderr, "godot-area bench --sweep shadows: %s\n", error.c_str());

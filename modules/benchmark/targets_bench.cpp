@@ -10,6 +10,8 @@
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
 #include "scene/resources/primitive_meshes.h"
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +64,7 @@ struct Config {
 	String name;
 	RID viewport;
 	bool area_code_disabled = false;
+	bool sample_filter_off = false; // Area shadows through the fixed PCF (AreaShadowRendererRD).
 	std::vector<double> gpu, cpu, cluster, opaque; // One entry per round.
 };
 
@@ -158,14 +161,14 @@ public:
 		return true;
 	}
 
-	RID add_shadow_light(RID p_scenario, bool p_shadow) {
+	RID add_shadow_light(RID p_scenario, bool p_shadow, RS::LightAreaShadowMode p_mode = RS::LIGHT_AREA_SHADOW_FIXED, int p_grid = 5) {
 		RID l = keep(rs->area_light_create());
 		rs->light_area_set_size(l, Vector2(1.0f, 1.0f));
 		rs->light_set_param(l, RS::LIGHT_PARAM_RANGE, 6.0f);
 		rs->light_set_param(l, RS::LIGHT_PARAM_ENERGY, 2.0f);
 		rs->light_set_shadow(l, p_shadow);
-		rs->light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_FIXED);
-		rs->light_area_set_shadow_grid(l, 5); // 25 maps.
+		rs->light_area_set_shadow_mode(l, p_mode);
+		rs->light_area_set_shadow_grid(l, p_grid); // 25 maps by default.
 		RID inst = keep(rs->instance_create());
 		rs->instance_set_base(inst, l);
 		rs->instance_set_scenario(inst, p_scenario);
@@ -230,6 +233,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		return fail(error);
 	}
 	RenderingServer *rs = engine.get_rendering_server();
+	// The S2 rows with the fixed PCF switch the per-sample penumbra filter off (a renderer knob, not an RS call).
+	RendererCompositorRD *compositor = dynamic_cast<RendererCompositorRD *>(engine.get_compositor());
+	AreaShadowRendererRD *shadows = compositor && compositor->get_render_forward_clustered() ? &compositor->get_render_forward_clustered()->get_area_shadow_renderer() : nullptr;
 	bool ok = true;
 	{
 		Scenes scenes(rs);
@@ -258,6 +264,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 		}
 		std::vector<std::pair<int, RID>> ltc_scenarios;
+		if (p_options.shadows_only) {
+			counts.clear();
+		}
 		for (int n : counts) {
 			if (n < 1 || n > int(CLI_MAX_LIGHTS_PER_TYPE)) {
 				ok = false;
@@ -283,12 +292,14 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			error = "an area light rejected its shading method.";
 		}
 		// P4: a scene without area lights (16 spots and a box), with and without the area code.
-		RID no_area = scenes.scenario_with_floor();
-		scenes.add_light_grid(no_area, -1, 16);
-		scenes.add_box(no_area, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
-		RID no_area_vp = scenes.viewport(no_area, w, h);
-		add("NO_AREA", no_area_vp);
-		add("NO_AREA_CODE_OFF", no_area_vp, true);
+		if (!p_options.shadows_only) {
+			RID no_area = scenes.scenario_with_floor();
+			scenes.add_light_grid(no_area, -1, 16);
+			scenes.add_box(no_area, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
+			RID no_area_vp = scenes.viewport(no_area, w, h);
+			add("NO_AREA", no_area_vp);
+			add("NO_AREA_CODE_OFF", no_area_vp, true);
+		}
 		// S1: one 25-map area light above a box, shadows on / off.
 		for (bool shadow : { true, false }) {
 			RID s = scenes.scenario_with_floor();
@@ -296,12 +307,33 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			scenes.add_shadow_light(s, shadow);
 			add(shadow ? "SHADOW_25" : "SHADOW_OFF", scenes.viewport(s, w, h));
 		}
+		// S2: the same light with the PCSS baseline, and 4 / 9 maps with and without the per-sample
+		// penumbra filter (issue 19's default: frame <= 1.5 x PCSS's).
+		{
+			RID s = scenes.scenario_with_floor();
+			scenes.add_box(s, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
+			scenes.add_shadow_light(s, true, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
+			add("SHADOW_PCSS", scenes.viewport(s, w, h));
+			for (int grid : { 2, 3 }) {
+				RID g = scenes.scenario_with_floor();
+				scenes.add_box(g, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
+				scenes.add_shadow_light(g, true, RS::LIGHT_AREA_SHADOW_FIXED, grid);
+				RID vp = scenes.viewport(g, w, h);
+				add(vformat("SHADOW_%d", grid * grid), vp);
+				configs[add(vformat("SHADOW_%d_PCF", grid * grid), vp)].sample_filter_off = true;
+			}
+			configs[add("SHADOW_25_PCF", configs[find("SHADOW_25")].viewport)].sample_filter_off = true;
+			RID g = scenes.scenario_with_floor();
+			scenes.add_box(g, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
+			scenes.add_shadow_light(g, true, RS::LIGHT_AREA_SHADOW_FIXED, 9);
+			add("SHADOW_81", scenes.viewport(g, w, h));
+		}
 		// C1: the embedded demo scene (the CLI's default scene) in a scene tree.
-		Node *demo = GodotInstance::load_scene(String(), &error);
-		if (!demo) {
+		Node *demo = p_options.shadows_only ? nullptr : GodotInstance::load_scene(String(), &error);
+		if (!demo && !p_options.shadows_only) {
 			ok = false;
 			error = "cannot load the embedded demo scene: " + error;
-		} else {
+		} else if (demo) {
 			engine.set_scene(demo);
 			SceneTree *tree = engine.get_tree();
 			tree->set_size(w, h);
@@ -315,6 +347,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			for (Config &c : configs) {
 				rs->viewport_set_active(c.viewport, true);
 				rs->set_debug_disable_area_lights(c.area_code_disabled);
+				if (shadows) {
+					shadows->set_sample_penumbra_filter(!c.sample_filter_off);
+				}
 				rs->draw(); // Discarded.
 				const double cpu0 = process_cpu_ms();
 				rs->draw();
@@ -326,6 +361,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 					opaque += pass.first == "opaque" ? pass.second : 0.0;
 				}
 				rs->set_debug_disable_area_lights(false);
+				if (shadows) {
+					shadows->set_sample_penumbra_filter(true);
+				}
 				rs->viewport_set_active(c.viewport, false);
 				c.gpu.push_back(gpu);
 				c.cpu.push_back(cpu);
@@ -386,6 +424,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 			ratio("P4", "no-area scene / same frame with the area code off", "NO_AREA", "NO_AREA_CODE_OFF", 1.01, true);
 			ratio("S1", "one 25-map shadowed area light / unshadowed", "SHADOW_25", "SHADOW_OFF", 1.25, true);
+			for (const char *name : { "SHADOW_4", "SHADOW_9", "SHADOW_25", "SHADOW_81", "SHADOW_4_PCF", "SHADOW_9_PCF", "SHADOW_25_PCF" }) {
+				ratio("S2", vformat("%s / the PCSS baseline", name), name, "SHADOW_PCSS", 1.5, String(name) == "SHADOW_4");
+			}
 			const int demo_index = find("DEMO");
 			if (demo_index >= 0) {
 				std::vector<double> q;
@@ -477,6 +518,8 @@ int targets_bench_command(const std::vector<String> &p_args) {
 			continue;
 		} else if (a == "--progress") {
 			options.progress = true;
+		} else if (a == "--shadows-only") {
+			options.shadows_only = true;
 		} else if (a == "--rounds" && has_value) {
 			if (!parse_int(p_args[++i], 1, 1000, options.rounds)) {
 				fprintf(stderr, "godot-area bench --targets: --rounds must be an integer in 1..1000, got '%s'\n", p_args[i].c_str());
@@ -490,7 +533,7 @@ int targets_bench_command(const std::vector<String> &p_args) {
 				return 2;
 			}
 		} else {
-			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress)\n", a.c_str());
+			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only)\n", a.c_str());
 			return 2;
 		}
 	}

@@ -45,6 +45,7 @@ public:
 		std::vector<int> p1_lights = { 1, 16, 64, 256 };
 		std::vector<int> p2_lights = { 16, 64 };
 		bool progress = false;
+		bool shadows_only = false; // Only the S1 / S2 shadow configurations (--shadows-only).
 	};
 
 	struct Result {

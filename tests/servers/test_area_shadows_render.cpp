@@ -36,8 +36,19 @@
 
 namespace TestAreaShadowsRender {
 
-static const int W = 48;
-static const int H = 48;
+// Image size of the fixture and the reference (the banding test renders larger, ResolutionScope).
+static int W = 48;
+static int H = 48;
+
+struct ResolutionScope {
+	int old_w, old_h;
+	ResolutionScope(int p_size) :
+			old_w(W), old_h(H) { W = H = p_size; }
+	~ResolutionScope() {
+		W = old_w;
+		H = old_h;
+	}
+};
 
 // The penumbra scene (modules/benchmark/penumbra_scene.h) seen from above, as in `bench --sweep shadows`.
 static RenderSceneData make_scene() {
@@ -45,14 +56,14 @@ static RenderSceneData make_scene() {
 }
 
 // The Embree reference of the penumbra scene, with and without shadow rays.
-static void render_reference(std::vector<float> &r_open, std::vector<float> &r_shadowed) {
+static void render_reference(std::vector<float> &r_open, std::vector<float> &r_shadowed, float p_target_error = 0.01f) {
 	RendererDummy::LightStorage ls;
 	RendererDummy::MeshStorage ms;
 	RendererDummy::MaterialStorage mats;
 	ReferenceRenderOptions options;
 	options.threads = 2;
-	options.target_relative_error = 0.01f;
-	options.max_samples = 2048;
+	options.target_relative_error = p_target_error;
+	options.max_samples = p_target_error < 0.01f ? 16384 : 2048;
 	ReferenceRenderer ref(&ls, &ms, &mats, options);
 	PenumbraScene penumbra;
 	RenderSceneData d = make_scene();
@@ -78,12 +89,12 @@ struct ShadowFixture {
 	RenderSceneData scene;
 
 	// p_with_box false: the box mesh is made but left out of the scene (an unoccluded floor).
-	bool init(bool p_with_box) {
+	bool init(bool p_with_box, const PenumbraScene::Settings &p_settings = PenumbraScene::Settings()) {
 		if (!(material_storage.initialize_gpu() && light_storage.initialize_gpu(32) && renderer.initialize(32))) {
 			return false;
 		}
 		scene = make_scene();
-		if (!penumbra.create(&light_storage, &mesh_storage, &material_storage, scene)) {
+		if (!penumbra.create(&light_storage, &mesh_storage, &material_storage, scene, p_settings)) {
 			return false;
 		}
 		light = penumbra.get_light();
@@ -122,6 +133,9 @@ TEST_CASE("[AreaLight3D][Shadows] the penumbra approaches the reference as shado
 		ShadowFixture f;
 		REQUIRE(f.init(true));
 		REQUIRE(f.renderer.area_shadow_atlas_set_size(1008, 9)); // 81 tiles of 112 px.
+		// The thesis' lookup (PCF of a fixed size per map): its trend with the map count. The per-sample
+		// penumbra filter (on by default) has its own tests below.
+		f.renderer.get_area_shadow_renderer().set_sample_penumbra_filter(false);
 		std::vector<float> open = f.render();
 		f.light_storage.light_set_shadow(f.light, true);
 
@@ -145,6 +159,110 @@ TEST_CASE("[AreaLight3D][Shadows] the penumbra approaches the reference as shado
 		CHECK(err[2] < err_pcss);
 		CHECK(err[3] < err_pcss);
 		CHECK(err[2] < 0.03);
+		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+	}
+}
+
+// Error of one shadowed render of the fixture against the reference.
+static PenumbraScene::ShadowError shadow_error(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed) {
+	return PenumbraScene::shadow_error(p_open, p_shadowed, W, p_ref_open, p_ref_shadowed, W, H, 1);
+}
+
+TEST_CASE("[AreaLight3D][Shadows] per-sample penumbra filtering lowers the error of 4, 9 and 25 maps against the reference") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	std::vector<float> ref_open, ref_shadowed;
+	render_reference(ref_open, ref_shadowed);
+	{
+		ShadowFixture f;
+		REQUIRE(f.init(true));
+		REQUIRE(f.renderer.area_shadow_atlas_set_size(1008, 9)); // 81 tiles of 112 px.
+		f.light_storage.light_set_param(f.light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f); // The default.
+		std::vector<float> open = f.render();
+		f.light_storage.light_set_shadow(f.light, true);
+		AreaShadowRendererRD &shadows = f.renderer.get_area_shadow_renderer();
+		CHECK(shadows.is_sample_penumbra_filter_enabled()); // On by default.
+		const int grids[3] = { 2, 3, 5 };
+		for (int grid : grids) {
+			f.light_storage.light_area_set_shadow_grid(f.light, grid);
+			shadows.set_sample_penumbra_filter(false);
+			PenumbraScene::ShadowError off = shadow_error(open, f.render(), ref_open, ref_shadowed);
+			shadows.set_sample_penumbra_filter(true);
+			PenumbraScene::ShadowError on = shadow_error(open, f.render(), ref_open, ref_shadowed);
+			MESSAGE("maps ", grid * grid, " (", on.pixels, " shadow pixels): visibility rel-RMSE filter off ", off.rel_rmse, ", on ", on.rel_rmse,
+					"; p99 relative error off ", off.p99, ", on ", on.p99, "; RMSE over lit pixels off ", off.rmse, ", on ", on.rmse);
+			CHECK(on.rel_rmse < off.rel_rmse * 0.9);
+			CHECK(on.p99 < off.p99);
+		}
+		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+	}
+}
+
+TEST_CASE("[AreaLight3D][Shadows] per-sample penumbra filtering removes the banding of 4, 9 and 25 maps") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	ResolutionScope scope(96);
+	{
+		ShadowFixture f;
+		// A thin plate instead of the box: its exact penumbra is one smooth ramp per edge (the light's
+		// rectangle convolved with the plate's shadow), so a staircase in it is banding.
+		PenumbraScene::Settings plate;
+		plate.box_half_height = 0.01f;
+		REQUIRE(f.init(true, plate));
+		REQUIRE(f.renderer.area_shadow_atlas_set_size(1008, 9)); // 81 tiles of 112 px.
+		f.light_storage.light_set_param(f.light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f); // The default.
+		std::vector<float> open = f.render();
+		f.light_storage.light_set_shadow(f.light, true);
+		AreaShadowRendererRD &shadows = f.renderer.get_area_shadow_renderer();
+		const int grids[3] = { 2, 3, 5 };
+		for (int grid : grids) {
+			f.light_storage.light_area_set_shadow_grid(f.light, grid);
+			int pen_off = 0, pen_on = 0;
+			shadows.set_sample_penumbra_filter(false);
+			int off = PenumbraScene::count_banded_pixels(PenumbraScene::visibility_image(open, f.render()), W, H, &pen_off);
+			shadows.set_sample_penumbra_filter(true);
+			int on = PenumbraScene::count_banded_pixels(PenumbraScene::visibility_image(open, f.render()), W, H, &pen_on);
+			MESSAGE("maps ", grid * grid, ": banded penumbra pixels, filter off ", off, " / ", pen_off, ", on ", on, " / ", pen_on);
+			CHECK(pen_on > 500); // There is a penumbra to judge.
+			CHECK(on < off);
+			CHECK(on * 100 <= pen_on); // At most 1 % of the penumbra.
+		}
+		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+	}
+}
+
+TEST_CASE("[AreaLight3D][Shadows] default settings on the penumbra scene: visibility rel-RMSE vs Embree <= 0.02, p99 relative error <= 10 %, a third of PCSS's error") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	std::vector<float> ref_open, ref_shadowed;
+	// A quieter reference than the other tests': its own Monte Carlo noise (1 % would add about 0.01 to the
+	// rel-RMSE) must not decide a 0.02 bound.
+	render_reference(ref_open, ref_shadowed, 0.004f);
+	{
+		ShadowFixture f;
+		REQUIRE(f.init(true));
+		// Every setting a new AreaLight3D has: shadow_blur 1, bias and normal bias of the light storage, the
+		// default mode and grid, the renderer's default atlas.
+		f.light_storage.light_set_param(f.light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f);
+		std::vector<float> open = f.render();
+		f.light_storage.light_set_shadow(f.light, true);
+		CHECK(f.light_storage.light_area_get_shadow_mode(f.light) == RS::LIGHT_AREA_SHADOW_FIXED);
+		PenumbraScene::ShadowError def = shadow_error(open, f.render(), ref_open, ref_shadowed);
+		const int grid = f.light_storage.light_area_get_shadow_grid(f.light);
+		MESSAGE("default (FIXED ", grid, " x ", grid, "): rel-RMSE ", def.rel_rmse, ", p99 relative error ", def.p99, " over ", def.pixels, " shadow pixels");
+		const int grids[4] = { 2, 3, 5, 9 };
+		for (int g : grids) {
+			f.light_storage.light_area_set_shadow_grid(f.light, g);
+			PenumbraScene::ShadowError e = shadow_error(open, f.render(), ref_open, ref_shadowed);
+			MESSAGE("FIXED ", g, " x ", g, ": rel-RMSE ", e.rel_rmse, ", p99 ", e.p99);
+		}
+		f.light_storage.light_area_set_shadow_mode(f.light, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
+		PenumbraScene::ShadowError pcss = shadow_error(open, f.render(), ref_open, ref_shadowed);
+		MESSAGE("PCSS baseline: rel-RMSE ", pcss.rel_rmse, ", p99 ", pcss.p99);
+		CHECK(def.pixels > 300);
+		CHECK(def.rel_rmse <= 0.02);
+		CHECK(def.p99 <= 0.10);
+		CHECK(def.rel_rmse * 3.0 <= pcss.rel_rmse);
 		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 	}
 }
@@ -193,10 +311,10 @@ TEST_CASE("[AreaLight3D][Shadows] shadow properties: defaults, server values, ba
 	SceneTest::DummyServer server;
 	AreaLight3D *light = new AreaLight3D;
 	CHECK(light->get("area_shadow_mode").to_int() == AreaLight3D::AREA_SHADOW_FIXED);
-	CHECK(light->get("area_shadow_grid").to_int() == 3);
+	CHECK(light->get("area_shadow_grid").to_int() == 5);
 	CHECK(int(AreaLight3D::AREA_SHADOW_PCSS_BASELINE) == int(RS::LIGHT_AREA_SHADOW_PCSS_BASELINE));
 	RID rid = light->get_light();
-	CHECK(RSG::light_storage->light_area_get_shadow_grid(rid) == 3);
+	CHECK(RSG::light_storage->light_area_get_shadow_grid(rid) == 5);
 	bool valid = false;
 	light->set("shadow_enabled", true, &valid);
 	CHECK(valid);

@@ -26,9 +26,10 @@ void AreaShadowRendererRD::get_octant_axes(uint32_t p_quadrant, Vector3 &r_right
 }
 
 uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight) {
-	uint32_t den = p_grid >= 2 ? p_grid - 1 : 2;
-	uint32_t un = uint32_t(std::lround(p_uv.x * den));
-	uint32_t vn = uint32_t(std::lround(p_uv.y * den));
+	// One map (PCSS, or the centre map of an exhausted atlas): den 0, the light's centre standing for all of it.
+	uint32_t den = p_grid >= 2 ? p_grid - 1 : 0;
+	uint32_t un = den ? uint32_t(std::lround(p_uv.x * den)) : 0;
+	uint32_t vn = den ? uint32_t(std::lround(p_uv.y * den)) : 0;
 	uint32_t w = 0;
 	if (p_weight > 0.0f) {
 		w = uint32_t(std::min(std::max(std::lround(p_weight * WEIGHT_SCALE), 1l), 255l));
@@ -419,7 +420,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		d.bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BIAS);
 		d.normal_bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS);
 		d.pcf_radius = std::min(std::max(light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BLUR) * 2.0f, 0.0f), 8.0f);
-		d.mode = uint32_t(mode);
+		d.mode = uint32_t(mode) | (sample_filter ? FLAG_SAMPLE_FILTER : 0u);
 		frame_lights[lf.key] = lf;
 	}
 	// Trees of lights that are gone or no longer ADAPTIVE give their tiles back before the grid lights share.

@@ -54,6 +54,9 @@ public:
 		MODE_HEURISTIC = 3, // Drawn as FIXED.
 	};
 
+	// AreaShadowData::mode bits above the mode (AREA_SHADOW_FLAG_* in the shader).
+	static constexpr uint32_t FLAG_SAMPLE_FILTER = 0x100; // Per-sample penumbra filter (else the fixed PCF).
+
 	// Quadrature weights in AreaShadowData::maps (bits 24..31): weight * WEIGHT_SCALE (0 = the grid's
 	// trapezoid rule). ADAPTIVE weights are multiples of 1/256 up to 1/4 (a quarter of a leaf's area).
 	static constexpr float WEIGHT_SCALE = 256.0f;
@@ -142,6 +145,7 @@ private:
 	uint32_t default_subdivision = AreaShadowAtlas::DEFAULT_SUBDIVISION;
 	uint32_t adaptive_divisor = 0; // 0: the project setting.
 	bool adaptive_skip_settled = true;
+	bool sample_filter = true;
 
 	bool _ensure_atlas(AtlasInstance &p_atlas);
 	// Frees the ADAPTIVE trees when the atlas took every tile back (configure()).
@@ -205,6 +209,11 @@ public:
 	// while its camera, light, casters, receivers and atlas stay the same (a static view costs no
 	// reprojection). Off: every frame tests (Algorithm 1 as written; tests of the convergence).
 	void set_adaptive_skip_settled(bool p_enable);
+	// Per-sample penumbra filter (default on): each map's lookup is filtered over the penumbra of the light
+	// cell its sample point stands for (shaders/area_light_shadow_inc.glsl, area_shadow_sample_filtered()).
+	// Off: the fixed-size PCF of shadow_blur (thesis 6.1 as written), for comparisons.
+	void set_sample_penumbra_filter(bool p_enable) { sample_filter = p_enable; }
+	bool is_sample_penumbra_filter_enabled() const { return sample_filter; }
 
 	RID get_data_buffer() const { return data_buffer; }
 	RID get_atlas_texture() const { return current && current->texture.is_valid() ? current->texture : dummy_texture; }

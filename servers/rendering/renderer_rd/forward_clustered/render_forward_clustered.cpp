@@ -237,7 +237,7 @@ uint32_t RenderForwardClustered::_get_area_shadow_version_bits() const {
 		if (data[i].map_count == 0) {
 			continue; // Unshadowed (the shader's visibility is 1 without a lookup).
 		}
-		bits |= data[i].mode == uint32_t(RS::LIGHT_AREA_SHADOW_PCSS_BASELINE) ? AREA_VERSION_SHADOWS_PCSS : AREA_VERSION_SHADOWS_PCF;
+		bits |= (data[i].mode & 0xFFu) == uint32_t(RS::LIGHT_AREA_SHADOW_PCSS_BASELINE) ? AREA_VERSION_SHADOWS_PCSS : AREA_VERSION_SHADOWS_PCF;
 	}
 	return bits;
 }

@@ -23,6 +23,12 @@
 #define AREA_SHADOW_MAX_MAPS 84u
 #define AREA_SHADOW_MODE_FIXED 0u
 #define AREA_SHADOW_MODE_PCSS 1u
+#define AREA_SHADOW_MODE_MASK 0xFFu
+#define AREA_SHADOW_FLAG_SAMPLE_FILTER 0x100u // mode bit: per-sample penumbra filter (else the fixed PCF).
+// Blocker search reach: blockers nearer the sample than d_receiver / (1 + this) are searched only partly.
+#define AREA_SHADOW_SEARCH_K 2.0
+#define AREA_SHADOW_MAX_K 8.0
+#define AREA_SHADOW_MARCH_STEPS 2
 
 // Lookups compiled in: AREA_SHADOWS_PCF (grid modes) and/or AREA_SHADOWS_PCSS (PCSS baseline), set by the
 // area version key of RenderForwardClustered from the lights that have maps; with neither, both.
@@ -39,7 +45,7 @@ struct AreaShadowData { // std430, 448 bytes.
 	float normal_bias; // 80: normal offset in texels of the receiver (shadow_normal_bias).
 	float pcf_radius; // 84: PCF kernel radius in texels.
 	uint map_count; // 88: valid maps (0 = unshadowed).
-	uint mode; // 92: AREA_SHADOW_MODE_*.
+	uint mode; // 92: AREA_SHADOW_MODE_* | AREA_SHADOW_FLAG_*.
 	uint atlas_subdivision; // 96: tiles per side.
 	float atlas_texel; // 100: 1 / atlas size (pixels).
 	uint quadrant_size; // 104: pixels per octant view (tile size / 2).
@@ -134,6 +140,124 @@ float area_shadow_pcf(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal, in
 	return lit / (n * n);
 }
 
+// Per-sample penumbra filter (ours; thesis 6.1's PCF sized by the sub-light each map stands for).
+// Sample point s of an n x n grid stands for its cell of the light, [u - c/2, u + c/2] x [v - c/2, v + c/2]
+// clipped to [0,1]^2 with c = 1/(n - 1): the cells tile the rectangle and their areas are the trapezoid
+// weights. ADAPTIVE points carry their share w of the light instead: a cell of side sqrt(w / trapezoid),
+// exact for uniform trees. One map (den 0) stands for the whole light.
+// r_lo, r_hi: the cell's corners as offsets from s in light space (metres).
+void area_shadow_cell(uint p_packed, vec2 p_uv, vec2 p_half_size, out vec2 r_lo, out vec2 r_hi) {
+	float den = float((p_packed >> 20u) & 0xFu);
+	vec2 lo = vec2(0.0);
+	vec2 hi = vec2(1.0);
+	if (den > 0.0) {
+		float c = 1.0 / den;
+		uint w = p_packed >> 24u;
+		if (w != 0u) {
+			vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(p_uv - 0.5), vec2(0.4999))));
+			c = sqrt(float(w) * (1.0 / 256.0) / (edge.x * edge.y));
+		}
+		lo = max(p_uv - 0.5 * c, vec2(0.0));
+		hi = min(p_uv + 0.5 * c, vec2(1.0));
+	}
+	r_lo = (lo - p_uv) * 2.0 * p_half_size;
+	r_hi = (hi - p_uv) * 2.0 * p_half_size;
+}
+
+// The receiver point p + p_offset (p = sample point + p_v, the offset parallel to the light), slid along the
+// ray from the sample point onto the receiver's tangent plane (normal p_normal through p). Returned relative
+// to the sample point.
+vec3 area_shadow_on_receiver(vec3 p_v, vec3 p_normal, vec2 p_offset) {
+	vec3 dir = p_v + vec3(p_offset, 0.0);
+	float den = dot(p_normal, dir);
+	float num = dot(p_normal, p_v);
+	if (den > -1e-4 * length(dir) || num >= 0.0) {
+		return dir; // Grazing or behind: keep the point parallel to the light.
+	}
+	return dir * (num / den);
+}
+
+// Atlas coordinate (pixels) of light-space direction p_v in map p_packed, clamped inside its quadrant.
+vec2 area_shadow_atlas_pixel(uint p_light, uint p_packed, vec3 p_v) {
+	uint quadrant;
+	vec2 quv;
+	area_shadow_octant_project(p_v, quadrant, quv);
+	uint qsize = area_shadows.data[p_light].quadrant_size;
+	vec2 origin = vec2(area_shadow_quadrant_origin(p_packed, quadrant, area_shadows.data[p_light].atlas_subdivision, qsize, area_shadows.data[p_light].tile_size));
+	return clamp(origin + quv * float(qsize), origin + 0.5, origin + float(qsize) - 0.5);
+}
+
+// Blocker search of one map for the filtered lookup: p_taps^2 gathers (4 texels each) at p + p_k_search * delta
+// for delta on the cell's n-rooks pattern (as area_shadow_filtered(), shifted by p_shift). Widens
+// r_ratio_range to every blocker's distance ratio d_blocker / d_receiver and counts the blockers.
+void area_shadow_blocker_search(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal, vec2 p_lo, vec2 p_hi, vec2 p_shift, int p_taps, float p_k_search, float p_margin_texels, float p_texel_per_m, inout vec2 r_ratio_range, inout float r_blockers) {
+	float inv_scale = 1.0 / area_shadows.data[p_light].depth_scale;
+	float atlas_texel = area_shadows.data[p_light].atlas_texel;
+	float inv_count = 1.0 / float(p_taps * p_taps);
+	for (int a = 0; a < p_taps; a++) {
+		for (int b = 0; b < p_taps; b++) {
+			vec2 f = (vec2(float(a * p_taps + b), float(b * p_taps + a)) + p_shift) * inv_count;
+			vec3 x = area_shadow_on_receiver(p_v, p_normal, mix(p_lo, p_hi, f) * p_k_search);
+			if (x.z >= 0.0) {
+				continue;
+			}
+			float d_r = length(x);
+			// Surfaces within 3 % of the receiver are not counted (their penumbra is under a few texels, and the
+			// receiver itself, seen at a grazing angle, must not drag the range to hard shadows); the filter's
+			// last step still compares with the receiver, so contact shadows stay.
+			float limit = min(d_r - p_margin_texels * d_r * p_texel_per_m, 0.97 * d_r);
+			vec4 g = textureGather(sampler2D(area_shadow_atlas, area_shadow_sampler), area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel, 0) * inv_scale;
+			vec4 r = g / d_r;
+			bvec4 blocked = lessThan(g, vec4(limit));
+			vec4 lo = mix(vec4(1e6), r, vec4(blocked));
+			vec4 hi = mix(vec4(-1e6), r, vec4(blocked));
+			r_ratio_range.x = min(r_ratio_range.x, min(min(lo.x, lo.y), min(lo.z, lo.w)));
+			r_ratio_range.y = max(r_ratio_range.y, max(max(hi.x, hi.y), max(hi.z, hi.w)));
+			r_blockers += dot(vec4(blocked), vec4(1.0));
+		}
+	}
+}
+
+// Filtered lookup of one map: the mean over p_taps^2 offsets delta of the cell (an n-rooks pattern, p_taps^2
+// distinct positions on each axis, shifted by p_shift: different for maps sharing a row or column, so an
+// n x n grid's edges get n^2 p_taps^2 steps instead of n) of whether the ray from the receiver p to the
+// cell point s + delta is blocked. That ray meets depth fraction r = d_blocker / d_receiver where the ray
+// from s towards p + k delta does, k = 1/r - 1 (similar triangles), r d_receiver away from s; it is taken
+// as blocked where the map sees a surface nearer than that point (bilinear compare), tested at
+// AREA_SHADOW_MARCH_STEPS fractions spanning the blockers' range p_ratio (a short march along the ray in
+// the map: a box's top edge and its base cast penumbrae of different widths). Each tap point is slid onto
+// the receiver's tangent plane (exact depths on planar receivers: no acne from the width of the kernel).
+float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal, vec2 p_lo, vec2 p_hi, vec2 p_shift, vec2 p_ratio, float p_min_k, int p_taps, float p_bias_texels, float p_texel_per_m) {
+	float scale = area_shadows.data[p_light].depth_scale;
+	float atlas_texel = area_shadows.data[p_light].atlas_texel;
+	float inv_count = 1.0 / float(p_taps * p_taps);
+	float lit = 0.0;
+	for (int a = 0; a < p_taps; a++) {
+		for (int b = 0; b < p_taps; b++) {
+			vec2 f = (vec2(float(a * p_taps + b), float(b * p_taps + a)) + p_shift) * inv_count;
+			vec2 delta = mix(p_lo, p_hi, f);
+			float tap = 1.0;
+			for (int m = 0; m < AREA_SHADOW_MARCH_STEPS; m++) {
+				// Step m covers ratios up to its end (a surface anywhere before it blocks).
+				float t0 = float(m) / float(AREA_SHADOW_MARCH_STEPS);
+				float t1 = float(m + 1) / float(AREA_SHADOW_MARCH_STEPS);
+				float r_mid = mix(p_ratio.x, p_ratio.y, 0.5 * (t0 + t1));
+				float r_end = m + 1 == AREA_SHADOW_MARCH_STEPS ? 1.0 : mix(p_ratio.x, p_ratio.y, t1);
+				float k = max(1.0 / max(r_mid, 1.0 / (1.0 + AREA_SHADOW_MAX_K)) - 1.0, p_min_k);
+				vec3 x = area_shadow_on_receiver(p_v, p_normal, delta * k);
+				if (x.z >= 0.0) {
+					continue;
+				}
+				float d = length(x);
+				float receiver = (d * r_end - d * p_texel_per_m * p_bias_texels) * scale;
+				tap = min(tap, textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel, receiver), 0.0));
+			}
+			lit += tap;
+		}
+	}
+	return lit * inv_count;
+}
+
 // PCSS baseline (one map from the light centre): blocker search, penumbra estimate, variable PCF.
 float area_shadow_pcss(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal) {
 	vec3 v = p_pos;
@@ -185,6 +309,73 @@ float area_shadow_pcss(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal) {
 	return lit / 81.0;
 }
 
+// Visibility through the per-sample penumbra filter: (1) a blocker search pooled over the light's maps gives
+// one blocker distance ratio (the occluders are the same for every sub-light); no blocker: lit. (2) Each map
+// is filtered over the penumbra its own cell casts, k = d_receiver / d_blocker - 1, at least
+// pcf_radius texels (shadow_blur), and weighted as in area_shadow_pcf (cell area x form factor).
+float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p_normal) {
+	vec2 half_size = area_shadows.data[p_light].half_size;
+	float texel_per_m = 2.0 * AREA_SHADOW_OCTANT_HALF_X / float(area_shadows.data[p_light].quadrant_size);
+	float normal_bias = area_shadows.data[p_light].normal_bias;
+	float bias_texels = area_shadows.data[p_light].bias * 10.0;
+	// Pattern shift of a map: golden-ratio steps of its other coordinate, so the maps of one row (or
+	// column), which throw the same edge positions across it, sample between each other's points.
+	// Taps per axis of each map's patterns (search and filter): the light's maps x taps stay about constant.
+	int taps = p_count <= 4u ? 6 : (p_count <= 9u ? 4 : (p_count <= 25u ? 3 : 1));
+	// The search runs on every lit pixel in range (the filter only where it finds blockers): sparser.
+	int search_taps = p_count <= 4u ? 4 : (p_count <= 9u ? 2 : 1);
+	vec2 ratio = vec2(1e6, -1e6);
+	float blockers = 0.0;
+	for (uint i = 0u; i < p_count; i++) {
+		uint packed = area_shadows.data[p_light].maps[i];
+		vec2 uv = area_shadow_map_uv(packed);
+		vec3 v = p_pos - vec3((uv - 0.5) * 2.0 * half_size, 0.0);
+		v += p_normal * (normal_bias * length(v) * texel_per_m);
+		if (v.z >= 0.0) {
+			continue;
+		}
+		vec2 lo, hi;
+		area_shadow_cell(packed, uv, half_size, lo, hi);
+		float cos_theta = clamp(dot(p_normal, -v) / max(length(v), 1e-6), 0.05, 1.0);
+		float slope = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, 8.0);
+		vec2 shift = fract(uv.yx * 0.61803399);
+		area_shadow_blocker_search(p_light, packed, v, p_normal, lo, hi, shift, search_taps, AREA_SHADOW_SEARCH_K, bias_texels + 2.0 * slope, texel_per_m, ratio, blockers);
+	}
+	if (blockers == 0.0) {
+		return 1.0;
+	}
+	ratio = clamp(ratio, vec2(1.0 / (1.0 + AREA_SHADOW_MAX_K)), vec2(1.0));
+	float min_blur = area_shadows.data[p_light].pcf_radius;
+	float visibility = 0.0;
+	float total = 0.0;
+	for (uint i = 0u; i < p_count; i++) {
+		uint packed = area_shadows.data[p_light].maps[i];
+		vec2 uv = area_shadow_map_uv(packed);
+		vec3 v = p_pos - vec3((uv - 0.5) * 2.0 * half_size, 0.0);
+		float dist = length(v);
+		float w = area_shadow_map_weight(packed, uv) * max(-v.z, 0.0) * max(dot(p_normal, -v), 0.0) / max(dist * dist * dist * dist, 1e-12);
+		v += p_normal * (normal_bias * dist * texel_per_m);
+		float lit = 1.0;
+		if (v.z < 0.0) {
+			vec2 lo, hi;
+			area_shadow_cell(packed, uv, half_size, lo, hi);
+			float cos_theta = clamp(dot(p_normal, -v) / max(length(v), 1e-6), 0.05, 1.0);
+			float slope = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, 8.0);
+			// shadow_blur: the box is at least pcf_radius texels wide at the receiver.
+			float extent = max(max(hi.x - lo.x, hi.y - lo.y), 1e-4);
+			float min_k = min_blur * dist * texel_per_m / extent;
+			// Receivers steep to the light (a box's sides): their tangent plane is a poor stand-in beyond a
+			// few texels (taps slide under the floor or into the box), so the kernel fades to shadow_blur's.
+			float facing = clamp(p_normal.z * 2.0 - 0.4, 0.0, 1.0);
+			vec2 shift = fract(vec2(0.5, 0.5) + uv.yx * 0.61803399);
+			lit = area_shadow_filtered(p_light, packed, v, p_normal, lo * facing, hi * facing, shift, ratio, min_k / max(facing, 1e-3), taps, bias_texels + slope, texel_per_m);
+		}
+		visibility += lit * w;
+		total += w;
+	}
+	return total > 0.0 ? visibility / total : 1.0;
+}
+
 // Visibility (0..1) of area light p_light_index (index into area_lights.data) from view-space point
 // p_vertex with unit view-space normal p_normal.
 float light_process_area_shadow(uint p_light_index, vec3 p_vertex, vec3 p_normal) {
@@ -197,11 +388,18 @@ float light_process_area_shadow(uint p_light_index, vec3 p_vertex, vec3 p_normal
 	vec3 pos = (light_from_view * vec4(p_vertex, 1.0)).xyz;
 	vec3 normal = mat3(light_from_view) * p_normal;
 #ifdef AREA_SHADOWS_PCSS
-	if (area_shadows.data[p_light_index].mode == AREA_SHADOW_MODE_PCSS) {
+	uint mode = area_shadows.data[p_light_index].mode;
+	if ((mode & AREA_SHADOW_MODE_MASK) == AREA_SHADOW_MODE_PCSS) {
 		return area_shadow_pcss(p_light_index, area_shadows.data[p_light_index].maps[0], pos, normal);
 	}
 #endif
 #ifdef AREA_SHADOWS_PCF
+#ifndef AREA_SHADOWS_PCSS
+	uint mode = area_shadows.data[p_light_index].mode;
+#endif
+	if ((mode & AREA_SHADOW_FLAG_SAMPLE_FILTER) != 0u) {
+		return area_shadow_sample_filtered(p_light_index, count, pos, normal);
+	}
 	// Filter radius from the sub-lights' penumbra: pcf_radius is the kernel of the whole light (one map).
 	// The n x n sample points span the rectangle edge to edge, n - 1 steps, so neighbouring maps' shadow
 	// edges lie about pcf_radius / (n - 1) texels apart: that is each sub-light's penumbra, and the average
