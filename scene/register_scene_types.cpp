@@ -55,6 +55,10 @@ void register_scene_types() {
 	GDREGISTER_CLASS(QuadMesh);
 	GDREGISTER_CLASS(BoxMesh);
 	GDREGISTER_CLASS(SphereMesh);
+	GDREGISTER_CLASS(CylinderMesh);
+	GDREGISTER_CLASS(CapsuleMesh);
+	GDREGISTER_CLASS(TorusMesh);
+	GDREGISTER_CLASS(PrismMesh);
 	GDREGISTER_CLASS(ProceduralSkyMaterial);
 	GDREGISTER_CLASS(Sky);
 	GDREGISTER_CLASS(Environment);

@@ -493,6 +493,13 @@ public:
 	virtual uint64_t get_rendering_info(RenderingInfo p_info) const = 0;
 	// Renderer tests: when true the renderer shades every light per pixel (no clustering).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
+	// Benchmarks: when true the renderer skips its per-frame area-light work (area shadow frame setup,
+	// AUTO receiver scan), the baseline a scene without area lights is timed against ("pays nothing").
+	virtual void set_debug_disable_area_lights(bool p_disable) = 0;
+	// Shader statistics: the colour pass's fragment sources as the renderer composes them, as (file name,
+	// GLSL): "base.frag" without area lights, then "area_<METHOD>.frag" per area shading method. Empty
+	// for renderers without GLSL.
+	virtual std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const = 0;
 
 	RenderingServer();
 	virtual ~RenderingServer();

@@ -10,7 +10,7 @@
 /*                                                                        */
 /* Defaults: the full suite at 96 x 96, method {LTC} (0). Prints the      */
 /* summary table (markdown) and the mean reference time per image.        */
-/* Must run before Main::setup() (the suite makes its own servers).       */
+/* Runs with no engine started: the suite starts its own GodotInstance.   */
 
 #pragma once
 

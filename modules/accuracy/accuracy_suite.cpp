@@ -106,7 +106,7 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 		return fail(vformat("The accuracy suite resolution must be in [1, 1024], got %d.", p_options.resolution));
 	}
 	if (RenderingServer::get_singleton()) {
-		return fail("AccuracySuite::run creates its own rendering servers; a RenderingServer already exists (call it before Main::setup()).");
+		return fail("AccuracySuite::run creates its own rendering servers; a RenderingServer already exists (stop the running GodotInstance first).");
 	}
 	std::vector<int> methods = p_options.methods.empty() ? std::vector<int>{ RS::LIGHT_AREA_SHADING_LTC } : p_options.methods;
 	std::vector<AccuracyScenes::Scene> all = p_options.ci_subset ? AccuracyScenes::ci_subset() : AccuracyScenes::full_suite();

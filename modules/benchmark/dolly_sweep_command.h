@@ -15,7 +15,7 @@
 /* engine at 3x (288 x 162), atlas 2048 in 8 x 8 tiles, 7 timed frames;   */
 /* CSV to doc/results/dolly.csv, then the chart (dolly.png next to the    */
 /* CSV) with /usr/bin/python3 misc/scripts/plot_dolly.py, and the three   */
-/* target ratios of issue 7 printed. Runs before Main::setup().           */
+/* target ratios of issue 7 printed. Starts its own GodotInstance.        */
 
 #pragma once
 

@@ -13,10 +13,6 @@
 #include "modules/reference/renderer_compositor_reference.h"
 #include "scene/main/godot_instance.h"
 #include "scene/resources/primitive_meshes.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/rendering_device.h"
-#include "servers/rendering/rendering_server_default.h"
 
 #include <algorithm>
 #include <chrono>
@@ -400,27 +396,22 @@ bool MethodsSweep::write_shader_sources(const String &p_dir, String *r_error) {
 		}
 		return false;
 	};
-	// The same file and variant list as RenderForwardClustered::initialize().
-	ShaderRD shader;
-	const std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n" };
-	if (!shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants)) {
-		return fail("Cannot load servers/rendering/renderer_rd/shaders/forward_clustered/scene_forward_clustered.glsl.");
+	// The sources come from the renderer itself (the variants and defines it compiles), through the
+	// RenderingServer; no frame is drawn.
+	GodotInstance engine;
+	String error;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error)) {
+		return fail(error);
+	}
+	const std::vector<std::pair<String, String>> sources = engine.get_rendering_server()->get_debug_scene_shader_sources();
+	if (sources.empty()) {
+		return fail("The renderer returned no scene shader sources.");
 	}
 	std::error_code ec;
 	std::filesystem::create_directories(p_dir, ec);
-	auto write = [&](const String &p_name, const String &p_text) {
-		const String path = p_dir + "/" + p_name;
-		String error;
-		return file_write_atomic(path, p_text, &error);
-	};
-	if (!write("base.frag", shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, RenderForwardClustered::SCENE_SHADER_COLOR))) {
-		return fail("Cannot write shader sources under '" + p_dir + "'.");
-	}
-	const char *names[4] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC" };
-	for (int m = 0; m < 4; m++) {
-		const String source = shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, RenderForwardClustered::SCENE_SHADER_COLOR_AREA, RenderForwardClustered::get_area_method_defines(1u << m));
-		if (!write(String("area_") + names[m] + ".frag", source)) {
-			return fail("Cannot write shader sources under '" + p_dir + "'.");
+	for (const std::pair<String, String> &source : sources) {
+		if (!file_write_atomic(p_dir + "/" + source.first, source.second, &error)) {
+			return fail("Cannot write shader sources under '" + p_dir + "': " + error);
 		}
 	}
 	return true;

@@ -23,7 +23,7 @@
 /* it fails before the sweep with a message naming the problem            */
 /* (bench_charts.h runs the script);                                      */
 /* --no-charts skips the charts.                                          */
-/* Must run before Main::setup() (the sweep makes its own servers).       */
+/* Runs with no engine started: the sweep starts its own GodotInstance.   */
 
 #pragma once
 

@@ -12,8 +12,8 @@
 /* --maps takes squares of 2..9 (grid^2). Defaults: 96 x 96, atlases 2048 */
 /* and 8192, 4..81 maps, shadow_blur 0, 1, 2, 9 timed frames, reference  */
 /* to 1 % relative error; CSV to doc/results/shadows_sweep.csv. Charts:   */
-/* /usr/bin/python3 misc/scripts/plot_shadows.py CSV. Runs before         */
-/* Main::setup() (the sweep makes its own renderer).                      */
+/* /usr/bin/python3 misc/scripts/plot_shadows.py CSV. Starts its own      */
+/* GodotInstance (no engine may be running).                              */
 
 #pragma once
 

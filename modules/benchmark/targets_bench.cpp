@@ -6,15 +6,10 @@
 #include "modules/benchmark/targets_bench.h"
 
 #include "core/error/error_macros.h"
-#include "main/main.h"
+#include "scene/main/godot_instance.h"
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
-#include "scene/register_scene_types.h"
 #include "scene/resources/primitive_meshes.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
-#include "servers/rendering/rendering_device.h"
-#include "servers/rendering/rendering_server_default.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +20,7 @@
 
 namespace {
 
-// The CLI's capacity (Main::setup -> RendererCompositorRD::initialize() default): the light loops and
+// The CLI's capacity (GodotInstance::start() with the renderer's default): the light loops and
 // the cluster build pay for it, so the benchmark must use the same.
 constexpr uint32_t CLI_MAX_LIGHTS_PER_TYPE = 512;
 
@@ -230,21 +225,11 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		return fail("--rounds must be >= 1.");
 	}
 	String error;
-	RenderingDevice *device = new RenderingDevice;
-	if (!device->initialize(&error)) {
-		delete device;
-		return fail("No usable Vulkan device: " + error);
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error, CLI_MAX_LIGHTS_PER_TYPE)) {
+		return fail(error);
 	}
-	RendererCompositorRD *compositor = new RendererCompositorRD;
-	if (!compositor->initialize(CLI_MAX_LIGHTS_PER_TYPE)) {
-		delete compositor;
-		device->finalize();
-		delete device;
-		return fail("The Forward+ renderer could not be initialized (see the errors above).");
-	}
-	RenderForwardClustered *renderer = compositor->get_render_forward_clustered();
-	RenderingServerDefault *rs = new RenderingServerDefault(compositor);
-	register_scene_types();
+	RenderingServer *rs = engine.get_rendering_server();
 	bool ok = true;
 	{
 		Scenes scenes(rs);
@@ -312,16 +297,16 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			add(shadow ? "SHADOW_25" : "SHADOW_OFF", scenes.viewport(s, w, h));
 		}
 		// C1: the embedded demo scene (the CLI's default scene) in a scene tree.
-		SceneTree tree;
-		Node *demo = Main::load_scene(String(), &error);
+		Node *demo = GodotInstance::load_scene(String(), &error);
 		if (!demo) {
 			ok = false;
 			error = "cannot load the embedded demo scene: " + error;
 		} else {
-			tree.get_root()->add_child(demo);
-			tree.set_size(w, h);
-			rs->viewport_set_active(tree.get_viewport_rid(), false);
-			add("DEMO", tree.get_viewport_rid());
+			engine.set_scene(demo);
+			SceneTree *tree = engine.get_tree();
+			tree->set_size(w, h);
+			rs->viewport_set_active(tree->get_viewport_rid(), false);
+			add("DEMO", tree->get_viewport_rid());
 		}
 
 		// Interleaved rounds: each configuration draws a discarded frame (the first after a switch) and a
@@ -329,7 +314,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		for (int round = 0; ok && round < p_options.rounds; round++) {
 			for (Config &c : configs) {
 				rs->viewport_set_active(c.viewport, true);
-				renderer->set_area_code_disabled(c.area_code_disabled);
+				rs->set_debug_disable_area_lights(c.area_code_disabled);
 				rs->draw(); // Discarded.
 				const double cpu0 = process_cpu_ms();
 				rs->draw();
@@ -340,7 +325,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 					cluster += pass.first == "cluster_build" ? pass.second : 0.0;
 					opaque += pass.first == "opaque" ? pass.second : 0.0;
 				}
-				renderer->set_area_code_disabled(false);
+				rs->set_debug_disable_area_lights(false);
 				rs->viewport_set_active(c.viewport, false);
 				c.gpu.push_back(gpu);
 				c.cpu.push_back(cpu);
@@ -441,10 +426,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 		}
 	}
-	unregister_scene_types();
-	delete rs;
-	device->finalize();
-	delete device;
+	engine.stop();
 	if (!ok) {
 		return fail(error);
 	}

@@ -97,6 +97,10 @@ public:
 	virtual uint64_t get_last_frame_rendering_info(RS::RenderingInfo p_info) const { return 0; }
 	// When true, shade every light for every pixel instead of using clusters (test reference).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
+	// RS::set_debug_disable_area_lights().
+	virtual void set_debug_disable_area_lights(bool p_disable) {}
+	// RS::get_debug_scene_shader_sources().
+	virtual std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const { return {}; }
 
 	virtual ~RendererSceneRender() {}
 };

@@ -214,6 +214,7 @@ void RDImpl::begin_frame() {
 		vkCmdResetQueryPool(command_buffer, query_pool, 0, MAX_TIMESTAMPS);
 	}
 	frame_timestamp_names.clear();
+	frame_label_names.clear();
 	recording = true;
 }
 
@@ -325,6 +326,15 @@ void RDImpl::submit_frame() {
 	if (submitted || !recording) {
 		return;
 	}
+	if (open_labels > 0) {
+		ERR_PRINT(vformat("submit: %u debug label(s) still open; closing them (each draw_command_begin_label() needs an end).", open_labels));
+		for (; open_labels > 0; open_labels--) {
+			if (cmd_end_label) {
+				cmd_end_label(command_buffer);
+			}
+		}
+	}
+	captured_label_names = frame_label_names;
 	vkEndCommandBuffer(command_buffer);
 	recording = false;
 	VkSubmitInfo si = { VK_STRUCTURE_TYPE_SUBMIT_INFO };
@@ -431,6 +441,43 @@ uint64_t RenderingDevice::get_captured_timestamp_gpu_time(uint32_t p_index) cons
 String RenderingDevice::get_captured_timestamp_name(uint32_t p_index) const {
 	ERR_FAIL_INDEX_V((int64_t)p_index, (int64_t)(uint32_t)impl->captured_timestamp_names.size(), String());
 	return impl->captured_timestamp_names[p_index];
+}
+
+/****************/
+/**** LABELS ****/
+/****************/
+
+void RenderingDevice::draw_command_begin_label(const String &p_name, const Color &p_color) {
+	Impl *s = impl;
+	ERR_FAIL_COND_MSG(!s->initialized, "draw_command_begin_label: RenderingDevice is not initialized.");
+	ERR_FAIL_COND_MSG(s->list.active, "draw_command_begin_label: not allowed inside a draw or compute list.");
+	s->ensure_recording();
+	if (s->cmd_begin_label) {
+		VkDebugUtilsLabelEXT label = { VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT };
+		label.pLabelName = p_name.c_str();
+		label.color[0] = p_color.r;
+		label.color[1] = p_color.g;
+		label.color[2] = p_color.b;
+		label.color[3] = p_color.a;
+		s->cmd_begin_label(s->command_buffer, &label);
+	}
+	s->frame_label_names.push_back(p_name);
+	s->open_labels++;
+}
+
+void RenderingDevice::draw_command_end_label() {
+	Impl *s = impl;
+	ERR_FAIL_COND_MSG(!s->initialized, "draw_command_end_label: RenderingDevice is not initialized.");
+	ERR_FAIL_COND_MSG(s->list.active, "draw_command_end_label: not allowed inside a draw or compute list.");
+	ERR_FAIL_COND_MSG(s->open_labels == 0, "draw_command_end_label: no label is open.");
+	if (s->cmd_end_label) {
+		s->cmd_end_label(s->command_buffer);
+	}
+	s->open_labels--;
+}
+
+const std::vector<String> &RenderingDevice::get_captured_label_names() const {
+	return impl->captured_label_names;
 }
 
 /*************/

@@ -524,6 +524,18 @@ public:
 	uint64_t get_captured_timestamp_gpu_time(uint32_t p_index) const;
 	String get_captured_timestamp_name(uint32_t p_index) const;
 
+	/****************/
+	/**** LABELS ****/
+	/****************/
+
+	// Names the commands recorded until the matching end label (VK_EXT_debug_utils: the pass name in
+	// RenderDoc, Nsight and validation messages; without the extension only the name is kept). Labels
+	// nest; not inside a draw or compute list. A frame submitted with labels open closes them (error).
+	void draw_command_begin_label(const String &p_name, const Color &p_color = Color(1, 1, 1, 1));
+	void draw_command_end_label();
+	// The labels opened in the last submitted frame, in order of their begin.
+	const std::vector<String> &get_captured_label_names() const;
+
 	/***************/
 	/**** MISC  ****/
 	/***************/

@@ -215,6 +215,11 @@ struct RenderingDevice::Impl {
 	std::vector<String> captured_timestamp_names;
 	std::vector<uint64_t> captured_timestamp_times;
 
+	// Debug labels.
+	std::vector<String> frame_label_names;
+	std::vector<String> captured_label_names;
+	uint32_t open_labels = 0;
+
 	ListState list;
 
 	// Helpers (rendering_device.cpp).

@@ -533,6 +533,14 @@ std::vector<std::pair<String, double>> RenderingServerDefault::get_frame_profile
 	return RSG::scene_render->get_last_frame_profile();
 }
 
+void RenderingServerDefault::set_debug_disable_area_lights(bool p_disable) {
+	RSG::scene_render->set_debug_disable_area_lights(p_disable);
+}
+
+std::vector<std::pair<String, String>> RenderingServerDefault::get_debug_scene_shader_sources() const {
+	return RSG::scene_render->get_debug_scene_shader_sources();
+}
+
 void RenderingServerDefault::set_debug_force_all_lights(bool p_enable) {
 	RSG::scene_render->set_debug_force_all_lights(p_enable);
 }

@@ -146,6 +146,8 @@ public:
 		return p_info >= 0 && p_info < RENDERING_INFO_MAX ? frame_rendering_info[p_info] : 0;
 	}
 	void set_debug_force_all_lights(bool p_enable) override;
+	void set_debug_disable_area_lights(bool p_disable) override;
+	std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const override;
 
 	// The scene cull of this server (tests read its counters).
 	RendererSceneCull *get_scene_cull() const { return scene_cull; }

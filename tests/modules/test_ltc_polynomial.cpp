@@ -17,12 +17,10 @@
 #include "modules/ltc_fit/ltc_fitter.h"
 #include "modules/ltc_fit/ltc_polynomial.h"
 #include "modules/ltc_fit/ltc_table_io.h"
+#include "scene/main/godot_instance.h"
+#include "servers/rendering_server.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "tests/servers/rd_test_fixture.h"
 
 #include <doctest/doctest.h>
@@ -389,70 +387,65 @@ TEST_CASE("[AreaLight3D][LTC] the polynomial LTC specular of a glossy plane stay
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
-// Forward+ image (red channel) of a metal plane (f0 = 1) under a 1 x 0.5 m light 1 m up, seen
-// obliquely, with the light's shading method p_method. Empty on failure.
+// Forward+ image (RGBA floats; the tests read red) of a metal plane (f0 = 1) under a 1 x 0.5 m light
+// 1 m up, seen obliquely, with the light's shading method p_method, rendered through the
+// RenderingServer. Empty on failure.
 static std::vector<float> render_plane(RS::LightAreaShadingMethod p_method, float p_roughness, int p_size) {
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
-	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	std::vector<float> image;
-	if (material_storage.initialize_gpu() && light_storage.initialize_gpu(8) && renderer.initialize(8)) {
-		RS::SurfaceData ground;
-		const float h = 10.0f;
-		ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
-		ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-		ground.indices = { 0, 1, 2, 0, 2, 3 };
-		RID mesh = mesh_storage.mesh_create();
-		mesh_storage.mesh_add_surface(mesh, ground);
-		RS::MaterialParams params;
-		params.metallic = 1.0f;
-		params.roughness = p_roughness;
-		params.cull_back = false;
-		RID material = material_storage.material_create();
-		material_storage.material_set_params(material, params);
-		RID light = light_storage.light_create(RS::LIGHT_AREA);
-		light_storage.light_area_set_size(light, Vector2(1.0f, 0.5f));
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_ENERGY, 1.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_SPECULAR, 1.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_RANGE, 100.0f);
-		light_storage.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
-		light_storage.light_area_set_shading_method(light, p_method);
-
-		RenderSceneData d;
-		d.cam_transform = Transform3D(Basis::looking_at(Vector3(0, -1.5f, -3.0f).normalized(), Vector3(0, 1, 0)), Vector3(0, 1.5f, 3.0f));
-		d.z_near = 0.05f;
-		d.z_far = 50.0f;
-		d.fovy_degrees = 60.0f;
-		d.cam_projection = Projection::create_perspective(60.0f, 1.0f, d.z_near, d.z_far);
-		d.viewport_width = p_size;
-		d.viewport_height = p_size;
-		d.environment.has_environment = true;
-		d.environment.background = RS::ENV_BG_COLOR;
-		d.environment.bg_color = Color(0, 0, 0, 1);
-		d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
-		d.environment.ambient_energy = 0.0f;
-		RenderSceneData::GeometryInstance g;
-		g.mesh = mesh;
-		g.material_override = material;
-		d.geometry.push_back(g);
-		RenderSceneData::LightInstance li;
-		li.light = light;
-		li.type = RS::LIGHT_AREA;
-		li.transform = Transform3D(Basis::from_columns(Vector3(1, 0, 0), Vector3(0, 0, -1), Vector3(0, 1, 0)), Vector3(0.3f, 1.0f, -0.5f));
-		d.lights.push_back(li);
-		RID rt = renderer.render_target_create(p_size, p_size);
-		renderer.render_scene(d, rt);
-		image = renderer.render_target_get_data(rt);
-		renderer.render_target_free(rt);
-		mesh_storage.mesh_free(mesh);
-		material_storage.material_free(material);
-		light_storage.light_free(light);
+	GodotInstance engine;
+	String error;
+	if (!engine.start(GodotInstance::BACKEND_RD, &error, 8)) {
+		MESSAGE(error.c_str());
+		return {};
 	}
-	renderer.finalize();
-	light_storage.finalize_gpu();
-	material_storage.finalize_gpu();
-	return image;
+	RenderingServer *rs = engine.get_rendering_server();
+	RS::SurfaceData ground;
+	const float h = 10.0f;
+	ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
+	ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
+	ground.indices = { 0, 1, 2, 0, 2, 3 };
+	RID mesh = rs->mesh_create();
+	rs->mesh_add_surface(mesh, ground);
+	RS::MaterialParams params;
+	params.metallic = 1.0f;
+	params.roughness = p_roughness;
+	params.cull_back = false;
+	RID material = rs->material_create();
+	rs->material_set_params(material, params);
+	rs->mesh_surface_set_material(mesh, 0, material);
+	RID light = rs->area_light_create();
+	rs->light_area_set_size(light, Vector2(1.0f, 0.5f));
+	rs->light_set_param(light, RS::LIGHT_PARAM_ENERGY, 1.0f);
+	rs->light_set_param(light, RS::LIGHT_PARAM_SPECULAR, 1.0f);
+	rs->light_set_param(light, RS::LIGHT_PARAM_RANGE, 100.0f);
+	rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
+	rs->light_area_set_shading_method(light, p_method);
+
+	RID env = rs->environment_create();
+	rs->environment_set_background(env, RS::ENV_BG_COLOR);
+	rs->environment_set_bg_color(env, Color(0, 0, 0, 1));
+	rs->environment_set_ambient_light(env, Color(0, 0, 0, 1), RS::ENV_AMBIENT_SOURCE_DISABLED, 0.0f);
+	RID scenario = rs->scenario_create();
+	rs->scenario_set_environment(scenario, env);
+	RID ground_instance = rs->instance_create();
+	rs->instance_set_base(ground_instance, mesh);
+	rs->instance_set_scenario(ground_instance, scenario);
+	RID light_instance = rs->instance_create();
+	rs->instance_set_base(light_instance, light);
+	rs->instance_set_scenario(light_instance, scenario);
+	rs->instance_set_transform(light_instance, Transform3D(Basis::from_columns(Vector3(1, 0, 0), Vector3(0, 0, -1), Vector3(0, 1, 0)), Vector3(0.3f, 1.0f, -0.5f)));
+	RID camera = rs->camera_create();
+	rs->camera_set_perspective(camera, 60.0f, 0.05f, 50.0f);
+	rs->camera_set_transform(camera, Transform3D(Basis::looking_at(Vector3(0, -1.5f, -3.0f).normalized(), Vector3(0, 1, 0)), Vector3(0, 1.5f, 3.0f)));
+	RID viewport = rs->viewport_create();
+	rs->viewport_set_size(viewport, p_size, p_size);
+	rs->viewport_attach_camera(viewport, camera);
+	rs->viewport_set_scenario(viewport, scenario);
+	rs->draw();
+	const Image image = rs->viewport_get_texture_data(viewport);
+	for (RID rid : { viewport, camera, light_instance, ground_instance, scenario, env, light, material, mesh }) {
+		rs->free(rid);
+	}
+	return image.get_data();
 }
 
 TEST_CASE("[AreaLight3D][LTC] Forward+ renders LIGHT_AREA_SHADING_LTC_POLYNOMIAL close to LIGHT_AREA_SHADING_LTC on a glossy plane") {

@@ -14,13 +14,10 @@
 
 #include "core/io/image.h"
 #include "core/math/math_funcs.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "scene/main/godot_instance.h"
 #include "servers/rendering/rendering_server_default.h"
 #include "tests/servers/rd_test_fixture.h"
-#include "tests/servers/render_test_fixture.h"
+#include "tests/servers/render_scene_helpers.h"
 
 #include <doctest/doctest.h>
 
@@ -539,7 +536,8 @@ TEST_CASE("[Reference] background, back-face culling, unshaded and spot cone mat
 
 /* Cross-check with the GPU renderer */
 
-// A scene description applied to any set of storages, so the GPU and the reference get the same data.
+// A scene description built through a RenderingServer, so the GPU and the reference get the same
+// data through the door users take (RS API, scene cull, viewport).
 struct CrossScene {
 	struct Object {
 		RS::SurfaceData surface;
@@ -554,33 +552,66 @@ struct CrossScene {
 	};
 	std::vector<Object> objects;
 	std::vector<LightDesc> lights;
+	Transform3D camera;
+	float fovy = 60.0f, z_far = 30.0f;
+	Color bg_color = Color(0, 0, 0, 1);
+	Color ambient_color = Color(0, 0, 0, 1);
+	float ambient_energy = 0.0f;
 
-	// Creates the resources in the given storages and fills r_data; created RIDs go to r_owned.
-	void build(RendererMeshStorage &p_mesh, RendererMaterialStorage &p_mat, RendererLightStorage &p_light, RenderSceneData &r_data, std::vector<RID> &r_meshes, std::vector<RID> &r_materials, std::vector<RID> &r_lights) const {
+	// Creates the scene in p_rs, draws one frame of p_w x p_h and frees everything again.
+	Image render(RenderingServer *p_rs, int p_w, int p_h) const {
+		std::vector<RID> owned; // Freed in reverse order of creation.
+		RID scenario = p_rs->scenario_create();
+		RID env = p_rs->environment_create();
+		p_rs->environment_set_background(env, RS::ENV_BG_COLOR);
+		p_rs->environment_set_bg_color(env, bg_color);
+		p_rs->environment_set_ambient_light(env, ambient_color, ambient_energy > 0.0f ? RS::ENV_AMBIENT_SOURCE_COLOR : RS::ENV_AMBIENT_SOURCE_DISABLED, ambient_energy);
+		p_rs->scenario_set_environment(scenario, env);
+		owned.push_back(env);
+		owned.push_back(scenario);
 		for (const Object &o : objects) {
-			RID mesh = p_mesh.mesh_create();
-			p_mesh.mesh_add_surface(mesh, o.surface);
-			RID mat = p_mat.material_create();
-			p_mat.material_set_params(mat, o.material);
-			p_mesh.mesh_surface_set_material(mesh, 0, mat);
-			r_meshes.push_back(mesh);
-			r_materials.push_back(mat);
-			add_geometry(r_data, mesh, RID(), o.transform);
+			RID mesh = p_rs->mesh_create();
+			p_rs->mesh_add_surface(mesh, o.surface);
+			RID mat = p_rs->material_create();
+			p_rs->material_set_params(mat, o.material);
+			p_rs->mesh_surface_set_material(mesh, 0, mat);
+			RID inst = p_rs->instance_create();
+			p_rs->instance_set_base(inst, mesh);
+			p_rs->instance_set_scenario(inst, scenario);
+			p_rs->instance_set_transform(inst, o.transform);
+			owned.insert(owned.end(), { mat, mesh, inst });
 		}
 		for (const LightDesc &l : lights) {
-			RID light = p_light.light_create(l.type);
-			p_light.light_set_param(light, RS::LIGHT_PARAM_ENERGY, l.energy);
-			p_light.light_set_param(light, RS::LIGHT_PARAM_RANGE, l.range);
-			p_light.light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, l.decay);
-			p_light.light_set_param(light, RS::LIGHT_PARAM_SPECULAR, l.specular);
+			RID light = l.type == RS::LIGHT_SPOT ? p_rs->spot_light_create() : p_rs->omni_light_create();
+			p_rs->light_set_param(light, RS::LIGHT_PARAM_ENERGY, l.energy);
+			p_rs->light_set_param(light, RS::LIGHT_PARAM_RANGE, l.range);
+			p_rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, l.decay);
+			p_rs->light_set_param(light, RS::LIGHT_PARAM_SPECULAR, l.specular);
 			if (l.type == RS::LIGHT_SPOT) {
-				p_light.light_set_param(light, RS::LIGHT_PARAM_SPOT_ANGLE, l.spot_angle);
-				p_light.light_set_param(light, RS::LIGHT_PARAM_SPOT_ATTENUATION, l.spot_attenuation);
+				p_rs->light_set_param(light, RS::LIGHT_PARAM_SPOT_ANGLE, l.spot_angle);
+				p_rs->light_set_param(light, RS::LIGHT_PARAM_SPOT_ATTENUATION, l.spot_attenuation);
 			}
-			p_light.light_set_color(light, l.color);
-			r_lights.push_back(light);
-			add_light(r_data, light, l.type, l.transform);
+			p_rs->light_set_color(light, l.color);
+			RID inst = p_rs->instance_create();
+			p_rs->instance_set_base(inst, light);
+			p_rs->instance_set_scenario(inst, scenario);
+			p_rs->instance_set_transform(inst, l.transform);
+			owned.insert(owned.end(), { light, inst });
 		}
+		RID cam = p_rs->camera_create();
+		p_rs->camera_set_perspective(cam, fovy, 0.05f, z_far);
+		p_rs->camera_set_transform(cam, camera);
+		RID viewport = p_rs->viewport_create();
+		p_rs->viewport_set_size(viewport, p_w, p_h);
+		p_rs->viewport_attach_camera(viewport, cam);
+		p_rs->viewport_set_scenario(viewport, scenario);
+		owned.insert(owned.end(), { cam, viewport });
+		p_rs->draw();
+		Image image = p_rs->viewport_get_texture_data(viewport);
+		for (auto it = owned.rbegin(); it != owned.rend(); ++it) {
+			p_rs->free(*it);
+		}
+		return image;
 	}
 };
 
@@ -647,49 +678,27 @@ TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pix
 		scene.lights.push_back({ RS::LIGHT_SPOT, Transform3D(Basis::looking_at(Vector3(0.2f, -1, -0.3f).normalized(), Vector3(0, 0, -1)), Vector3(0, 3, 0.5f)), Color(1, 1, 1, 1), 3.0f, 6.0f, 1.0f, 30.0f, 0.8f, 1.0f });
 	}
 	const int W = 96, H = 64;
-	RenderSceneData d = make_scene(Transform3D(Basis::looking_at(Vector3(0, -0.45f, -1).normalized(), Vector3(0, 1, 0)), Vector3(0, 1.8f, 3.2f)), 60.0f, W, H, 30.0f);
-	d.environment.bg_color = Color(0.1f, 0.15f, 0.3f, 1);
-	d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_COLOR;
-	d.environment.ambient_color = Color(0.2f, 0.2f, 0.25f, 1);
-	d.environment.ambient_energy = 0.5f;
+	scene.camera = Transform3D(Basis::looking_at(Vector3(0, -0.45f, -1).normalized(), Vector3(0, 1, 0)), Vector3(0, 1.8f, 3.2f));
+	scene.bg_color = Color(0.1f, 0.15f, 0.3f, 1);
+	scene.ambient_color = Color(0.2f, 0.2f, 0.25f, 1);
+	scene.ambient_energy = 0.5f;
 
-	std::vector<float> gpu_img, ref_img;
+	Image gpu, ref;
+	String error;
 	{
-		RendererRD::LightStorage light_storage;
-		RendererRD::MeshStorage mesh_storage;
-		RendererRD::MaterialStorage material_storage;
-		RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-		REQUIRE(material_storage.initialize_gpu());
-		REQUIRE(light_storage.initialize_gpu(64));
-		REQUIRE(renderer.initialize(64));
-		RenderSceneData gd = d;
-		std::vector<RID> meshes, materials, lights;
-		scene.build(mesh_storage, material_storage, light_storage, gd, meshes, materials, lights);
-		RID rt = renderer.render_target_create(W, H);
-		REQUIRE(rt.is_valid());
-		renderer.render_scene(gd, rt);
-		gpu_img = renderer.render_target_get_data(rt);
-		renderer.render_target_free(rt);
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
+		GodotInstance engine;
+		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 64), error.c_str());
+		gpu = scene.render(engine.get_rendering_server(), W, H);
 	}
 	{
-		ReferenceFixture f;
-		RenderSceneData rdata = d;
-		scene.build(f.mesh_storage, f.material_storage, f.light_storage, rdata, f.meshes, f.materials, f.lights);
-		ref_img = f.render(rdata);
+		GodotInstance reference;
+		REQUIRE_MESSAGE(reference.start_with_compositor(new RendererCompositorReference(ReferenceRenderOptions()), &error), error.c_str());
+		ref = scene.render(reference.get_rendering_server(), W, H);
 	}
-	REQUIRE(gpu_img.size() == ref_img.size());
+	REQUIRE(gpu.get_width() == W);
+	REQUIRE(gpu.get_height() == H);
+	REQUIRE(ref.get_width() == W);
+	REQUIRE(ref.get_height() == H);
 
 	// The GPU target is half float (relative precision 2^-11): 2e-3 relative + 2e-4 absolute per
 	// channel. Pixels whose centre falls within rounding distance of a silhouette or triangle edge may
@@ -698,7 +707,7 @@ TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pix
 	double worst = 0.0;
 	for (int y = 0; y < H; y++) {
 		for (int x = 0; x < W; x++) {
-			Color g = pixel(gpu_img, W, x, y), r = pixel(ref_img, W, x, y);
+			Color g = gpu.get_pixel(x, y), r = ref.get_pixel(x, y);
 			bool ok = true;
 			for (int c = 0; c < 3; c++) {
 				double diff = std::fabs(double(g[c]) - double(r[c]));

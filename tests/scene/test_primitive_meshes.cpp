@@ -1,17 +1,22 @@
 /**************************************************************************/
 /*  test_primitive_meshes.cpp                                             */
 /**************************************************************************/
-/* PlaneMesh, QuadMesh, BoxMesh, SphereMesh and ArrayMesh: Godot 4.7      */
-/* defaults, vertex counts, unit outward normals, clockwise (Godot)      */
-/* winding seen from outside, tangent frames, AABBs, index validity and   */
-/* rejection of bad parameters.                                           */
+/* PlaneMesh, QuadMesh, BoxMesh, SphereMesh, CylinderMesh, CapsuleMesh,   */
+/* TorusMesh, PrismMesh and ArrayMesh: Godot 4.7 defaults, vertex counts, */
+/* unit outward normals, clockwise (Godot) winding seen from outside,     */
+/* tangent frames, AABBs, enclosed volumes, index validity and rejection  */
+/* of bad parameters.                                                     */
 
 #include "scene/resources/primitive_meshes.h"
+
+#include "scene/main/node.h"
+#include "scene/resources/resource_format_text.h"
 
 #include "tests/scene/scene_test_fixture.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace TestPrimitiveMeshes {
@@ -252,6 +257,264 @@ TEST_CASE("[PrimitiveMesh] SphereMesh geometry") {
 		CHECK(box.size.x <= 2.0f);
 		CHECK(box.size.x > 1.9f);
 	}
+}
+
+// Volume enclosed by a closed surface from the divergence theorem; with Godot's clockwise front faces
+// seen from outside, the triangles' (b - a) x (c - a) point inwards, hence the minus sign.
+static double enclosed_volume(const RS::SurfaceData &p_s) {
+	double volume = 0.0;
+	for (size_t i = 0; i + 2 < p_s.indices.size(); i += 3) {
+		const Vector3 &a = p_s.vertices[p_s.indices[i]], &b = p_s.vertices[p_s.indices[i + 1]], &c = p_s.vertices[p_s.indices[i + 2]];
+		volume -= double(a.dot(b.cross(c))) / 6.0;
+	}
+	return volume;
+}
+
+TEST_CASE("[PrimitiveMesh] CylinderMesh, CapsuleMesh, TorusMesh and PrismMesh defaults match Godot 4.7") {
+	DummyServer server;
+	Ref<CylinderMesh> cylinder;
+	cylinder.instantiate();
+	CHECK(cylinder->get("top_radius").to_float() == doctest::Approx(0.5));
+	CHECK(cylinder->get("bottom_radius").to_float() == doctest::Approx(0.5));
+	CHECK(cylinder->get("height").to_float() == doctest::Approx(2.0));
+	CHECK(cylinder->get("radial_segments").to_int() == 64);
+	CHECK(cylinder->get("rings").to_int() == 4);
+	CHECK(cylinder->get("cap_top").to_bool());
+	CHECK(cylinder->get("cap_bottom").to_bool());
+	Ref<CapsuleMesh> capsule;
+	capsule.instantiate();
+	CHECK(capsule->get("radius").to_float() == doctest::Approx(0.5));
+	CHECK(capsule->get("height").to_float() == doctest::Approx(2.0));
+	CHECK(capsule->get("radial_segments").to_int() == 64);
+	CHECK(capsule->get("rings").to_int() == 8);
+	Ref<TorusMesh> torus;
+	torus.instantiate();
+	CHECK(torus->get("inner_radius").to_float() == doctest::Approx(0.5));
+	CHECK(torus->get("outer_radius").to_float() == doctest::Approx(1.0));
+	CHECK(torus->get("rings").to_int() == 64);
+	CHECK(torus->get("ring_segments").to_int() == 32);
+	Ref<PrismMesh> prism;
+	prism.instantiate();
+	CHECK(prism->get("left_to_right").to_float() == doctest::Approx(0.5));
+	CHECK(Vector3(prism->get("size")) == Vector3(1, 1, 1));
+	CHECK(prism->get("subdivide_width").to_int() == 0);
+	CHECK(prism->get("subdivide_height").to_int() == 0);
+	CHECK(prism->get("subdivide_depth").to_int() == 0);
+	for (const char *name : { "CylinderMesh", "CapsuleMesh", "TorusMesh", "PrismMesh" }) {
+		CAPTURE(name);
+		CHECK(ClassDB::can_instantiate(name));
+		CHECK(ClassDB::is_parent_class(name, "PrimitiveMesh"));
+	}
+}
+
+TEST_CASE("[PrimitiveMesh] CylinderMesh geometry: closed, outward, the volume of a (truncated) cone") {
+	DummyServer server;
+	Ref<CylinderMesh> cylinder;
+	cylinder.instantiate();
+	SUBCASE("default cylinder") {
+		RS::SurfaceData s = cylinder->get_mesh_arrays();
+		CHECK(s.vertices.size() == (size_t)(4 + 2) * (64 + 1) + 2 * (64 + 2));
+		check_surface_valid(s);
+		CHECK(check_winding_and_tangents(s) == (4 + 1) * 64 * 2 + 2 * 64);
+		CHECK(enclosed_volume(s) == doctest::Approx(Math::PI * 0.25 * 2.0).epsilon(0.005));
+		AABB box = cylinder->get_aabb();
+		CHECK(box.position.y == doctest::Approx(-1.0));
+		CHECK(box.size.y == doctest::Approx(2.0));
+		CHECK(box.size.x == doctest::Approx(1.0).epsilon(0.001));
+	}
+	SUBCASE("a cone's side normals tilt by its slope") {
+		cylinder->set("top_radius", 0.0);
+		cylinder->set("bottom_radius", 1.0);
+		cylinder->set("height", 1.0);
+		cylinder->set("radial_segments", 32);
+		RS::SurfaceData s = cylinder->get_mesh_arrays();
+		CHECK(s.vertices.size() == (size_t)(4 + 2) * (32 + 1) + (32 + 2)); // No top cap of radius 0.
+		check_surface_valid(s);
+		check_winding_and_tangents(s);
+		// The slope rises 1 over 1: side normals are 45 degrees up.
+		CHECK(s.normals[40].y == doctest::Approx(std::sqrt(0.5)).epsilon(1e-4));
+		const double n = 32.0;
+		CHECK(enclosed_volume(s) == doctest::Approx(n / 2.0 * std::sin(Math::TAU / n) / 3.0).epsilon(1e-4)); // Pyramid on a 32-gon.
+	}
+	SUBCASE("without caps the side is open") {
+		cylinder->set("cap_top", false);
+		cylinder->set("cap_bottom", false);
+		CHECK(cylinder->get_mesh_arrays().vertices.size() == (size_t)(4 + 2) * (64 + 1));
+	}
+}
+
+TEST_CASE("[PrimitiveMesh] CapsuleMesh geometry: hemispheres joined by a cylinder") {
+	DummyServer server;
+	Ref<CapsuleMesh> capsule;
+	capsule.instantiate();
+	RS::SurfaceData s = capsule->get_mesh_arrays();
+	CHECK(s.vertices.size() == (size_t)2 * (8 + 2) * (64 + 1));
+	check_surface_valid(s);
+	check_winding_and_tangents(s);
+	// Every vertex lies at the radius from the capsule's axis segment, with the normal pointing away from it.
+	int bad = 0;
+	for (size_t i = 0; i < s.vertices.size(); i++) {
+		const Vector3 &p = s.vertices[i];
+		const Vector3 on_axis(0, std::clamp(p.y, -0.5f, 0.5f), 0);
+		bad += !Math::is_equal_approx((p - on_axis).length(), real_t(0.5), real_t(1e-5));
+		bad += !s.normals[i].is_equal_approx((p - on_axis).normalized());
+	}
+	CHECK(bad == 0);
+	CHECK(enclosed_volume(s) == doctest::Approx(Math::PI * 0.25 * 1.0 + 4.0 / 3.0 * Math::PI * 0.125).epsilon(0.01));
+	CHECK(capsule->get_aabb().size.y == doctest::Approx(2.0));
+	// Godot keeps height >= 2 radius by moving the other value.
+	capsule->set("radius", 2.0);
+	CHECK(capsule->get_height() == doctest::Approx(4.0));
+	capsule->set("height", 1.0);
+	CHECK(capsule->get_radius() == doctest::Approx(0.5));
+}
+
+TEST_CASE("[PrimitiveMesh] TorusMesh geometry: Pappus's volume, radii in either order") {
+	DummyServer server;
+	Ref<TorusMesh> torus;
+	torus.instantiate();
+	RS::SurfaceData s = torus->get_mesh_arrays();
+	CHECK(s.vertices.size() == (size_t)(64 + 1) * (32 + 1));
+	check_surface_valid(s);
+	CHECK(check_winding_and_tangents(s) == 64 * 32 * 2);
+	// Tube radius 0.25 around a circle of radius 0.75: V = 2 pi^2 R r^2.
+	CHECK(enclosed_volume(s) == doctest::Approx(2.0 * Math::PI * Math::PI * 0.75 * 0.0625).epsilon(0.02));
+	AABB box = torus->get_aabb();
+	CHECK(box.size.y == doctest::Approx(0.5).epsilon(0.001));
+	CHECK(box.size.x == doctest::Approx(2.0).epsilon(0.001));
+	torus->set("inner_radius", 1.0);
+	torus->set("outer_radius", 0.5);
+	CHECK(enclosed_volume(torus->get_mesh_arrays()) == doctest::Approx(enclosed_volume(s)));
+}
+
+TEST_CASE("[PrimitiveMesh] PrismMesh geometry: a closed triangular prism, subdivided or not") {
+	DummyServer server;
+	Ref<PrismMesh> prism;
+	prism.instantiate();
+	SUBCASE("default prism") {
+		RS::SurfaceData s = prism->get_mesh_arrays();
+		check_surface_valid(s);
+		CHECK(check_winding_and_tangents(s) == 2 * 1 + 2 * 2 + 2); // Ends (one real triangle each), slopes, base.
+		CHECK(enclosed_volume(s) == doctest::Approx(0.5));
+		CHECK(prism->get_aabb().is_equal_approx(AABB(Vector3(-0.5f, -0.5f, -0.5f), Vector3(1, 1, 1))));
+	}
+	SUBCASE("apex over the left edge, subdivided, other size") {
+		prism->set("left_to_right", 0.0);
+		prism->set("size", Vector3(2, 3, 4));
+		prism->set("subdivide_width", 2);
+		prism->set("subdivide_height", 3);
+		prism->set("subdivide_depth", 1);
+		RS::SurfaceData s = prism->get_mesh_arrays();
+		check_surface_valid(s);
+		check_winding_and_tangents(s);
+		CHECK(enclosed_volume(s) == doctest::Approx(2.0 * 3.0 * 4.0 / 2.0));
+		// The left face is vertical: its normals are -X.
+		int left = 0;
+		for (size_t i = 0; i < s.normals.size(); i++) {
+			left += s.normals[i].is_equal_approx(Vector3(-1, 0, 0));
+		}
+		CHECK(left == (1 + 1 + 1) * (3 + 1 + 1)); // (subdivide_depth + 2) x (subdivide_height + 2) vertices.
+	}
+}
+
+static const char *ROUND_MESHES_SCENE = R"([gd_scene load_steps=5 format=3 uid="uid://c7prim1t1ves"]
+
+[sub_resource type="CylinderMesh" id="CylinderMesh_a1b2c"]
+top_radius = 0.2
+height = 1.5
+cap_bottom = false
+
+[sub_resource type="CapsuleMesh" id="CapsuleMesh_d3e4f"]
+radius = 0.3
+radial_segments = 16
+
+[sub_resource type="TorusMesh" id="TorusMesh_g5h6i"]
+inner_radius = 0.8
+rings = 24
+
+[sub_resource type="PrismMesh" id="PrismMesh_j7k8l"]
+left_to_right = 0.25
+size = Vector3(2, 1, 0.5)
+
+[node name="Shapes" type="Node3D"]
+
+[node name="Cylinder" type="MeshInstance3D" parent="."]
+mesh = SubResource("CylinderMesh_a1b2c")
+
+[node name="Capsule" type="MeshInstance3D" parent="."]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 2, 0, 0)
+mesh = SubResource("CapsuleMesh_d3e4f")
+
+[node name="Torus" type="MeshInstance3D" parent="."]
+mesh = SubResource("TorusMesh_g5h6i")
+
+[node name="Prism" type="MeshInstance3D" parent="."]
+mesh = SubResource("PrismMesh_j7k8l")
+)";
+
+TEST_CASE("[PrimitiveMesh][TSCN] a scene's CylinderMesh, CapsuleMesh, TorusMesh and PrismMesh load as meshes and save back unchanged") {
+	DummyServer server;
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(ROUND_MESHES_SCENE, "shapes.tscn", &error);
+	REQUIRE_MESSAGE(root != nullptr, error.c_str());
+	CHECK(error.empty());
+	auto mesh_of = [&](const char *p_node) {
+		Node *node = root->get_node_or_null(p_node);
+		REQUIRE(node != nullptr);
+		return Ref<Resource>(node->get("mesh"));
+	};
+	Ref<CylinderMesh> cylinder = mesh_of("Cylinder");
+	REQUIRE(cylinder.is_valid());
+	CHECK(cylinder->get_top_radius() == doctest::Approx(0.2));
+	CHECK(cylinder->get_bottom_radius() == doctest::Approx(0.5));
+	CHECK_FALSE(cylinder->is_cap_bottom());
+	CHECK(cylinder->get_aabb().size.y == doctest::Approx(1.5));
+	Ref<CapsuleMesh> capsule = mesh_of("Capsule");
+	REQUIRE(capsule.is_valid());
+	CHECK(capsule->get_radial_segments() == 16);
+	Ref<TorusMesh> torus = mesh_of("Torus");
+	REQUIRE(torus.is_valid());
+	CHECK(torus->get_rings() == 24);
+	Ref<PrismMesh> prism = mesh_of("Prism");
+	REQUIRE(prism.is_valid());
+	CHECK(prism->get_size() == Vector3(2, 1, 0.5));
+	CHECK(prism->get_aabb().size.x == doctest::Approx(2.0));
+	CHECK(ResourceFormatText::save_scene_to_string(root) == String(ROUND_MESHES_SCENE));
+	cylinder.unref();
+	capsule.unref();
+	torus.unref();
+	prism.unref();
+	delete root;
+}
+
+TEST_CASE("[PrimitiveMesh] the new primitives reject bad parameters and keep the old value") {
+	DummyServer server;
+	ErrorCatcher errors;
+	Ref<CylinderMesh> cylinder;
+	cylinder.instantiate();
+	cylinder->set("top_radius", -1.0);
+	cylinder->set("height", 0.0);
+	cylinder->set("radial_segments", 3);
+	CHECK(cylinder->get_top_radius() == doctest::Approx(0.5));
+	CHECK(cylinder->get_height() == doctest::Approx(2.0));
+	CHECK(cylinder->get_radial_segments() == 64);
+	CHECK(errors.contains("top_radius"));
+	Ref<TorusMesh> torus;
+	torus.instantiate();
+	torus->set("rings", 2);
+	torus->set("outer_radius", INFINITY);
+	CHECK(torus->get_rings() == 64);
+	CHECK(torus->get_outer_radius() == doctest::Approx(1.0));
+	CHECK(errors.contains("outer_radius"));
+	Ref<PrismMesh> prism;
+	prism.instantiate();
+	prism->set("left_to_right", 1.5);
+	CHECK(prism->get_left_to_right() == doctest::Approx(0.5));
+	CHECK(errors.contains("left_to_right"));
+	Ref<CapsuleMesh> capsule;
+	capsule.instantiate();
+	capsule->set("radius", 0.0);
+	CHECK(capsule->get_radius() == doctest::Approx(0.5));
 }
 
 TEST_CASE("[PrimitiveMesh] bad parameters are rejected with a message; the old value is kept") {

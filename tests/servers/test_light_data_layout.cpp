@@ -8,12 +8,15 @@
 /* ArrayStride) are read from the SPIR-V by a small parser below and      */
 /* compared with offsetof/sizeof of                                       */
 /* RendererRD::LightStorage::LightData / AreaLightData and                */
-/* ClusterBuilderRD::ElementData.                                         */
+/* ClusterBuilderRD::ElementData; the scene UBO, push constants and the   */
+/* other passes' blocks are read from the production shaders' SPIR-V.     */
 
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+#include "servers/rendering/renderer_rd/effects/sky_rd.h"
+#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "tests/servers/rd_test_fixture.h"
 
@@ -244,6 +247,86 @@ TEST_CASE("[LightStorage] the SPIR-V layout reader notices a wrong offset") {
 	CHECK(layout.member_offsets["a"] == 0);
 	CHECK(layout.member_offsets["b"] == 16); // Not 4: a packed C++ {float a; float b[3];} would be wrong.
 	CHECK(layout.array_stride == 32);
+}
+
+// Offsets of the members of the block (or struct) p_name in p_spirv against the C++ mirror; every
+// GLSL member must be listed. Blocks are not arrays, so no stride is compared.
+static void check_block(const std::vector<uint32_t> &p_spirv, const char *p_name, const std::vector<std::pair<String, uint32_t>> &p_members) {
+	INFO("block ", p_name);
+	const SPIRVStructLayout layout = spirv_struct_layout(p_spirv, p_name);
+	REQUIRE(layout.found);
+	CHECK(layout.member_offsets.size() == p_members.size());
+	for (const auto &m : p_members) {
+		INFO("member ", m.first.c_str());
+		REQUIRE(layout.member_offsets.count(m.first) == 1);
+		CHECK(layout.member_offsets.at(m.first) == m.second);
+	}
+}
+
+// Stage p_stage of the production shader p_file (variant defines p_defines) as the renderer composes
+// it, compiled to SPIR-V.
+static std::vector<uint32_t> compile_production_stage(RenderingDevice *p_rd, const char *p_file, const String &p_defines, RenderingDevice::ShaderStage p_stage) {
+	ShaderRD shader;
+	REQUIRE(shader.initialize(p_file, { p_defines }));
+	const String source = shader.get_stage_source(p_stage, 0);
+	REQUIRE(!source.empty());
+	String error;
+	std::vector<uint32_t> spirv = p_rd->shader_compile_spirv_from_source(p_stage, source, p_file, &error);
+	INFO(p_file, " glslang: ", error.c_str());
+	REQUIRE(!spirv.empty());
+	return spirv;
+}
+
+#define PAD4(m_struct, m_array, m_prefix) { m_prefix "0", uint32_t(offsetof(m_struct, m_array)) }, { m_prefix "1", uint32_t(offsetof(m_struct, m_array) + 4) }, \
+		{ m_prefix "2", uint32_t(offsetof(m_struct, m_array) + 8) }, { m_prefix "3", uint32_t(offsetof(m_struct, m_array) + 12) }
+
+TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other pass blocks match the production shaders' SPIR-V") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+
+	// The colour pass with every optional block compiled in.
+	const String scene_defines = "#define USE_AREA_LIGHTS\n#define USE_DIRECTIONAL_LIGHTS\n#define USE_SKY_AMBIENT\n#define AREA_METHOD_LTC\n";
+	const std::vector<uint32_t> scene_fragment = compile_production_stage(rd, "forward_clustered/scene_forward_clustered.glsl", scene_defines, RenderingDevice::SHADER_STAGE_FRAGMENT);
+	using SU = RenderForwardClustered::SceneDataUBO;
+	check_block(scene_fragment, "SceneDataBlock",
+			{ MEMBER(SU, clip_from_view), MEMBER(SU, view_from_clip), MEMBER(SU, view_from_world), MEMBER(SU, world_from_view), MEMBER(SU, viewport_size),
+					MEMBER(SU, z_near), MEMBER(SU, z_far), MEMBER(SU, ambient_light), MEMBER(SU, omni_light_count), MEMBER(SU, spot_light_count),
+					MEMBER(SU, cluster_tiles_x), MEMBER(SU, cluster_tile_count), MEMBER(SU, cluster_words_per_type), MEMBER(SU, flags),
+					MEMBER(SU, area_light_count), MEMBER(SU, debug_cluster_type) });
+	using DL = RendererRD::LightStorage::DirectionalLightData;
+	check_block(scene_fragment, "DirectionalLightData",
+			{ MEMBER(DL, direction), MEMBER(DL, energy), MEMBER(DL, color), MEMBER(DL, size), MEMBER(DL, specular_amount), MEMBER(DL, cull_mask),
+					MEMBER(DL, flags), MEMBER(DL, pad0) });
+	using SA = SkyRD::SkyAmbientUBO;
+	check_block(scene_fragment, "SkyAmbient", { MEMBER(SA, sh), MEMBER(SA, pad) });
+
+	const std::vector<uint32_t> scene_vertex = compile_production_stage(rd, "forward_clustered/scene_forward_clustered.glsl", scene_defines, RenderingDevice::SHADER_STAGE_VERTEX);
+	using DP = RenderForwardClustered::DrawPushConstant;
+	check_block(scene_vertex, "DrawData",
+			{ MEMBER(DP, world_from_model), MEMBER(DP, normal_matrix), MEMBER(DP, layer_mask), MEMBER(DP, flags), MEMBER(DP, pad0), MEMBER(DP, pad1) });
+
+	using BP = ClusterBuilderRD::BuildPushConstant;
+	check_block(compile_production_stage(rd, "cluster_build.glsl", "#define CLUSTER_TYPE 0\n", RenderingDevice::SHADER_STAGE_COMPUTE), "Params",
+			{ MEMBER(BP, view_from_clip), MEMBER(BP, screen_size), MEMBER(BP, z_far), MEMBER(BP, words_per_type), MEMBER(BP, tiles_x), MEMBER(BP, tiles_y),
+					MEMBER(BP, pad0), MEMBER(BP, pad1), MEMBER(BP, element_count) });
+
+	using DD = AreaShadowRendererRD::DepthPushConstant;
+	check_block(compile_production_stage(rd, "area_shadow_depth.glsl", "", RenderingDevice::SHADER_STAGE_VERTEX), "DrawData",
+			{ MEMBER(DD, octant_view_from_model), MEMBER(DD, params) });
+
+	using RP = AreaShadowAdaptiveRD::ReprojectionPushConstant;
+	check_block(compile_production_stage(rd, "area_shadow_reprojection.glsl", "", RenderingDevice::SHADER_STAGE_COMPUTE), "Params",
+			{ MEMBER(RP, view_from_clip), MEMBER(RP, depth_size), MEMBER(RP, max_cells), MEMBER(RP, light_count), PAD4(RP, pad, "pad") });
+
+	using BD = AreaShadowAdaptiveRD::BandingPushConstant;
+	check_block(compile_production_stage(rd, "area_shadow_banding.glsl", "", RenderingDevice::SHADER_STAGE_COMPUTE), "Params",
+			{ MEMBER(BD, max_cells), MEMBER(BD, light_count), { "pad0", uint32_t(offsetof(BD, pad)) }, { "pad1", uint32_t(offsetof(BD, pad) + 4) } });
+
+	using SK = SkyRD::SkyDataUBO;
+	check_block(compile_production_stage(rd, "sky.glsl", "", RenderingDevice::SHADER_STAGE_FRAGMENT), "SkyDataBlock",
+			{ MEMBER(SK, view_from_clip), MEMBER(SK, world_from_view), MEMBER(SK, viewport_size), MEMBER(SK, sky_top), MEMBER(SK, sky_horizon),
+					MEMBER(SK, ground_bottom), MEMBER(SK, ground_horizon), MEMBER(SK, curves), MEMBER(SK, sun_direction), MEMBER(SK, sun_radiance) });
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
 } // namespace TestLightDataLayout

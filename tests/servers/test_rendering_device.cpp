@@ -397,6 +397,41 @@ TEST_CASE("[RenderingDevice] timestamps are captured in order") {
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
+TEST_CASE("[RenderingDevice] debug labels nest, are captured per frame and unbalanced ones are reported") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE(rd != nullptr);
+	rd->draw_command_begin_label("Outer Pass", Color(1, 0, 0, 1));
+	rd->draw_command_begin_label("Inner Pass");
+	rd->draw_command_end_label();
+	rd->draw_command_end_label();
+	rd->submit();
+	rd->sync();
+	REQUIRE(rd->get_captured_label_names().size() == 2);
+	CHECK(rd->get_captured_label_names()[0] == "Outer Pass");
+	CHECK(rd->get_captured_label_names()[1] == "Inner Pass");
+
+	std::vector<String> errors;
+	ErrorHandlerList handler;
+	handler.callback = [&errors](ErrorHandlerType, const String &p_text) { errors.push_back(p_text); };
+	add_error_handler(&handler);
+	set_error_print_silenced(true);
+	rd->draw_command_end_label(); // Nothing open.
+	rd->draw_command_begin_label("Left Open");
+	rd->submit(); // Closes it with an error, so the command buffer stays valid.
+	rd->sync();
+	set_error_print_silenced(false);
+	remove_error_handler(&handler);
+	REQUIRE(errors.size() == 2);
+	CHECK(errors[0].find("no label is open") != String::npos);
+	CHECK(errors[1].find("1 debug label(s) still open") != String::npos);
+	REQUIRE(rd->get_captured_label_names().size() == 1);
+	CHECK(rd->get_captured_label_names()[0] == "Left Open");
+	rd->submit();
+	rd->sync();
+	CHECK(rd->get_captured_label_names().empty()); // A frame without labels.
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
 TEST_CASE("[RenderingDevice] bad input fails cleanly") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE(rd != nullptr);

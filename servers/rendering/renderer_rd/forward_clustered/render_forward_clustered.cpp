@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 
 // IEEE 754 binary16 -> binary32 (readback of the RGBA16F target).
 static float _half_to_float(uint16_t p_h) {
@@ -208,6 +209,20 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 		defines += "#define AREA_SHADOWS_PCSS\n";
 	}
 	return defines;
+}
+
+std::vector<std::pair<String, String>> RenderForwardClustered::get_debug_scene_shader_sources() const {
+	std::vector<std::pair<String, String>> sources;
+	sources.push_back({ "base.frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR) });
+	static const char *names[] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC" };
+	for (int m = 0; m < RS::LIGHT_AREA_SHADING_MAX; m++) {
+		if (m == RS::LIGHT_AREA_SHADING_AUTO) {
+			continue; // A policy, not shader code: it picks one of the others.
+		}
+		const String name = m < int(std::size(names)) ? String(names[m]) : vformat("method_%d", m);
+		sources.push_back({ "area_" + name + ".frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR_AREA, get_area_method_defines(1u << m)) });
+	}
+	return sources;
 }
 
 uint32_t RenderForwardClustered::_get_area_shadow_version_bits() const {
@@ -524,14 +539,23 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	rd->capture_timestamp(prefix + "begin");
 
 	// 0. Area shadow maps (only the dirty ones; none in a static scene after the first frame).
+	// Debug labels name the area-light passes only in views with area lights.
+	const bool area_labels = area_code && light_storage->get_area_light_count() > 0;
+	if (area_labels) {
+		rd->draw_command_begin_label("Render Area Shadow Maps");
+	}
 	if (area_code) {
 		area_shadows.render_shadows(p_data);
+	}
+	if (area_labels) {
+		rd->draw_command_end_label();
 	}
 	if (area_code && area_shadows.has_frame_shadows()) {
 		rd->capture_timestamp(prefix + "area_shadows"); // Profiled only in frames with shadowed area lights.
 	}
 
 	// 1. Depth pre-pass.
+	rd->draw_command_begin_label("Render Depth Pre-Pass");
 	RD::FramebufferFormatID depth_format = rd->framebuffer_get_format(rt->fb_depth);
 	RD::DrawListID list = rd->draw_list_begin(rt->fb_depth, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f);
 	rd->draw_list_bind_uniform_set(list, scene_set_depth, 0);
@@ -548,16 +572,26 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		}
 	}
 	rd->draw_list_end();
+	rd->draw_command_end_label();
 	rd->capture_timestamp(prefix + "depth_prepass");
 	// 1b. ADAPTIVE area shadows: reprojection + banding of this frame's quad tests against the pre-pass depth
 	// (timestamps "area_reprojection", "area_banding"; nothing without ADAPTIVE lights).
+	if (area_labels) {
+		rd->draw_command_begin_label("Area Shadow Adaptive Refinement");
+	}
 	last_area_shadow_tests = !area_code ? 0u : area_shadows.dispatch_adaptive(rt->depth, uint32_t(rt->width), uint32_t(rt->height), clip_from_view, prefix);
+	if (area_labels) {
+		rd->draw_command_end_label();
+	}
 
 	// 2. Cluster build.
+	rd->draw_command_begin_label("Build Clusters");
 	cluster_builder.bake_cluster(area_code ? ClusterBuilderRD::ELEMENT_TYPE_MAX : ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT);
+	rd->draw_command_end_label();
 	rd->capture_timestamp(prefix + "cluster_build");
 
 	// 3. Opaque pass.
+	rd->draw_command_begin_label("Render Opaque Pass");
 	RD::FramebufferFormatID color_format = rd->framebuffer_get_format(rt->fb_color);
 	list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, { clear_color }, 1.0f);
 	for (const DrawItem &item : items) {
@@ -574,13 +608,16 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		}
 	}
 	rd->draw_list_end();
+	rd->draw_command_end_label();
 	rd->capture_timestamp(prefix + "opaque");
 
 	// 4. Sky background (only with background_mode SKY): the far-plane pixels no geometry covered.
 	if (sky.has_frame_background()) {
+		rd->draw_command_begin_label("Draw Sky");
 		list = rd->draw_list_begin(rt->fb_color, RD::INITIAL_ACTION_LOAD, RD::INITIAL_ACTION_LOAD);
 		sky.draw_background(list, color_format);
 		rd->draw_list_end();
+		rd->draw_command_end_label();
 		rd->capture_timestamp(prefix + "sky");
 	}
 

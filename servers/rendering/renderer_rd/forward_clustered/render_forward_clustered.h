@@ -169,7 +169,7 @@ private:
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
-	bool area_code_disabled = false; // Benchmark baseline (set_area_code_disabled).
+	bool area_code_disabled = false; // Benchmark baseline (set_debug_disable_area_lights).
 	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
 	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
@@ -219,7 +219,8 @@ public:
 	// Benchmark baseline (bench --targets, P4): true skips every area-light step of a frame (area shadow
 	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
 	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.
-	void set_area_code_disabled(bool p_disabled) { area_code_disabled = p_disabled; }
+	void set_debug_disable_area_lights(bool p_disable) override { area_code_disabled = p_disable; }
+	std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const override;
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }
 	// SCENE_SHADER_COLOR_AREA: true once any area-method version has compiled it.
