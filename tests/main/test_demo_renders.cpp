@@ -173,6 +173,35 @@ TEST_CASE("[CLI][Render] --compare-punctual: a small far panel and its spot stan
 	std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("[CLI][Render] StandardMaterial3D emission: srgb_to_linear(emission) * emission_energy_multiplier, only when enabled") {
+	// The demo's emitters rely on Godot's meaning; a black, unlit plane filling the view shows emission alone.
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / "godot_area_test_emission";
+	std::filesystem::create_directories(dir);
+	for (bool enabled : { true, false }) {
+		const String scene = (dir / "emissive.tscn").string(), exr = (dir / "emissive.exr").string();
+		std::ofstream(scene) << "[gd_scene format=3]\n\n[sub_resource type=\"PlaneMesh\" id=\"Plane\"]\nsize = Vector2(20, 20)\n\n"
+								"[sub_resource type=\"StandardMaterial3D\" id=\"Mat\"]\nalbedo_color = Color(0, 0, 0, 1)\n"
+							 << "emission_enabled = " << (enabled ? "true" : "false") << "\nemission = Color(0.5, 0.25, 1, 1)\nemission_energy_multiplier = 3.0\n\n"
+							 << "[sub_resource type=\"Environment\" id=\"Env\"]\nbackground_mode = 1\nbackground_color = Color(0, 0, 0, 1)\nambient_light_source = 1\n\n"
+								"[node name=\"Root\" type=\"Node3D\"]\n\n"
+								"[node name=\"Env\" type=\"WorldEnvironment\" parent=\".\"]\nenvironment = SubResource(\"Env\")\n\n"
+								"[node name=\"Camera\" type=\"Camera3D\" parent=\".\"]\ntransform = Transform3D(1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 2, 0)\n\n"
+								"[node name=\"Floor\" type=\"MeshInstance3D\" parent=\".\"]\nmesh = SubResource(\"Plane\")\nmaterial_override = SubResource(\"Mat\")\n";
+		String out;
+		REQUIRE_MESSAGE(run_cli("render '" + scene + "' --width 16 --height 16 --strict -o '" + exr + "'", &out) == 0, out);
+		Image image;
+		String error;
+		REQUIRE_MESSAGE(ImageLoaderEXR::load(exr, image, &error), error);
+		const Color c = image.get_pixel(8, 8);
+		const Color expected = enabled ? Color(0.5f, 0.25f, 1.0f).srgb_to_linear() * 3.0f : Color(0, 0, 0);
+		CHECK_MESSAGE(std::fabs(c.r - expected.r) < 2e-3f * std::max(1.0f, expected.r), "enabled ", enabled, ": ", c.r, " vs ", expected.r);
+		CHECK_MESSAGE(std::fabs(c.g - expected.g) < 2e-3f * std::max(1.0f, expected.g), "enabled ", enabled, ": ", c.g, " vs ", expected.g);
+		CHECK_MESSAGE(std::fabs(c.b - expected.b) < 2e-3f * std::max(1.0f, expected.b), "enabled ", enabled, ": ", c.b, " vs ", expected.b);
+	}
+	std::filesystem::remove_all(dir);
+}
+
 uint32_t _be32(const uint8_t *p) {
 	return (uint32_t(p[0]) << 24) | (uint32_t(p[1]) << 16) | (uint32_t(p[2]) << 8) | uint32_t(p[3]);
 }
