@@ -4,6 +4,8 @@
 /* godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H]     */
 /*                   [--png P] [--half] [--exposure EV] [--gizmos]        */
 /*                   [--gizmos-selected] [--debug-area-clusters]          */
+/*                   [--compare-punctual] [--frames N [--path SPEC]       */
+/*                   [--apng A.png] [--frame-ms MS]]  (main/demo_renders.h) */
 /* godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F]      */
 /* godot-area bench --accuracy [--ci] [--csv F] [--methods 0,1,..] ...    */
 /*                   [--width W] [--height H]                             */
@@ -18,10 +20,12 @@
 /* Exit codes: 0 success, 1 runtime failure, 2 bad arguments or files.    */
 
 #include "main/main.h"
+#include "main/demo_renders.h"
 
 #include "core/error/error_macros.h"
 #include "core/io/image.h"
 #include "core/io/tonemap.h"
+#include "drivers/png/apng_writer.h"
 #include "drivers/png/png_writer.h"
 #include "editor/editor_node.h"
 #include "editor/gizmo_overlay.h"
@@ -108,6 +112,10 @@ void _print_usage() {
 			"usage:\n"
 			"  godot-area render [SCENE.tscn] -o OUT.exr [--width W] [--height H] [--png P] [--half] [--exposure EV]\n"
 			"                    [--gizmos] [--gizmos-selected] [--debug-area-clusters] [--settle-frames N] [--verbose]\n"
+			"                    [--compare-punctual]   (also OUT_punctual.exr: each AreaLight3D replaced by a SpotLight3D of equal power;\n"
+			"                                            with --png, P_punctual.png and P_side_by_side.png)\n"
+			"                    [--frames N [--path orbit:DEG@X,Y,Z|dolly:DX,DY,DZ] [--apng A.png] [--frame-ms MS]]\n"
+			"                                           (one draw per frame, numbered OUT00000000.exr ... as Godot's Movie Maker)\n"
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly|isr [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
@@ -127,7 +135,7 @@ void _print_usage() {
 // Options that take a value, per command; anything else starting with "-" is an error.
 bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 	static const std::map<String, std::vector<String>> value_options = {
-		{ "render", { "-o", "--width", "--height", "--png", "--exposure", "--settle-frames" } },
+		{ "render", { "-o", "--width", "--height", "--png", "--exposure", "--settle-frames", "--frames", "--path", "--apng", "--frame-ms" } },
 		{ "bench", { "--frames", "--warmup", "--csv", "--width", "--height" } },
 		{ "compare", { "--heatmap" } },
 		{ "reference", { "-o", "--width", "--height", "--spp", "--error", "--shadows", "--seed", "--png", "--exposure", "--bounces", "--bounce-samples" } },
@@ -136,7 +144,7 @@ bool _parse_args(int p_argc, char **p_argv, Args &r_args, String *r_error) {
 	static const std::map<String, std::vector<String>> flag_options = {
 		{ "compare", { "--json", "--no-hdr-flip" } },
 		{ "reference", { "--progress" } },
-		{ "render", { "--half", "--gizmos", "--gizmos-selected", "--debug-area-clusters", "--verbose" } },
+		{ "render", { "--half", "--gizmos", "--gizmos-selected", "--debug-area-clusters", "--verbose", "--compare-punctual" } },
 		{ "bench", {} },
 		{ "info", {} },
 	};
@@ -250,15 +258,162 @@ int _command_info() {
 	return 0;
 }
 
+// The Environment's tonemap (tonemap_mode/_exposure/_white) of the tree's camera or world, as Godot shows it.
+Tonemap::Settings _tree_tonemap(SceneTree &p_tree) {
+	return Environment::get_preview_tonemap(p_tree.get_camera_3d()->get_environment(), p_tree.get_world_3d()->get_environment());
+}
+
+// Writes p_image to p_exr (scene-linear) and, unless p_png is empty, a tonemapped PNG preview. Returns 0 or 1
+// (with the reason printed); a failed write leaves no file (the writers are atomic).
+int _write_image(const Image &p_image, SceneTree &p_tree, const Args &p_args, const String &p_exr, const String &p_png, float p_exposure, const char *p_cmd, bool p_quiet = false) {
+	String error;
+	if (p_image.is_empty()) {
+		fprintf(stderr, "godot-area %s: the renderer returned no image\n", p_cmd);
+		return 1;
+	}
+	if (!p_image.is_finite()) {
+		fprintf(stderr, "godot-area %s: the image has NaN or infinite pixels\n", p_cmd);
+		return 1;
+	}
+	if (!ImageSaverEXR::save(p_image, p_exr, _has_flag(p_args, "--half"), &error)) {
+		fprintf(stderr, "godot-area %s: %s\n", p_cmd, error.c_str());
+		return 1;
+	}
+	if (!p_quiet) {
+		printf("wrote %s (%dx%d, scene-linear %s)\n", p_exr.c_str(), p_image.get_width(), p_image.get_height(), _has_flag(p_args, "--half") ? "half" : "float");
+	}
+	if (p_png.empty()) {
+		return 0;
+	}
+	const Tonemap::Settings tonemap = _tree_tonemap(p_tree);
+	static const char *tonemap_names[Tonemap::MODE_MAX] = { "Linear", "ACES-fitted", "Reinhard", "Filmic", "ACES", "AgX" };
+	if (!PNGWriter::save(p_image, p_png, &error, p_exposure, tonemap)) {
+		fprintf(stderr, "godot-area %s: %s\n", p_cmd, error.c_str());
+		return 1;
+	}
+	if (!p_quiet) {
+		printf("wrote %s (%s preview, tonemap exposure %.2f, white %.2f, %+.2f EV)\n", p_png.c_str(), tonemap_names[tonemap.mode], tonemap.exposure, tonemap.white, p_exposure);
+	}
+	return 0;
+}
+
+void _print_frame_profile(Main::Backend p_backend, const char *p_what = "one frame") {
+	if (p_backend == Main::BACKEND_RD) {
+		printf("device: %s\nGPU time per pass (%s):\n", RenderingDevice::get_singleton()->get_device_info().name.c_str(), p_what);
+	} else {
+		printf("CPU reference renderer (Embree), time per pass:\n");
+	}
+	_print_profile(RenderingServer::get_singleton()->get_frame_profile(), p_backend == Main::BACKEND_RD ? "GPU total" : "total");
+}
+
+// A still image: draws until ADAPTIVE area shadows settle (at most p_settle_frames draws).
+Image _render_still(SceneTree &p_tree, int p_settle_frames) {
+	int frames = 0;
+	Image image = p_tree.render_settled(p_settle_frames, &frames);
+	if (RenderingServer::get_singleton()->get_frame_area_shadow_tests() > 0) {
+		printf("ADAPTIVE area shadows were still refining after %d frames (--settle-frames)\n", frames);
+	} else if (frames > 1) {
+		printf("ADAPTIVE area shadows settled after %d frames\n", frames);
+	}
+	return image;
+}
+
+// --compare-punctual: the same scene with each AreaLight3D replaced by a SpotLight3D of equal power
+// (main/demo_renders.h), written beside OUT as OUT_punctual.exr; with --png also P_punctual.png and
+// P_side_by_side.png (area lights left, punctual right, same tonemap).
+int _render_punctual(SceneTree &p_tree, const Args &p_args, const Image &p_area_image, const String &p_out, const String &p_png, float p_exposure, int p_settle_frames, Main::Backend p_backend) {
+	std::vector<String> report;
+	const int replaced = DemoRenders::replace_area_lights_with_spots(p_tree.get_root(), &report);
+	printf("--compare-punctual: %d AreaLight3D replaced by SpotLight3D of equal power:\n", replaced);
+	for (const String &line : report) {
+		printf("  %s\n", line.c_str());
+	}
+	if (replaced == 0) {
+		fprintf(stderr, "godot-area render: --compare-punctual: the scene has no AreaLight3D to replace\n");
+		return 1;
+	}
+	const Image image = _render_still(p_tree, p_settle_frames);
+	const String png = p_png.empty() ? String() : DemoRenders::suffixed_path(p_png, "_punctual");
+	int code = _write_image(image, p_tree, p_args, DemoRenders::suffixed_path(p_out, "_punctual"), png, p_exposure, "render");
+	if (code == 0 && !png.empty()) {
+		// Side by side, 8 black pixels apart.
+		const Tonemap::Settings tonemap = _tree_tonemap(p_tree);
+		const std::vector<uint8_t> left = Tonemap::apply(p_area_image, tonemap, p_exposure), right = Tonemap::apply(image, tonemap, p_exposure);
+		const int w = image.get_width(), h = image.get_height(), gap = 8, row = 2 * w + gap;
+		std::vector<uint8_t> both(size_t(row) * size_t(h) * 4, 0);
+		for (int y = 0; y < h; y++) {
+			std::copy_n(&left[size_t(y) * w * 4], size_t(w) * 4, &both[size_t(y) * row * 4]);
+			std::copy_n(&right[size_t(y) * w * 4], size_t(w) * 4, &both[(size_t(y) * row + w + gap) * 4]);
+		}
+		for (size_t i = 3; i < both.size(); i += 4) {
+			both[i] = 255;
+		}
+		String error;
+		const String side = DemoRenders::suffixed_path(p_png, "_side_by_side");
+		if (!PNGWriter::save_rgba8(both, row, h, side, &error)) {
+			fprintf(stderr, "godot-area render: %s\n", error.c_str());
+			code = 1;
+		} else {
+			printf("wrote %s (area lights | punctual stand-ins, %dx%d)\n", side.c_str(), row, h);
+		}
+	}
+	_print_frame_profile(p_backend, "one frame, punctual stand-ins");
+	return code;
+}
+
+// --frames N [--path SPEC]: one draw per frame (ADAPTIVE shadows refine across frames as in a game),
+// the camera moved along the path, numbered EXR (and PNG) files, optionally one APNG of all frames.
+int _render_frames(SceneTree &p_tree, const Args &p_args, int p_frames, const DemoRenders::CameraPath *p_path, const String &p_out, const String &p_png, float p_exposure, Main::Backend p_backend) {
+	Camera3D *camera = p_tree.get_camera_3d();
+	const Transform3D start = camera->get_global_transform();
+	const auto apng_it = p_args.options.find("--apng");
+	int frame_ms = 0;
+	String error;
+	if (!_get_int(p_args, "--frame-ms", 83, 1, 65535, frame_ms, &error)) {
+		fprintf(stderr, "godot-area render: %s\n", error.c_str());
+		return 2;
+	}
+	const Tonemap::Settings tonemap = _tree_tonemap(p_tree);
+	std::vector<std::vector<uint8_t>> apng_frames;
+	for (int i = 0; i < p_frames; i++) {
+		if (p_path) {
+			camera->set_global_transform(p_path->sample(start, p_frames > 1 ? float(i) / float(p_frames - 1) : 0.0f));
+		}
+		const Image image = p_tree.render();
+		const String png = p_png.empty() ? String() : DemoRenders::numbered_path(p_png, i);
+		if (_write_image(image, p_tree, p_args, DemoRenders::numbered_path(p_out, i), png, p_exposure, "render", true) != 0) {
+			return 1;
+		}
+		if (apng_it != p_args.options.end()) {
+			apng_frames.push_back(Tonemap::apply(image, tonemap, p_exposure));
+		}
+		double total = 0;
+		for (const auto &pass : RenderingServer::get_singleton()->get_frame_profile()) {
+			total += pass.second;
+		}
+		printf("frame %d: %s, GPU total %.3f ms, ADAPTIVE shadow tests %d\n", i, DemoRenders::numbered_path(p_out, i).c_str(), total, RenderingServer::get_singleton()->get_frame_area_shadow_tests());
+	}
+	printf("wrote %d frames %s ... %s%s\n", p_frames, DemoRenders::numbered_path(p_out, 0).c_str(), DemoRenders::numbered_path(p_out, p_frames - 1).c_str(), p_png.empty() ? "" : " (and PNG previews)");
+	if (apng_it != p_args.options.end()) {
+		if (!APNGWriter::save_rgba8(apng_frames, p_tree.get_width(), p_tree.get_height(), frame_ms, apng_it->second, &error)) {
+			fprintf(stderr, "godot-area render: %s\n", error.c_str());
+			return 1;
+		}
+		printf("wrote %s (APNG, %d frames, %d ms each, looping)\n", apng_it->second.c_str(), p_frames, frame_ms);
+	}
+	_print_frame_profile(p_backend, "last frame");
+	return 0;
+}
+
 int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_RD, const void *p_backend_options = nullptr) {
 	const char *cmd = p_backend == Main::BACKEND_REFERENCE ? "reference" : "render";
 	String error;
-	int width = 0, height = 0;
+	int width = 0, height = 0, frames = 0;
 	float exposure = 0;
 	// ADAPTIVE area shadows refine over frames: a still render draws until they settle, at most this many frames.
 	int settle_frames = SceneTree::DEFAULT_SETTLE_FRAMES;
 	if (!_get_int(p_args, "--width", 640, 1, 16384, width, &error) || !_get_int(p_args, "--height", 360, 1, 16384, height, &error) || !_get_float(p_args, "--exposure", 0.0f, exposure, &error) ||
-			!_get_int(p_args, "--settle-frames", SceneTree::DEFAULT_SETTLE_FRAMES, 1, 1000, settle_frames, &error)) {
+			!_get_int(p_args, "--settle-frames", SceneTree::DEFAULT_SETTLE_FRAMES, 1, 1000, settle_frames, &error) || !_get_int(p_args, "--frames", 0, 1, 100000, frames, &error)) {
 		fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 		return 2;
 	}
@@ -267,7 +422,27 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 		fprintf(stderr, "godot-area %s: missing -o OUT.exr\n", cmd);
 		return 2;
 	}
+	const bool compare_punctual = _has_flag(p_args, "--compare-punctual");
+	const bool have_frames = p_args.options.count("--frames") > 0;
+	for (const char *needs_frames : { "--path", "--apng", "--frame-ms" }) {
+		if (!have_frames && p_args.options.count(needs_frames)) {
+			fprintf(stderr, "godot-area %s: %s needs --frames N\n", cmd, needs_frames);
+			return 2;
+		}
+	}
+	if (have_frames && (compare_punctual || _has_flag(p_args, "--gizmos") || _has_flag(p_args, "--gizmos-selected"))) {
+		fprintf(stderr, "godot-area %s: --frames cannot be combined with --compare-punctual or --gizmos\n", cmd);
+		return 2;
+	}
+	DemoRenders::CameraPath path;
+	const bool have_path = p_args.options.count("--path") > 0;
+	if (have_path && !DemoRenders::parse_camera_path(p_args.options.at("--path"), path, &error)) {
+		fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
+		return 2;
+	}
 	const String out_path = out_it->second;
+	const auto png_it = p_args.options.find("--png");
+	const String png_path = png_it == p_args.options.end() ? String() : png_it->second;
 	if (!Main::setup(p_backend, &error, p_backend_options)) {
 		fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 		return 1;
@@ -278,53 +453,26 @@ int _command_render(const Args &p_args, Main::Backend p_backend = Main::BACKEND_
 		if (!_prepare_tree(tree, p_args, width, height, &error)) {
 			fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
 			code = 2;
+		} else if (have_frames) {
+			code = _render_frames(tree, p_args, frames, have_path ? &path : nullptr, out_path, png_path, exposure, p_backend);
 		} else {
 			if (_has_flag(p_args, "--debug-area-clusters")) {
 				// Writes the per-pixel number of area lights in each pixel's cluster instead of shading.
 				RenderingServer::get_singleton()->viewport_set_debug_draw(tree.get_viewport_rid(), RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS);
 			}
-			int frames = 0;
-			Image image = tree.render_settled(settle_frames, &frames);
-			if (RenderingServer::get_singleton()->get_frame_area_shadow_tests() > 0) {
-				printf("ADAPTIVE area shadows were still refining after %d frames (--settle-frames)\n", frames);
-			} else if (frames > 1) {
-				printf("ADAPTIVE area shadows settled after %d frames\n", frames);
-			}
+			Image image = _render_still(tree, settle_frames);
 			if (!image.is_empty() && (_has_flag(p_args, "--gizmos") || _has_flag(p_args, "--gizmos-selected"))) {
 				// Editor gizmos (outlines, handles, icons) as an overlay; --gizmos-selected draws every light as selected.
 				if (GizmoOverlay::draw(image, tree, _has_flag(p_args, "--gizmos-selected")) < 0) {
 					fprintf(stderr, "godot-area %s: the gizmo overlay failed (see above)\n", cmd);
 				}
 			}
-			if (image.is_empty()) {
-				fprintf(stderr, "godot-area %s: the renderer returned no image\n", cmd);
-				code = 1;
-			} else if (!image.is_finite()) {
-				fprintf(stderr, "godot-area %s: the image has NaN or infinite pixels\n", cmd);
-				code = 1;
-			} else if (!ImageSaverEXR::save(image, out_path, _has_flag(p_args, "--half"), &error)) {
-				fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
-				code = 1;
-			} else {
-				printf("wrote %s (%dx%d, scene-linear %s)\n", out_path.c_str(), width, height, _has_flag(p_args, "--half") ? "half" : "float");
-				auto png_it = p_args.options.find("--png");
-				if (png_it != p_args.options.end()) {
-					// The scene's Environment tonemap (tonemap_mode/_exposure/_white), as Godot shows it; the EXR stays linear.
-					const Tonemap::Settings tonemap = Environment::get_preview_tonemap(tree.get_camera_3d()->get_environment(), tree.get_world_3d()->get_environment());
-					static const char *tonemap_names[Tonemap::MODE_MAX] = { "Linear", "ACES-fitted", "Reinhard", "Filmic", "ACES", "AgX" };
-					if (!PNGWriter::save(image, png_it->second, &error, exposure, tonemap)) {
-						fprintf(stderr, "godot-area %s: %s\n", cmd, error.c_str());
-						code = 1;
-					} else {
-						printf("wrote %s (%s preview, tonemap exposure %.2f, white %.2f, %+.2f EV)\n", png_it->second.c_str(), tonemap_names[tonemap.mode], tonemap.exposure, tonemap.white, exposure);
-					}
+			code = _write_image(image, tree, p_args, out_path, png_path, exposure, cmd);
+			if (code == 0) {
+				_print_frame_profile(p_backend);
+				if (compare_punctual) {
+					code = _render_punctual(tree, p_args, image, out_path, png_path, exposure, settle_frames, p_backend);
 				}
-				if (p_backend == Main::BACKEND_RD) {
-					printf("device: %s\nGPU time per pass (one frame):\n", RenderingDevice::get_singleton()->get_device_info().name.c_str());
-				} else {
-					printf("CPU reference renderer (Embree), time per pass:\n");
-				}
-				_print_profile(RenderingServer::get_singleton()->get_frame_profile(), p_backend == Main::BACKEND_RD ? "GPU total" : "total");
 			}
 		}
 	}

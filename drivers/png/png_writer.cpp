@@ -20,16 +20,14 @@ static bool _png_write_fail(String *r_error, const String &p_message) {
 	return false;
 }
 
-bool PNGWriter::save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, const String &p_path, String *r_error) {
-	if (p_path.empty()) {
-		return _png_write_fail(r_error, "Cannot write PNG: the file path is empty.");
-	}
+bool PNGWriter::encode_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, std::vector<uint8_t> &r_png, String *r_error, bool p_drop_alpha, const String &p_path) {
+	const String name = p_path.empty() ? String("PNG") : vformat("PNG \"%s\"", p_path.c_str());
 	if (p_width <= 0 || p_height <= 0) {
-		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": image size %dx%d is empty or negative.", p_path.c_str(), p_width, p_height));
+		return _png_write_fail(r_error, vformat("Cannot write %s: image size %dx%d is empty or negative.", name.c_str(), p_width, p_height));
 	}
 	const size_t expected = (size_t)p_width * (size_t)p_height * 4;
 	if (p_rgba8.size() != expected) {
-		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": %dx%d RGBA needs %zu bytes, got %zu.", p_path.c_str(), p_width, p_height, expected, p_rgba8.size()));
+		return _png_write_fail(r_error, vformat("Cannot write %s: %dx%d RGBA needs %zu bytes, got %zu.", name.c_str(), p_width, p_height, expected, p_rgba8.size()));
 	}
 
 	png_image image;
@@ -38,22 +36,43 @@ bool PNGWriter::save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int
 	image.width = (png_uint_32)p_width;
 	image.height = (png_uint_32)p_height;
 	image.format = PNG_FORMAT_RGBA; // 8-bit, sRGB-encoded.
-	// Encoded in memory, then written atomically (core/io/file_io.h): a failed write leaves no partial PNG.
+	std::vector<uint8_t> rgb;
+	const uint8_t *pixels = p_rgba8.data();
+	if (p_drop_alpha) {
+		image.format = PNG_FORMAT_RGB;
+		rgb.resize((size_t)p_width * (size_t)p_height * 3);
+		for (size_t i = 0, n = (size_t)p_width * (size_t)p_height; i < n; i++) {
+			std::memcpy(&rgb[i * 3], &p_rgba8[i * 4], 3);
+		}
+		pixels = rgb.data();
+	}
 	png_alloc_size_t size = 0;
-	int ok = png_image_write_get_memory_size(image, size, 0, p_rgba8.data(), 0, nullptr);
-	std::vector<uint8_t> encoded;
+	int ok = png_image_write_get_memory_size(image, size, 0, pixels, 0, nullptr);
 	if (ok) {
-		encoded.resize(size);
-		ok = png_image_write_to_memory(&image, encoded.data(), &size, 0, p_rgba8.data(), 0, nullptr);
+		r_png.resize(size);
+		ok = png_image_write_to_memory(&image, r_png.data(), &size, 0, pixels, 0, nullptr);
+		r_png.resize(size);
 	}
 	if (!ok) {
 		const String reason = image.message[0] ? String(image.message) : String("unknown libpng error");
 		png_image_free(&image);
-		return _png_write_fail(r_error, vformat("Cannot write PNG \"%s\": %s.", p_path.c_str(), reason.c_str()));
+		return _png_write_fail(r_error, vformat("Cannot write %s: %s.", name.c_str(), reason.c_str()));
 	}
 	png_image_free(&image);
+	return true;
+}
+
+bool PNGWriter::save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, const String &p_path, String *r_error) {
+	if (p_path.empty()) {
+		return _png_write_fail(r_error, "Cannot write PNG: the file path is empty.");
+	}
+	// Encoded in memory, then written atomically (core/io/file_io.h): a failed write leaves no partial PNG.
+	std::vector<uint8_t> encoded;
+	if (!encode_rgba8(p_rgba8, p_width, p_height, encoded, r_error, false, p_path)) {
+		return false;
+	}
 	String error;
-	if (!file_write_atomic(p_path, encoded.data(), size, &error)) {
+	if (!file_write_atomic(p_path, encoded.data(), encoded.size(), &error)) {
 		return _png_write_fail(r_error, vformat("Cannot write PNG: %s", error.c_str()));
 	}
 	return true;

@@ -18,6 +18,8 @@
 class PNGWriter {
 public:
 	// p_rgba8: p_width * p_height * 4 bytes, sRGB-encoded RGBA, top row first.
+	// Encodes to PNG bytes in memory (8-bit RGBA, or RGB with p_drop_alpha). p_path only names the file in errors.
+	static bool encode_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, std::vector<uint8_t> &r_png, String *r_error = nullptr, bool p_drop_alpha = false, const String &p_path = String());
 	static bool save_rgba8(const std::vector<uint8_t> &p_rgba8, int p_width, int p_height, const String &p_path, String *r_error = nullptr);
 	// Encodes a scene-linear image with Tonemap::apply(p_image, p_exposure_ev, p_mode), then saves it.
 	static bool save(const Image &p_image, const String &p_path, String *r_error = nullptr, float p_exposure_ev = 0.0f, Tonemap::Mode p_mode = Tonemap::MODE_LINEAR);

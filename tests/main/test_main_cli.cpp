@@ -56,29 +56,29 @@ int run_cli_process(const String &p_args) {
 	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-TEST_CASE("[CLI][Render] render and reference of the embedded demo write finite, non-black EXRs that agree") {
+TEST_CASE("[CLI][Render] the embedded demo (hero frame) renders within LDR-FLIP 0.05 of the Embree reference") {
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
 	String gpu = (dir / "demo.exr").string(), ref = (dir / "demo_ref.exr").string(), png = (dir / "demo.png").string();
-	CHECK(run_cli_process("render --width 64 --height 36 -o '" + gpu + "' --png '" + png + "'") == 0);
-	CHECK(run_cli_process("reference --width 64 --height 36 --shadows off -o '" + ref + "'") == 0);
+	// Both with the scene's area shadows (soft shadows in the default area_shadow_mode); 96x54 keeps the
+	// reference to seconds (a relative standard error of 1 % per pixel).
+	CHECK(run_cli_process("render --width 96 --height 54 -o '" + gpu + "' --png '" + png + "'") == 0);
+	CHECK(run_cli_process("reference --width 96 --height 54 --error 0.01 -o '" + ref + "'") == 0);
 	CHECK(run_cli_process("render /nonexistent/scene.tscn -o '" + gpu + ".x'") == 2);
 	Image a, b;
 	String error;
 	REQUIRE_MESSAGE(ImageLoaderEXR::load(gpu, a, &error), error);
 	REQUIRE_MESSAGE(ImageLoaderEXR::load(ref, b, &error), error);
-	CHECK(a.get_width() == 64);
-	CHECK(a.get_height() == 36);
+	CHECK(a.get_width() == 96);
+	CHECK(a.get_height() == 54);
 	CHECK(a.is_finite());
 	CHECK(a.has_non_black(0.01f));
 	CHECK(std::filesystem::exists(png));
-	// Same scene, same BRDF, no shadows on either side. Omni/spot shading is exact; the demo's area
-	// lights use LTC on the GPU (an approximation of the specular lobe), so bound image metrics.
 	ImageMetrics::Result metrics;
 	REQUIRE_MESSAGE(ImageMetrics::compare(a, b, &metrics, &error), error);
-	CHECK_MESSAGE(metrics.rmse < 0.005, "RMSE(GPU, reference) = " << metrics.rmse);
-	CHECK_MESSAGE(metrics.flip < 0.03, "LDR-FLIP(GPU, reference) = " << metrics.flip);
+	MESSAGE("hero frame 96x54 vs Embree: LDR-FLIP ", metrics.flip, ", HDR-FLIP ", metrics.hdr_flip, ", RMSE ", metrics.rmse, ", relMSE ", metrics.relative_mse);
+	CHECK_MESSAGE(metrics.flip < 0.05, "LDR-FLIP(GPU, reference) = " << metrics.flip);
 	CHECK(run_cli_process("compare '" + gpu + "' '" + ref + "'") == 0);
 	std::filesystem::remove_all(dir);
 }
@@ -87,17 +87,17 @@ TEST_CASE("[CLI][Render] render draws until ADAPTIVE area shadows settle (--sett
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_cli_settle_" + std::to_string(getpid()));
 	std::filesystem::create_directories(dir);
-	// The demo with its three area lights shadowed in ADAPTIVE mode.
+	// The demo with its four (shadowed) area lights in ADAPTIVE mode.
 	std::ifstream in(String(GODOT_AREA_ROOT) + "/demo/demo.tscn");
 	REQUIRE(in.good());
 	std::stringstream text;
 	text << in.rdbuf();
 	String scene = text.str();
-	for (const char *name : { "TVPanel", "CeilingPanelLeft", "CeilingPanelRight" }) {
+	for (const char *name : { "TVPanel", "CeilingStripLeft", "CeilingStripRight", "WindowPanel" }) {
 		const String anchor = String("[node name=\"") + name + "\" type=\"AreaLight3D\" parent=\".\"]\n";
 		size_t at = scene.find(anchor);
 		REQUIRE(at != String::npos);
-		scene.insert(at + anchor.size(), "shadow_enabled = true\narea_shadow_mode = 2\n");
+		scene.insert(at + anchor.size(), "area_shadow_mode = 2\n");
 	}
 	const String scene_path = (dir / "adaptive.tscn").string();
 	{
