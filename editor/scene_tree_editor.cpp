@@ -173,50 +173,8 @@ void SceneTreeEditor::draw() {
 
 #else
 
-void SceneTreeEditor::draw_icon(const String &p_name, float p_x, float p_y, float p_size, float p_alpha) {
-	const EditorIcon *icon = EditorIcons::get_icon(p_name);
-	if (!icon) {
-		return;
-	}
-	ImDrawList *dl = ImGui::GetWindowDrawList();
-	const float s = p_size / std::max(icon->view_size.x, icon->view_size.y);
-	auto col = [p_alpha](const Color &p_c) { return ImGui::GetColorU32(ImVec4(p_c.r, p_c.g, p_c.b, p_c.a * p_alpha)); };
-	auto pt = [&](const Vector2 &p_v) { return ImVec2(p_x + p_v.x * s, p_y + p_v.y * s); };
-	for (const EditorIconShape &shape : icon->shapes) {
-		switch (shape.type) {
-			case EditorIconShape::RECT: {
-				ImVec2 a = pt(shape.position), b = pt(shape.position + shape.size);
-				if (shape.has_fill) {
-					dl->AddRectFilled(a, b, col(shape.fill), shape.radius * s);
-				}
-				if (shape.has_stroke) {
-					dl->AddRect(a, b, col(shape.stroke), shape.radius * s, 0, shape.stroke_width * s);
-				}
-			} break;
-			case EditorIconShape::CIRCLE: {
-				if (shape.has_fill) {
-					dl->AddCircleFilled(pt(shape.position), shape.radius * s, col(shape.fill), 24);
-				}
-				if (shape.has_stroke) {
-					dl->AddCircle(pt(shape.position), shape.radius * s, col(shape.stroke), 24, shape.stroke_width * s);
-				}
-			} break;
-			case EditorIconShape::POLYGON: {
-				std::vector<ImVec2> points;
-				for (const Vector2 &p : shape.points) {
-					points.push_back(pt(p));
-				}
-				if (shape.has_fill) {
-					dl->AddConvexPolyFilled(points.data(), (int)points.size(), col(shape.fill));
-				}
-				if (shape.has_stroke) {
-					dl->AddPolyline(points.data(), (int)points.size(), col(shape.stroke), ImDrawFlags_Closed, shape.stroke_width * s);
-				}
-			} break;
-		}
-	}
-}
-
+// Without the window build there is no ImGui: nothing is drawn.
+void SceneTreeEditor::draw_icon(const String &p_name, float p_x, float p_y, float p_size, float p_alpha) {}
 void SceneTreeEditor::_draw_node(Node *p_node) {}
 void SceneTreeEditor::draw() {}
 
