@@ -6,13 +6,8 @@
 
 #include "core/io/image.h"
 #include "modules/metrics/image_metrics.h"
-#include "servers/rendering/dummy/storage/light_storage.h"
-#include "servers/rendering/dummy/storage/material_storage.h"
-#include "servers/rendering/dummy/storage/mesh_storage.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "modules/reference/renderer_compositor_reference.h"
+#include "scene/main/godot_instance.h"
 
 #include <cmath>
 
@@ -33,51 +28,54 @@ ReferenceRenderOptions IsrSweep::truth_options(int p_bounce_samples) {
 	return o;
 }
 
-bool IsrSweep::render_gpu(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ScreenSpaceLightingSettings &p_settings, IsrImages &r_images, String *r_error) {
-	RenderingDevice *rd = RenderingDevice::get_singleton();
-	if (!rd || !rd->is_initialized()) {
-		if (r_error) {
-			*r_error = "IsrSweep: no initialized RenderingDevice (Vulkan) for the Forward+ renderer.";
+// The RenderingServer to draw with: the running engine's when it has p_backend, else p_own started
+// here (with p_compositor for BACKEND_CUSTOM; owned from here on). Null with r_error otherwise.
+static RenderingServer *_isr_server(GodotInstance &p_own, GodotInstance::Backend p_backend, RendererCompositor *p_compositor, String *r_error) {
+	GodotInstance *running = GodotInstance::get_singleton();
+	if (running && running->is_started()) {
+		delete p_compositor;
+		if (p_backend != GodotInstance::BACKEND_RD || running->get_backend() != p_backend) {
+			if (r_error) {
+				*r_error = "IsrSweep: another engine instance is running with a different renderer; stop it first.";
+			}
+			return nullptr;
 		}
+		return running->get_rendering_server();
+	}
+	String error;
+	const bool ok = p_compositor ? p_own.start_with_compositor(p_compositor, &error) : p_own.start(p_backend, &error, 64);
+	if (!ok) {
+		if (r_error) {
+			*r_error = "IsrSweep: " + error;
+		}
+		return nullptr;
+	}
+	return p_own.get_rendering_server();
+}
+
+static void _isr_copy(const Image &p_image, std::vector<float> &r_rgba) {
+	r_rgba = p_image.get_data();
+}
+
+bool IsrSweep::render_gpu(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ScreenSpaceLightingSettings &p_settings, IsrImages &r_images, String *r_error) {
+	GodotInstance own;
+	RenderingServer *rs = _isr_server(own, GodotInstance::BACKEND_RD, nullptr, r_error);
+	if (!rs) {
 		return false;
 	}
-	bool ok = true;
-	{
-		RendererRD::LightStorage light_storage;
-		RendererRD::MeshStorage mesh_storage;
-		RendererRD::MaterialStorage material_storage;
-		RenderForwardClustered renderer(&light_storage, &mesh_storage, &material_storage);
-		ok = material_storage.initialize_gpu() && light_storage.initialize_gpu(64) && renderer.initialize(64);
-		std::vector<RID> meshes, materials, lights;
-		RID rt;
-		if (ok) {
-			RenderSceneData d = p_scene.make_view(p_frame, p_width, p_height);
-			p_scene.build(mesh_storage, material_storage, light_storage, d, meshes, materials, lights);
-			rt = renderer.render_target_create(p_width, p_height);
-			ok = rt.is_valid();
-			if (ok) {
-				renderer.render_scene(d, rt);
-				r_images.direct = renderer.render_target_get_data(rt);
-				d.environment.ss_lighting = p_settings;
-				renderer.render_scene(d, rt);
-				r_images.isr = renderer.render_target_get_data(rt);
-				ok = r_images.direct.size() == size_t(p_width) * p_height * 4 && r_images.isr.size() == r_images.direct.size();
-				renderer.render_target_free(rt);
-			}
-		}
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
+	IsrServerScene view;
+	bool ok = view.create(rs, p_scene, p_width, p_height);
+	if (ok) {
+		view.set_frame(p_frame);
+		ScreenSpaceLightingSettings off = p_settings;
+		off.ssil_enabled = false;
+		view.set_screen_space_lighting(off);
+		_isr_copy(view.draw(), r_images.direct);
+		view.set_screen_space_lighting(p_settings);
+		_isr_copy(view.draw(), r_images.isr);
+		ok = r_images.direct.size() == size_t(p_width) * p_height * 4 && r_images.isr.size() == r_images.direct.size();
 	}
+	view.free();
 	if (!ok && r_error) {
 		*r_error = "IsrSweep: the Forward+ renderer failed to render the frame.";
 	}
@@ -87,32 +85,19 @@ bool IsrSweep::render_gpu(const IsrScene &p_scene, int p_frame, int p_width, int
 }
 
 bool IsrSweep::render_truth(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ReferenceRenderOptions &p_options, IsrImages &r_images, String *r_error) {
-	RendererDummy::LightStorage light_storage;
-	RendererDummy::MeshStorage mesh_storage;
-	RendererDummy::MaterialStorage material_storage;
-	std::vector<RID> meshes, materials, lights;
-	bool ok = false;
-	{
-		ReferenceRenderer renderer(&light_storage, &mesh_storage, &material_storage, p_options);
-		RenderSceneData d = p_scene.make_view(p_frame, p_width, p_height);
-		p_scene.build(mesh_storage, material_storage, light_storage, d, meshes, materials, lights);
-		RID rt = renderer.render_target_create(p_width, p_height);
-		if (rt.is_valid()) {
-			renderer.render_scene(d, rt);
-			r_images.truth = renderer.render_target_get_data(rt);
-			renderer.render_target_free(rt);
-			ok = r_images.truth.size() == size_t(p_width) * p_height * 4;
-		}
+	GodotInstance own;
+	RenderingServer *rs = _isr_server(own, GodotInstance::BACKEND_CUSTOM, new RendererCompositorReference(p_options), r_error);
+	if (!rs) {
+		return false;
 	}
-	for (RID m : meshes) {
-		mesh_storage.mesh_free(m);
+	IsrServerScene view;
+	bool ok = view.create(rs, p_scene, p_width, p_height);
+	if (ok) {
+		view.set_frame(p_frame);
+		_isr_copy(view.draw(), r_images.truth);
+		ok = r_images.truth.size() == size_t(p_width) * p_height * 4;
 	}
-	for (RID m : materials) {
-		material_storage.material_free(m);
-	}
-	for (RID l : lights) {
-		light_storage.light_free(l);
-	}
+	view.free();
 	if (!ok && r_error) {
 		*r_error = "IsrSweep: the Embree reference failed to render the frame.";
 	}
