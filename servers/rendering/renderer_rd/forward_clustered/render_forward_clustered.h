@@ -231,6 +231,8 @@ public:
 	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
 	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.
 	void set_debug_disable_area_lights(bool p_disable) override { area_code_disabled = p_disable; }
+	void area_shadow_filter_set_mode(RS::AreaShadowFilter p_filter) override { area_shadows.set_sample_penumbra_filter(p_filter == RS::AREA_SHADOW_FILTER_PENUMBRA); }
+	RS::AreaShadowFilter area_shadow_filter_get_mode() const override { return area_shadows.is_sample_penumbra_filter_enabled() ? RS::AREA_SHADOW_FILTER_PENUMBRA : RS::AREA_SHADOW_FILTER_PCF; }
 	std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const override;
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }
