@@ -53,57 +53,50 @@ static RenderingServer *_isr_server(GodotInstance &p_own, GodotInstance::Backend
 	return p_own.get_rendering_server();
 }
 
-static void _isr_copy(const Image &p_image, std::vector<float> &r_rgba) {
-	r_rgba = p_image.get_data();
+// Draws frame p_frame of p_scene at p_width x p_height through a RenderingServer of p_backend (see
+// _isr_server); p_draw reads the images off the view and returns whether they are whole. On failure
+// r_error says what failed (p_renderer names the renderer).
+template <class F>
+static bool _isr_render(const IsrScene &p_scene, int p_frame, int p_width, int p_height, GodotInstance::Backend p_backend, RendererCompositor *p_compositor, const char *p_renderer, IsrImages &r_images, String *r_error, F p_draw) {
+	r_images.width = p_width;
+	r_images.height = p_height;
+	GodotInstance own;
+	RenderingServer *rs = _isr_server(own, p_backend, p_compositor, r_error);
+	if (!rs) {
+		return false;
+	}
+	IsrServerScene view;
+	bool ok = view.create(rs, p_scene, p_width, p_height);
+	if (ok) {
+		view.set_frame(p_frame);
+		ok = p_draw(view);
+	}
+	view.free();
+	if (!ok && r_error) {
+		*r_error = vformat("IsrSweep: the %s failed to render the frame.", p_renderer);
+	}
+	return ok;
 }
 
 bool IsrSweep::render_gpu(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ScreenSpaceLightingSettings &p_settings, IsrImages &r_images, String *r_error) {
-	GodotInstance own;
-	RenderingServer *rs = _isr_server(own, GodotInstance::BACKEND_RD, nullptr, r_error);
-	if (!rs) {
-		return false;
-	}
-	IsrServerScene view;
-	bool ok = view.create(rs, p_scene, p_width, p_height);
-	if (ok) {
-		view.set_frame(p_frame);
+	const size_t pixels = size_t(p_width) * p_height * 4;
+	return _isr_render(p_scene, p_frame, p_width, p_height, GodotInstance::BACKEND_RD, nullptr, "Forward+ renderer", r_images, r_error, [&](IsrServerScene &p_view) {
 		ScreenSpaceLightingSettings off = p_settings;
 		off.ssil_enabled = false;
-		view.set_screen_space_lighting(off);
-		_isr_copy(view.draw(), r_images.direct);
-		view.set_screen_space_lighting(p_settings);
-		_isr_copy(view.draw(), r_images.isr);
-		ok = r_images.direct.size() == size_t(p_width) * p_height * 4 && r_images.isr.size() == r_images.direct.size();
-	}
-	view.free();
-	if (!ok && r_error) {
-		*r_error = "IsrSweep: the Forward+ renderer failed to render the frame.";
-	}
-	r_images.width = p_width;
-	r_images.height = p_height;
-	return ok;
+		p_view.set_screen_space_lighting(off);
+		r_images.direct = p_view.draw().get_data();
+		p_view.set_screen_space_lighting(p_settings);
+		r_images.isr = p_view.draw().get_data();
+		return r_images.direct.size() == pixels && r_images.isr.size() == pixels;
+	});
 }
 
 bool IsrSweep::render_truth(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ReferenceRenderOptions &p_options, IsrImages &r_images, String *r_error) {
-	GodotInstance own;
-	RenderingServer *rs = _isr_server(own, GodotInstance::BACKEND_CUSTOM, new RendererCompositorReference(p_options), r_error);
-	if (!rs) {
-		return false;
-	}
-	IsrServerScene view;
-	bool ok = view.create(rs, p_scene, p_width, p_height);
-	if (ok) {
-		view.set_frame(p_frame);
-		_isr_copy(view.draw(), r_images.truth);
-		ok = r_images.truth.size() == size_t(p_width) * p_height * 4;
-	}
-	view.free();
-	if (!ok && r_error) {
-		*r_error = "IsrSweep: the Embree reference failed to render the frame.";
-	}
-	r_images.width = p_width;
-	r_images.height = p_height;
-	return ok;
+	const size_t pixels = size_t(p_width) * p_height * 4;
+	return _isr_render(p_scene, p_frame, p_width, p_height, GodotInstance::BACKEND_CUSTOM, new RendererCompositorReference(p_options), "Embree reference", r_images, r_error, [&](IsrServerScene &p_view) {
+		r_images.truth = p_view.draw().get_data();
+		return r_images.truth.size() == pixels;
+	});
 }
 
 static Image _isr_to_image(const std::vector<float> &p_rgba, int p_w, int p_h) {
