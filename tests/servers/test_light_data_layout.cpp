@@ -24,9 +24,7 @@
 #include <doctest/doctest.h>
 
 #include <cstddef>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace TestLightDataLayout {
 
@@ -104,13 +102,6 @@ static SPIRVStructLayout spirv_struct_layout(const std::vector<uint32_t> &p_spir
 		}
 	}
 	return layout;
-}
-
-static String read_text(const String &p_path) {
-	std::ifstream f(p_path);
-	std::stringstream ss;
-	ss << f.rdbuf();
-	return ss.str();
 }
 
 // Compiles a compute shader that declares one std430 runtime array per struct (the way the scene
