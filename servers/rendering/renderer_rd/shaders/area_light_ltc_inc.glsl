@@ -154,10 +154,7 @@ void ltc_clip_polygon(int p_n, vec3 p0, vec3 p1, vec3 p2, vec3 p3, vec3 p4, out 
 	r4 = vec3(0.0);
 	r5 = vec3(0.0);
 	r_n = 0;
-	for (int i = 0; i < 5; i++) {
-		if (i >= p_n) {
-			break;
-		}
+	for (int i = 0; i < min(p_n, 5); i++) {
 		vec3 a = ltc_clip_pick(i, p0, p1, p2, p3, p4, p4);
 		vec3 b = i + 1 < p_n ? ltc_clip_pick(i + 1, p0, p1, p2, p3, p4, p4) : p0;
 		bool a_in = a.z > 0.0;
@@ -173,18 +170,19 @@ void ltc_clip_polygon(int p_n, vec3 p0, vec3 p1, vec3 p2, vec3 p3, vec3 p4, out 
 // vertices, every one with z >= 0: already clipped), i.e. the cosine form factor (Lambert: 1/2 sum
 // theta_i n.gamma_i, divided by pi). In [0, 1]; independent of the winding.
 float ltc_polygon_integral(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
-	// The edges in order, each vertex normalised once.
+	// The edges in order, each vertex picked and normalised once. The trip count is the lanes' largest
+	// p_n (4 for a rectangle above the horizon): a software rasterizer runs a loop body only while some
+	// lane is in it, but every side of an if.
 	float sum = 0.0;
 	vec3 first = c0 / max(length(c0), 1e-30);
+	vec3 v1 = c0;
 	vec3 a = first;
-	for (int i = 0; i < 6; i++) {
-		if (i >= p_n) {
-			break;
-		}
-		vec3 v1 = ltc_clip_pick(i, c0, c1, c2, c3, c4, c5);
-		vec3 v2 = i + 1 < p_n ? ltc_clip_pick(i + 1, c0, c1, c2, c3, c4, c5) : c0;
-		vec3 b = i + 1 < p_n ? v2 / max(length(v2), 1e-30) : first;
+	for (int i = 0; i < p_n; i++) {
+		bool last = i + 1 >= p_n;
+		vec3 v2 = last ? c0 : ltc_clip_pick(i + 1, c0, c1, c2, c3, c4, c5);
+		vec3 b = last ? first : v2 / max(length(v2), 1e-30);
 		sum += ltc_edge_integral(v1, v2, a, b);
+		v1 = v2;
 		a = b;
 	}
 	return abs(sum) * (0.5 / M_PI);
@@ -233,13 +231,11 @@ void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, o
 	vec3 s0 = p_m_inv * c0, s1 = p_m_inv * c1, s2 = p_m_inv * c2, s3 = p_m_inv * c3, s4 = p_m_inv * c4;
 	// Slots past n hold a copy of a corner (fast path) or 0 (after a clip): neither turns z_min negative.
 	float z_min = min(min(min(s0.z, s1.z), min(s2.z, s3.z)), s4.z);
-	if (z_min >= 0.0) {
-		r_specular = ltc_polygon_integral(n, s0, s1, s2, s3, s4, s4);
-		return;
+	int m = n;
+	vec3 d0 = s0, d1 = s1, d2 = s2, d3 = s3, d4 = s4, d5 = s4;
+	if (z_min < 0.0) {
+		ltc_clip_polygon(n, s0, s1, s2, s3, s4, m, d0, d1, d2, d3, d4, d5);
 	}
-	int m;
-	vec3 d0, d1, d2, d3, d4, d5;
-	ltc_clip_polygon(n, s0, s1, s2, s3, s4, m, d0, d1, d2, d3, d4, d5);
 	r_specular = m < 3 ? 0.0 : ltc_polygon_integral(m, d0, d1, d2, d3, d4, d5);
 }
 
