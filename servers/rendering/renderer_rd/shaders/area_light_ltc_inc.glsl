@@ -77,37 +77,28 @@
 
 #ifndef AREA_LTC_NO_PRECISION_FIX
 
-// Edge integral of the clamped cosine (times 2 pi) over the great arc from unit vector a to unit
-// vector b: theta * (a x b).z / |a x b|. Returns 0 for a degenerate (zero-length) arc.
-float ltc_edge_integral_unit(vec3 a, vec3 b) {
-	vec3 c = cross(a, b);
-	float s = length(c);
-	if (s < 1e-12) {
-		return 0.0; // a == b (a zero-length edge); a == -b never reaches here (split below).
-	}
-	float theta = atan(s, dot(a, b));
-	return theta * c.z / s;
-}
-
 // Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit), with
 // p_a, p_b their unit directions (normalised once per vertex by the caller).
 float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
-	// Thesis section 5.4.4: an edge wider than 120 degrees is split at the projected midpoint m. The first
-	// arc ends at m (split) or at b, so only two arcs are ever evaluated: a software rasterizer runs both
-	// sides of a branch, and the result is the same as evaluating (a, b) or (a, m) + (m, b).
-	bool split = !(dot(p_a, p_b) > -0.5);
-	vec3 m = p_b;
-	if (split) {
+	// theta * n.z with theta = atan(|a x b|, a.b): accurate in absolute terms over the whole range (acos is
+	// not near +-1). Only the direction n of the great circle is ill-conditioned for near-antipodal a, b
+	// (a x b tiny and noisy), so for an edge wider than 120 degrees (thesis section 5.4.4) it is taken from
+	// the projected midpoint m instead: the point of the 3D segment closest to the shading point, which
+	// lies on the arc between a and b (thesis fig. 5.20). The triangle (origin, v1, v2) then has its obtuse
+	// angle at the origin, so m is strictly inside the segment and more than 30 degrees from a: |a x m| >=
+	// |m| / 2, well conditioned. Same result as the thesis' two arcs (a, m) + (m, b), which share the
+	// circle, for one atan instead of two (a software rasterizer evaluates both sides of the branch).
+	vec3 c = cross(p_a, p_b);
+	float s = length(c);
+	float theta = atan(s, dot(p_a, p_b));
+	if (!(dot(p_a, p_b) > -0.5)) {
 		vec3 e = p_v2 - p_v1;
 		float t = clamp(-dot(p_v1, e) / max(dot(e, e), 1e-30), 0.0, 1.0);
-		m = p_v1 + e * t;
-		m = m / max(length(m), 1e-30);
+		vec3 m = p_v1 + e * t;
+		c = cross(p_a, m / max(length(m), 1e-30));
+		s = length(c);
 	}
-	float sum = ltc_edge_integral_unit(p_a, m);
-	if (split) {
-		sum += ltc_edge_integral_unit(m, p_b);
-	}
-	return sum;
+	return s < 1e-12 ? 0.0 : theta * c.z / s; // 0 for a zero-length edge (a == b).
 }
 
 #else // AREA_LTC_NO_PRECISION_FIX
