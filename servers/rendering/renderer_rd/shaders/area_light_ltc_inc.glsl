@@ -28,18 +28,22 @@
 /* too bright on a floor seen at 10 degrees). The clipped polygon mapped  */
 /* by M^-1 is clipped again to the cosine space's z >= 0 only where a     */
 /* mapped vertex is below it. A rectangle wholly above the receiver's     */
-/* plane is not clipped at all (the fast path: 4 corners, 2 integrals).   */
+/* plane is not clipped at all (the fast path: 4 corners, 2 integrals;   */
+/* a real branch on GPUs. llvmpipe runs every side of an if under a lane  */
+/* mask and a loop only while a lane is in it, so there the savings come  */
+/* from running each integral once, looped to the vertex count).          */
 /*                                                                        */
 /* Edge integral precision (thesis section 5.4.4): for unit vectors a, b  */
 /* the edge term is theta * normalize(a x b).z. Near-antipodal a, b make  */
-/* a x b tiny and its direction noisy; we split such edges (dot < -0.5,   */
-/* i.e. wider than 120 degrees) at the projected midpoint: the point of   */
-/* the 3D segment closest to the shading point, normalised, which lies on */
-/* the spherical edge between a and b (thesis fig. 5.20). The triangle   */
-/* (origin, m, v) has its right angle at m, so each half spans less than  */
-/* 90 degrees and is well conditioned. The angle itself is              */
-/* atan(|a x b|, a.b), accurate over the whole range (acos is not near   */
-/* +-1).                                                                  */
+/* a x b tiny and its direction noisy; for such edges (dot < -0.5, i.e.   */
+/* wider than 120 degrees) the circle's normal comes from a and the       */
+/* projected midpoint m instead: the point of the 3D segment closest to   */
+/* the shading point, which lies on the spherical edge between a and b    */
+/* (thesis fig. 5.20) more than 30 degrees from a. The thesis integrates  */
+/* the two arcs (a, m) and (m, b); they share the circle, so one normal   */
+/* and the whole angle theta = atan(|a x b|, a.b) (accurate over the     */
+/* whole range in absolute terms; acos is not near +-1) give the same     */
+/* sum for one atan instead of two.                                       */
 /* AREA_LTC_NO_PRECISION_FIX (a define, for the stress test only) turns   */
 /* the fix off: Heitz et al.'s original edge integral                     */
 /* (a x b).z * theta / sin(theta) with theta = acos(a.b), no split, i.e.  */
