@@ -2,12 +2,12 @@
 /*  area_shadow_renderer.cpp                                              */
 /**************************************************************************/
 
-#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 
 #include "core/config/project_settings.h"
 
 #include "core/error/error_macros.h"
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 

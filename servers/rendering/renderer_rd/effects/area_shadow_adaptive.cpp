@@ -2,7 +2,7 @@
 /*  area_shadow_adaptive.cpp                                              */
 /**************************************************************************/
 
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 
 #include "core/config/project_settings.h"
 #include "core/error/error_macros.h"
