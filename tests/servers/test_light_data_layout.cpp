@@ -168,7 +168,7 @@ TEST_CASE("[LightStorage] LightData, AreaLightData and ClusterElementData match 
 	using ED = ClusterBuilderRD::ElementData;
 	check_layout(spirv_struct_layout(spirv, "ClusterElementData"), "ClusterElementData",
 			{ MEMBER(ED, position), MEMBER(ED, radius), MEMBER(ED, direction), MEMBER(ED, cone_cos), MEMBER(ED, extents), MEMBER(ED, cone_sin),
-					MEMBER(ED, axis_x), MEMBER(ED, pad0) },
+					MEMBER(ED, axis_x), MEMBER(ED, sphere_offset) },
 			sizeof(ED));
 }
 
