@@ -25,6 +25,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -383,6 +384,68 @@ TEST_CASE("[AreaLight3D][Render] a view of rectangles compiles no shape code; a 
 		CHECK(f.renderer.is_area_shape_code_compiled());
 		CHECK(shader.get_created_shader_count() == created + 1);
 		CHECK(f.light_storage.get_area_shape_mask() == ((1u << RS::LIGHT_AREA_SHAPE_RECTANGLE) | (1u << RS::LIGHT_AREA_SHAPE_SPHERE)));
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+} // namespace TestAreaLightShapesRender
+
+namespace TestAreaLightShapesRender {
+
+/* Benchmark (not in the default run; no timing assertions; doc/methods.md "Shapes"):
+ *   godot-area-tests --test-case="*Shapes][Benchmark*" --no-skip
+ * 16 lights of one shape and method cover every pixel of a 128 x 128 floor (every light shaded on every
+ * pixel); the configurations are interleaved frame by frame in one process, the median of 7 rounds. */
+TEST_CASE("[AreaLight3D][Shapes][Benchmark] opaque-pass time per shape x method" * doctest::skip()) {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	REQUIRE(rd->get_device_info().timestamps_supported);
+	{
+		ShapesFixture f;
+		REQUIRE(f.init());
+		const int W = 128, LIGHTS = 16, ROUNDS = 7;
+		RS::MaterialParams mp;
+		mp.roughness = 0.5f;
+		RID mat = f.material(mp);
+		RenderSceneData base = RenderTest::make_scene(camera_looking_down(4.0f), 60.0f, W, W, 20.0f);
+		add_geometry(base, f.plane(50.0f), mat);
+		RID rt = f.renderer.render_target_create(W, W);
+		f.renderer.set_debug_force_all_lights(true);
+		const Vector2 sizes[4] = { Vector2(1.0f, 0.5f), Vector2(1.0f, 0.5f), Vector2(0.5f, 0), Vector2(1.0f, 0.15f) };
+		std::vector<RenderSceneData> scenes;
+		std::vector<std::string> names;
+		for (int shape = 0; shape < 4; shape++) {
+			for (int m = 0; m < 4; m++) {
+				RenderSceneData d = base;
+				for (int i = 0; i < LIGHTS; i++) {
+					RID l = f.shape_light(RS::LightAreaShape(shape), sizes[shape], 1.0f, METHODS[m], 8);
+					f.light_storage.light_set_param(l, RS::LIGHT_PARAM_RANGE, 50.0f);
+					const float x = -3.0f + 6.0f * (i % 4) / 3.0f, z = -3.0f + 6.0f * (i / 4) / 3.0f;
+					add_light(d, l, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(x, 1.0f + 0.1f * i, z)));
+				}
+				scenes.push_back(d);
+				names.push_back(std::string(SHAPE_NAMES[shape]) + " " + METHOD_NAMES[m] + (m == 3 ? " 8" : ""));
+				f.renderer.render_scene(d, rt); // Compile and warm up.
+			}
+		}
+		std::vector<std::vector<double>> times(scenes.size());
+		for (int k = 0; k < ROUNDS; k++) {
+			for (size_t c = 0; c < scenes.size(); c++) {
+				f.renderer.render_scene(scenes[c], rt);
+				for (const auto &p : f.renderer.get_last_frame_profile()) {
+					if (p.first == "opaque") {
+						times[c].push_back(p.second);
+					}
+				}
+			}
+		}
+		for (size_t c = 0; c < scenes.size(); c++) {
+			std::sort(times[c].begin(), times[c].end());
+			const double ms = times[c].empty() ? 0.0 : times[c][times[c].size() / 2];
+			MESSAGE(names[c], ": opaque pass ", ms, " ms (", LIGHTS, " lights on every pixel of ", W, "x", W, ")");
+			CHECK(ms > 0.0);
+		}
+		f.renderer.render_target_free(rt);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }

@@ -192,6 +192,20 @@ static long embedded_define(const char *p_file, const String &p_name) {
 	return at == String::npos ? -1 : strtol(source.c_str() + at + p_name.size() + 9, nullptr, 10);
 }
 
+TEST_CASE("[LightStorage] the GLSL area shape and method values equal RS's, and the shape fits bits 24-31") {
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_RECTANGLE") == long(RS::LIGHT_AREA_SHAPE_RECTANGLE));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_DISK") == long(RS::LIGHT_AREA_SHAPE_DISK));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_SPHERE") == long(RS::LIGHT_AREA_SHAPE_SPHERE));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_TUBE") == long(RS::LIGHT_AREA_SHAPE_TUBE));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHADING_STOCHASTIC") == long(RS::LIGHT_AREA_SHADING_STOCHASTIC));
+	CHECK(RendererRD::LightStorage::AREA_METHOD_SHAPE_SHIFT == 24u);
+	CHECK(int(RS::LIGHT_AREA_SHAPE_MAX) <= 256);
+	// The shader reads the shape as shading_method >> 24u (area_light_get_shape).
+	const char *dispatch = ShaderRD::get_embedded_source("area_light_inc.glsl");
+	REQUIRE(dispatch != nullptr);
+	CHECK(String(dispatch).find("p_light.shading_method >> 24u") != String::npos);
+}
+
 TEST_CASE("[AreaShadowRendererRD] AreaShadowData and the adaptive pass structs match their GLSL structs in the SPIR-V") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
