@@ -593,7 +593,7 @@ static void _reference_shade_area_light(RTCScene p_scene, const ReferenceRenderO
 	}
 	// Disks, spheres and tubes: their own estimator (real shape geometry, MIS of shape and BRDF samples).
 	const AreaLightIntegral integral = p_light.shape == AREA_LIGHT_SHAPE_RECTANGLE ? area_light_integrate(p_light, p_point, p_options.area_sampling, settings, r_rng, occluded)
-																					: area_light_shape_integrate(p_light, p_point, settings, r_rng, occluded);
+																				   : area_light_shape_integrate(p_light, p_point, settings, r_rng, occluded);
 	if (!integral.evaluated) {
 		return;
 	}
