@@ -120,7 +120,7 @@ void _print_usage() {
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly|isr [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
-			"  godot-area bench --accuracy [--ci] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
+			"  godot-area bench --accuracy [--ci] [--shapes] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
 			"                       [--seed S] [--png P] [--progress]\n"

@@ -198,6 +198,15 @@ public:
 		// rendering/lights_and_shadows/area_light_error_budget (resolved on the CPU; the GPU never sees AUTO).
 		LIGHT_AREA_SHADING_MAX, // Keep last: the number of methods (append new ones above).
 	};
+	// The emitting shape of an area light. Values equal AreaLight3D::AreaShape (saved in scene files as
+	// integers); new shapes are appended, never inserted. What light_area_set_size() means per shape:
+	enum LightAreaShape {
+		LIGHT_AREA_SHAPE_RECTANGLE, // size.x (local X) by size.y (local Y) in the XY plane, one-sided along -Z (upstream's).
+		LIGHT_AREA_SHAPE_DISK, // Ellipse with diameters size.x (local X) and size.y (local Y) in the XY plane, one-sided along -Z.
+		LIGHT_AREA_SHAPE_SPHERE, // Sphere of diameter size.x (size.y unused), emitting outwards everywhere.
+		LIGHT_AREA_SHAPE_TUBE, // Capsule: a segment of length size.x along local X, radius size.y / 2, emitting outwards everywhere.
+		LIGHT_AREA_SHAPE_MAX, // Keep last.
+	};
 	// Bounds of light_area_set_stochastic_samples() (samples per strategy and shading point).
 	static constexpr int LIGHT_AREA_STOCHASTIC_SAMPLES_MIN = 1;
 	static constexpr int LIGHT_AREA_STOCHASTIC_SAMPLES_MAX = 256;
@@ -348,7 +357,7 @@ public:
 	virtual RID omni_light_create() = 0;
 	// Creates a spot light resource.
 	virtual RID spot_light_create() = 0;
-	// Creates a rectangular area light resource (storage defaults: size 1 x 1 m, energy normalised, LTC).
+	// Creates an area light resource (storage defaults: a 1 x 1 m rectangle, energy normalised, LTC).
 	virtual RID area_light_create() = 0;
 	// Sets one scalar parameter; NaN/inf or out-of-domain values print an error and are ignored.
 	virtual void light_set_param(RID p_light, LightParam p_param, float p_value) = 0;
@@ -379,8 +388,9 @@ public:
 	// Sets the rectangle of an area light in metres: x along the light's local +X, y along +Y. Both
 	// components must be finite and >= 0 (a zero area emits nothing); bad values are ignored with an error.
 	virtual void light_area_set_size(RID p_light, const Vector2 &p_size) = 0;
-	// True: the emitted radiance is divided by the rectangle's area, so the light's power does not
-	// change with its size (L_e = colour * energy * pi / (size.x * size.y)); false: L_e = colour * energy * pi.
+	// True: the emitted radiance is divided by the shape's emitting area A, so the light's power does not
+	// change with its size (L_e = colour * energy * pi / A; rectangle A = x y, disk pi x y / 4, sphere
+	// pi x^2, tube pi y x + pi y^2); false: L_e = colour * energy * pi.
 	virtual void light_area_set_normalize_energy(RID p_light, bool p_enable) = 0;
 	// Sets the shading method of an area light.
 	virtual void light_area_set_shading_method(RID p_light, LightAreaShadingMethod p_method) = 0;
@@ -391,6 +401,9 @@ public:
 	virtual void light_area_set_shadow_mode(RID p_light, LightAreaShadowMode p_mode) = 0;
 	// Sets the sample grid of LIGHT_AREA_SHADOW_FIXED: p_grid x p_grid shadow maps (2..9; others rejected).
 	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
+	// Sets the emitting shape of an area light (what its size means: see LightAreaShape; other values are
+	// rejected with an error, the old shape kept).
+	virtual void light_area_set_shape(RID p_light, LightAreaShape p_shape) = 0;
 	// Returns the light type (LIGHT_DIRECTIONAL for an invalid RID, with an error).
 	virtual LightType light_get_type(RID p_light) const = 0;
 	// Returns one scalar parameter (0 for an invalid RID or index).
@@ -410,6 +423,8 @@ public:
 	virtual LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
 	// Returns the shadow sample grid of an area light.
 	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
+	// Returns the emitting shape of an area light (RECTANGLE with an error for an invalid RID).
+	virtual LightAreaShape light_area_get_shape(RID p_light) const = 0;
 
 	/* CAMERA API */
 
@@ -574,8 +589,9 @@ public:
 	// AUTO receiver scan), the baseline a scene without area lights is timed against ("pays nothing").
 	virtual void set_debug_disable_area_lights(bool p_disable) = 0;
 	// Shader statistics: the colour pass's fragment sources as the renderer composes them, as (file name,
-	// GLSL): "base.frag" without area lights, then "area_<METHOD>.frag" per area shading method. Empty
-	// for renderers without GLSL.
+	// GLSL): "base.frag" without area lights, then "area_<METHOD>.frag" per area shading method (rectangles
+	// only), then "area_<METHOD>_shapes.frag" per method with the disk, sphere and tube code. Empty for
+	// renderers without GLSL.
 	virtual std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const = 0;
 
 	RenderingServer();

@@ -5,9 +5,9 @@
 #   /usr/bin/python3 misc/scripts/spirv_method_counts.py DIR
 #
 # Each DIR/*.frag is the fully preprocessed fragment source the renderer compiles (area_<METHOD>.frag:
-# the area-light colour variant with exactly that method; base.frag: the colour variant without area
-# lights). Each is compiled with glslangValidator -V (glslang's own code generation, no optimiser) and
-# disassembled with spirv-dis. The count of a function is its own instructions (OpFunction ..
+# the area-light colour variant with exactly that method; area_<METHOD>_shapes.frag: the same with the
+# disk / sphere / tube code; base.frag: the colour variant without area lights). Each is compiled with
+# glslangValidator -V (glslang's own code generation, no optimiser) and disassembled with spirv-dis. The count of a function is its own instructions (OpFunction ..
 # OpFunctionEnd, without OpLabel/OpFunctionParameter/OpVariable/OpLine/OpNoLine) plus, for every
 # OpFunctionCall, the count of the callee: the size of the fully inlined call tree, i.e. the code one
 # light costs. Roots: light_process_area_method (the area dispatch, one method compiled in) and
@@ -94,6 +94,16 @@ def main():
 				continue
 			raw, opt = compile_one(p, tmp)
 			rows.append(("area %s (light_process_area_method)" % m, root(function_sizes(raw), "light_process_area_method"), count_module(opt)))
+		# area_<METHOD>_shapes.frag: the same method with the disk / sphere / tube code (USE_AREA_SHAPES); the
+		# shape branch alone is light_process_area_shape.
+		for m in ["LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC"]:
+			p = os.path.join(d, "area_%s_shapes.frag" % m)
+			if not os.path.exists(p):
+				continue
+			raw, opt = compile_one(p, tmp)
+			sizes = function_sizes(raw)
+			rows.append(("area %s with shapes (light_process_area_method)" % m, root(sizes, "light_process_area_method"), count_module(opt)))
+			rows.append(("area %s, shape branch (light_process_area_shape)" % m, root(sizes, "light_process_area_shape"), count_module(opt)))
 	print("| per-light code | SPIR-V instructions, inlined call tree (glslang -V) | whole fragment shader after spirv-opt -O |")
 	print("|---|---|---|")
 	for name, n, total in rows:

@@ -33,6 +33,8 @@ int accuracy_command(const std::vector<String> &p_args) {
 			continue;
 		} else if (a == "--ci") {
 			options.ci_subset = true;
+		} else if (a == "--shapes") {
+			options.shapes = true;
 		} else if (a == "--progress") {
 			options.progress = true;
 		} else if ((a == "--csv" || a == "--thumbnails" || a == "--filter" || a == "--resolution" || a == "--methods") && !has_value) {

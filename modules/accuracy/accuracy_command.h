@@ -4,10 +4,13 @@
 /* godot-area: `godot-area bench --accuracy`, the area-light accuracy     */
 /* suite on the command line (accuracy_suite.h):                          */
 /*                                                                        */
-/*   godot-area bench --accuracy [--ci] [--resolution N] [--csv F]        */
+/*   godot-area bench --accuracy [--ci] [--shapes] [--resolution N]       */
+/*                    [--csv F]                                           */
 /*                    [--thumbnails DIR] [--methods 0,1,..] [--filter S]  */
 /*                    [--progress]                                        */
 /*                                                                        */
+/* --shapes: the disk / sphere / tube scenes (AccuracyScenes::           */
+/* shape_suite()) instead of the rectangles.                              */
 /* Defaults: the full suite at 96 x 96, method {LTC} (0). Prints the      */
 /* summary table (markdown) and the mean reference time per image.        */
 /* Runs with no engine started: the suite starts its own GodotInstance.   */

@@ -79,8 +79,9 @@ double AccuracyScenes::irradiance_integral(const Transform3D &p_light, const Vec
 	return sum;
 }
 
-AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement, float p_view_elevation) {
+AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement, float p_view_elevation, RS::LightAreaShape p_shape) {
 	Scene s;
+	s.shape = p_shape;
 	s.receiver = p_receiver;
 	s.roughness = p_roughness;
 	s.metallic = p_metallic;
@@ -91,6 +92,10 @@ AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_ro
 	s.id = vformat("%s_r%g_m%g_%gx%g_%s", receiver_name(p_receiver), p_roughness, p_metallic, p_light_size.x, p_light_size.y, placement_name(p_placement));
 	if (p_view_elevation != 0.0f) {
 		s.id += vformat("_v%g", p_view_elevation);
+	}
+	static const char *shape_names[RS::LIGHT_AREA_SHAPE_MAX] = { "rectangle", "disk", "sphere", "tube" };
+	if (p_shape != RS::LIGHT_AREA_SHAPE_RECTANGLE && int(p_shape) < int(RS::LIGHT_AREA_SHAPE_MAX)) {
+		s.id += String("_") + shape_names[p_shape];
 	}
 
 	const Vector3 p = p_receiver == RECEIVER_SPHERE ? Vector3(0, SPHERE_RADIUS, 0) : Vector3();
@@ -130,8 +135,26 @@ AccuracyScenes::Scene AccuracyScenes::make_scene(Receiver p_receiver, float p_ro
 	}
 	// Exposure: a Lambert surface at p would reflect TARGET_LAMBERT_RADIANCE. With normalised energy,
 	// L_e = E pi / A and L_lambert = L_e / pi * I = E I / A.
-	const double area = double(p_light_size.x) * p_light_size.y;
-	const double integral = irradiance_integral(s.light_transform, p_light_size, p, n);
+	double area = double(p_light_size.x) * p_light_size.y;
+	double integral = 0.0;
+	const double quarter_pi = Math::PI * 0.25;
+	switch (p_shape) {
+		case RS::LIGHT_AREA_SHAPE_DISK:
+			area *= quarter_pi;
+			integral = quarter_pi * irradiance_integral(s.light_transform, p_light_size, p, n);
+			break;
+		case RS::LIGHT_AREA_SHAPE_SPHERE:
+			area = Math::PI * p_light_size.x * p_light_size.x;
+			integral = quarter_pi * irradiance_integral(s.light_transform, Vector2(p_light_size.x, p_light_size.x), p, n);
+			break;
+		case RS::LIGHT_AREA_SHAPE_TUBE:
+			area = Math::PI * p_light_size.y * (p_light_size.x + p_light_size.y);
+			integral = irradiance_integral(s.light_transform, p_light_size, p, n) + quarter_pi * irradiance_integral(s.light_transform, Vector2(p_light_size.y, p_light_size.y), p, n);
+			break;
+		default:
+			integral = irradiance_integral(s.light_transform, p_light_size, p, n);
+			break;
+	}
 	s.light_energy = integral > 1e-9 ? float(std::min(1e4, TARGET_LAMBERT_RADIANCE * area / integral)) : 1.0f;
 	// Ten times the farthest lit distance: the range window (area_attenuation 2 leaves only it) is
 	// >= 1 - 2e-4 wherever the scene is lit, so the integral stays the physical one.
@@ -168,6 +191,35 @@ std::vector<AccuracyScenes::Scene> AccuracyScenes::full_suite() {
 		}
 	}
 	return scenes;
+}
+
+std::vector<AccuracyScenes::Scene> AccuracyScenes::shape_suite() {
+	const RS::LightAreaShape shapes[3] = { RS::LIGHT_AREA_SHAPE_DISK, RS::LIGHT_AREA_SHAPE_SPHERE, RS::LIGHT_AREA_SHAPE_TUBE };
+	const Vector2 sizes[3] = { Vector2(1, 1), Vector2(0.5f, 0.5f), Vector2(1, 0.2f) };
+	const float roughnesses[] = { 0.25f, 0.5f, 1.0f };
+	const Placement placements[] = { PLACEMENT_FACING, PLACEMENT_GRAZING, PLACEMENT_TILTED, PLACEMENT_CLOSE, PLACEMENT_FAR };
+	std::vector<Scene> scenes;
+	for (int k = 0; k < 3; k++) {
+		for (float roughness : roughnesses) {
+			for (float metallic : { 0.0f, 1.0f }) {
+				for (Placement p : placements) {
+					scenes.push_back(make_scene(RECEIVER_PLANE, roughness, metallic, sizes[k], p, 0.0f, shapes[k]));
+				}
+			}
+		}
+	}
+	return scenes;
+}
+
+std::vector<AccuracyScenes::Scene> AccuracyScenes::shape_ci_subset() {
+	std::vector<Scene> s;
+	s.push_back(make_scene(RECEIVER_PLANE, 1.0f, 0.0f, Vector2(1, 1), PLACEMENT_FACING, 0.0f, RS::LIGHT_AREA_SHAPE_DISK));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 1.0f, Vector2(1, 1), PLACEMENT_TILTED, 0.0f, RS::LIGHT_AREA_SHAPE_DISK));
+	s.push_back(make_scene(RECEIVER_PLANE, 1.0f, 0.0f, Vector2(0.5f, 0.5f), PLACEMENT_FACING, 0.0f, RS::LIGHT_AREA_SHAPE_SPHERE));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 1.0f, Vector2(0.5f, 0.5f), PLACEMENT_TILTED, 0.0f, RS::LIGHT_AREA_SHAPE_SPHERE));
+	s.push_back(make_scene(RECEIVER_PLANE, 1.0f, 0.0f, Vector2(1, 0.2f), PLACEMENT_FACING, 0.0f, RS::LIGHT_AREA_SHAPE_TUBE));
+	s.push_back(make_scene(RECEIVER_PLANE, 0.5f, 1.0f, Vector2(1, 0.2f), PLACEMENT_TILTED, 0.0f, RS::LIGHT_AREA_SHAPE_TUBE));
+	return s;
 }
 
 std::vector<AccuracyScenes::Scene> AccuracyScenes::ci_subset() {
@@ -249,6 +301,7 @@ bool AccuracyScenes::build(RenderingServer *p_rs, const Scene &p_scene, int p_re
 
 	b.light = p_rs->area_light_create();
 	p_rs->light_area_set_size(b.light, p_scene.light_size);
+	p_rs->light_area_set_shape(b.light, p_scene.shape);
 	p_rs->light_area_set_normalize_energy(b.light, true);
 	p_rs->light_set_param(b.light, RS::LIGHT_PARAM_ENERGY, p_scene.light_energy);
 	p_rs->light_set_param(b.light, RS::LIGHT_PARAM_RANGE, p_scene.light_range);

@@ -75,6 +75,8 @@ public:
 		Vector2 light_size = Vector2(1, 1);
 		Placement placement = PLACEMENT_FACING;
 		float view_elevation = 0.0f; // Degrees above the tangent plane at p; 0 = the standard camera.
+		// The light's area_shape; light_size keeps its meaning per shape (RS::LightAreaShape).
+		RS::LightAreaShape shape = RS::LIGHT_AREA_SHAPE_RECTANGLE;
 		// Derived by make_scene():
 		Transform3D light_transform;
 		float light_energy = 1.0f;
@@ -99,7 +101,17 @@ public:
 
 	// Fills the derived fields (transform, energy, range) and the id. p_view_elevation: see the banner
 	// (0 = the standard camera; otherwise in [1, 89] degrees). The id gets "_v<degrees>" when not 0.
-	static Scene make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement, float p_view_elevation = 0.0f);
+	// p_shape other than the rectangle appends "_<shape>" to the id; its exposure integral is that of the
+	// shape's silhouette from above approximated by rectangles (disk: the rectangle times pi / 4; sphere:
+	// the x by x square times pi / 4; tube: the rectangle plus the y by y square times pi / 4), which
+	// only sets the brightness of the scene.
+	static Scene make_scene(Receiver p_receiver, float p_roughness, float p_metallic, const Vector2 &p_light_size, Placement p_placement, float p_view_elevation = 0.0f, RS::LightAreaShape p_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE);
+	// The shape suite (issue 21): the plane x shapes {disk 1 x 1, sphere of diameter 0.5, tube 1 long and
+	// 0.2 thick} x roughness {0.25, 0.5, 1} x metallic {0, 1} x placements {facing, grazing, tilted,
+	// close, far} (90 scenes), and its CI subset (6 scenes: each shape diffuse facing and a glossy metal
+	// tilted).
+	static std::vector<Scene> shape_suite();
+	static std::vector<Scene> shape_ci_subset();
 
 	// The full suite: receivers {plane, sphere} x roughness {0.05, 0.1, 0.25, 0.5, 0.75, 1} x metallic
 	// {0, 1} x light sizes {0.25 x 0.25, 1 x 1, 4 x 4, 2 x 0.5 (thin 4:1)} x the seven placements, seen by

@@ -110,7 +110,8 @@ bool AccuracySuite::run(const Options &p_options, std::vector<Row> *r_rows, Stri
 		return fail("AccuracySuite::run creates its own rendering servers; a RenderingServer already exists (stop the running GodotInstance first).");
 	}
 	std::vector<int> methods = p_options.methods.empty() ? std::vector<int>{ RS::LIGHT_AREA_SHADING_LTC } : p_options.methods;
-	std::vector<AccuracyScenes::Scene> all = p_options.ci_subset ? AccuracyScenes::ci_subset() : AccuracyScenes::full_suite();
+	std::vector<AccuracyScenes::Scene> all = p_options.shapes ? (p_options.ci_subset ? AccuracyScenes::shape_ci_subset() : AccuracyScenes::shape_suite())
+															  : (p_options.ci_subset ? AccuracyScenes::ci_subset() : AccuracyScenes::full_suite());
 	std::vector<AccuracyScenes::Scene> scenes;
 	for (const AccuracyScenes::Scene &s : all) {
 		if (p_options.filter.empty() || s.id.find(p_options.filter) != String::npos) {

@@ -24,6 +24,7 @@ class AccuracySuite {
 public:
 	struct Options {
 		bool ci_subset = false; // The CI subset (22 scenes) instead of the full suite.
+		bool shapes = false; // The disk / sphere / tube scenes (AccuracyScenes::shape_suite(), with ci_subset its CI subset).
 		int resolution = 96; // Square images, 1..1024 pixels.
 		std::vector<int> methods; // RS::LightAreaShadingMethod values; empty = {LTC}.
 		String csv_path; // Written by run() when not empty.

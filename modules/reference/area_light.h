@@ -30,6 +30,31 @@
 
 namespace ReferenceBRDF {
 
+// The emitting shape (values equal RS::LightAreaShape; area_light_shapes.h integrates the non-rectangles):
+// DISK an ellipse of diameters size_x, size_y (one-sided, as the rectangle); SPHERE diameter size_x;
+// TUBE a capsule of segment size_x along axis_x and diameter size_y (both emit outwards everywhere).
+enum AreaLightShape : uint32_t {
+	AREA_LIGHT_SHAPE_RECTANGLE = 0,
+	AREA_LIGHT_SHAPE_DISK = 1,
+	AREA_LIGHT_SHAPE_SPHERE = 2,
+	AREA_LIGHT_SHAPE_TUBE = 3,
+};
+
+// Emitting area of a shape of size (x, y): rectangle x y, disk pi x y / 4, sphere pi x^2, tube pi y (x + y).
+inline float area_light_shape_area(AreaLightShape p_shape, float p_x, float p_y) {
+	const float pi = float(Math::PI);
+	switch (p_shape) {
+		case AREA_LIGHT_SHAPE_DISK:
+			return pi * p_x * p_y * 0.25f;
+		case AREA_LIGHT_SHAPE_SPHERE:
+			return pi * p_x * p_x;
+		case AREA_LIGHT_SHAPE_TUBE:
+			return pi * p_y * (p_x + p_y);
+		default:
+			return p_x * p_y;
+	}
+}
+
 // One area light in world space.
 struct AreaLightData {
 	Vector3 center; // World position of the rectangle's centre (the node origin).
@@ -43,14 +68,15 @@ struct AreaLightData {
 	float attenuation = 1.0f; // area_attenuation: distance exponent (2 = physical, window only).
 	float specular_amount = 1.0f; // "light_specular".
 	uint32_t cull_mask = 0xFFFFFFFF;
+	AreaLightShape shape = AREA_LIGHT_SHAPE_RECTANGLE;
 
-	float get_area() const { return size_x * size_y; }
+	float get_area() const { return area_light_shape_area(shape, size_x, size_y); }
 };
 
-// L_e of the contract: srgb_to_linear(colour) * energy * pi / A_n (A_n = a * b when normalising, else
-// 1), negated for negative lights. Exactly zero when a * b == 0 (no division by zero, no NaN).
-inline Vector3 area_light_emitted_radiance(const Color &p_srgb_color, float p_energy, bool p_negative, const Vector2 &p_size, bool p_normalize_energy) {
-	const float area = p_size.x * p_size.y;
+// L_e of the contract: srgb_to_linear(colour) * energy * pi / A_n (A_n = the shape's emitting area when
+// normalising, else 1), negated for negative lights. Exactly zero for a zero area (no division by zero, no NaN).
+inline Vector3 area_light_emitted_radiance(const Color &p_srgb_color, float p_energy, bool p_negative, const Vector2 &p_size, bool p_normalize_energy, AreaLightShape p_shape = AREA_LIGHT_SHAPE_RECTANGLE) {
+	const float area = area_light_shape_area(p_shape, p_size.x, p_size.y);
 	if (!(area > 0.0f)) {
 		return Vector3();
 	}
@@ -79,9 +105,30 @@ inline float area_light_front_distance(const AreaLightData &p_light, const Vecto
 	return (p_point - p_light.center).dot(p_light.emit_dir);
 }
 
-// Distance from p to the closest point of the rectangle (metres).
+// Distance from p to the closest point of the shape (metres). Disk: the plane point pulled radially onto
+// the ellipse (exact for circles), as the GPU's area_shape_distance (area_light_shapes_inc.glsl).
 inline float area_light_closest_distance(const AreaLightData &p_light, const Vector3 &p_point) {
 	const Vector3 rel = p_point - p_light.center;
+	if (p_light.shape == AREA_LIGHT_SHAPE_SPHERE) {
+		return std::max(rel.length() - 0.5f * p_light.size_x, 0.0f);
+	}
+	if (p_light.shape == AREA_LIGHT_SHAPE_TUBE) {
+		const float t = std::clamp(rel.dot(p_light.axis_x), -0.5f * p_light.size_x, 0.5f * p_light.size_x);
+		return std::max((rel - p_light.axis_x * t).length() - 0.5f * p_light.size_y, 0.0f);
+	}
+	if (p_light.shape == AREA_LIGHT_SHAPE_DISK) {
+		const float a = 0.5f * p_light.size_x, b = 0.5f * p_light.size_y;
+		if (!(a > 0.0f) || !(b > 0.0f)) {
+			return rel.length();
+		}
+		float u = rel.dot(p_light.axis_x) / a, v = rel.dot(p_light.axis_y) / b;
+		const float k = std::sqrt(u * u + v * v);
+		if (k > 1.0f) {
+			u /= k;
+			v /= k;
+		}
+		return (rel - p_light.axis_x * (u * a) - p_light.axis_y * (v * b)).length();
+	}
 	const float u = rel.dot(p_light.axis_x);
 	const float v = rel.dot(p_light.axis_y);
 	const float w = rel.dot(p_light.emit_dir);

@@ -15,6 +15,7 @@
 #include "core/error/error_macros.h"
 #include "core/io/image.h"
 #include "core/math/math_funcs.h"
+#include "modules/reference/area_light_shapes.h"
 
 #include <embree3/rtcore.h>
 
@@ -291,7 +292,8 @@ bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_inst
 		const Vector2 size = light_storage->light_area_get_size(rid);
 		a.size_x = size.x;
 		a.size_y = size.y;
-		a.radiance = area_light_emitted_radiance(light_storage->light_get_color(rid), light_storage->light_get_param(rid, RS::LIGHT_PARAM_ENERGY), light_storage->light_is_negative(rid), size, light_storage->light_area_get_normalize_energy(rid));
+		a.shape = AreaLightShape(light_storage->light_area_get_shape(rid));
+		a.radiance = area_light_emitted_radiance(light_storage->light_get_color(rid), light_storage->light_get_param(rid, RS::LIGHT_PARAM_ENERGY), light_storage->light_is_negative(rid), size, light_storage->light_area_get_normalize_energy(rid), a.shape);
 		a.range = light_storage->light_get_param(rid, RS::LIGHT_PARAM_RANGE);
 		a.attenuation = std::fmax(light_storage->light_get_param(rid, RS::LIGHT_PARAM_ATTENUATION), 0.0f);
 		a.specular_amount = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR);
@@ -589,7 +591,9 @@ static void _reference_shade_area_light(RTCScene p_scene, const ReferenceRenderO
 			return _reference_occluded(p_scene, p_origin, p_dir, p_max_distance);
 		};
 	}
-	const AreaLightIntegral integral = area_light_integrate(p_light, p_point, p_options.area_sampling, settings, r_rng, occluded);
+	// Disks, spheres and tubes: their own estimator (real shape geometry, MIS of shape and BRDF samples).
+	const AreaLightIntegral integral = p_light.shape == AREA_LIGHT_SHAPE_RECTANGLE ? area_light_integrate(p_light, p_point, p_options.area_sampling, settings, r_rng, occluded)
+																				   : area_light_shape_integrate(p_light, p_point, settings, r_rng, occluded);
 	if (!integral.evaluated) {
 		return;
 	}

@@ -257,7 +257,15 @@ std::vector<String> Light3D::get_configuration_warnings() const {
 		warnings.push_back("A SpotLight3D with an angle wider than 90 degrees cannot cast shadows.");
 	}
 	if (const AreaLight3D *area = Object::cast_to<AreaLight3D>(this)) {
-		if (area->get_area_size().x <= 0.0f || area->get_area_size().y <= 0.0f) {
+		if (area->get_area_shape() == AreaLight3D::AREA_SHAPE_SPHERE) {
+			if (area->get_area_size().x <= 0.0f) {
+				warnings.push_back("A sphere AreaLight3D with a zero diameter (area_size.x) emits no light.");
+			}
+		} else if (area->get_area_shape() == AreaLight3D::AREA_SHAPE_TUBE) {
+			if (area->get_area_size().y <= 0.0f) {
+				warnings.push_back("A tube AreaLight3D with a zero diameter (area_size.y) emits no light.");
+			}
+		} else if (area->get_area_size().x <= 0.0f || area->get_area_size().y <= 0.0f) {
 			warnings.push_back("An AreaLight3D with a zero area_size component emits no light.");
 		}
 		if (projector.is_valid()) {
@@ -589,6 +597,15 @@ SpotLight3D::SpotLight3D() :
 
 /* AreaLight3D */
 
+void AreaLight3D::set_area_shape(AreaShape p_shape) {
+	ERR_FAIL_COND_MSG((int)p_shape < 0 || (int)p_shape >= (int)RS::LIGHT_AREA_SHAPE_MAX, vformat("AreaLight3D \"%s\": area_shape must be 0..%d (Rectangle, Disk, Sphere, Tube); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHAPE_MAX - 1, (int)p_shape));
+	area_shape = p_shape;
+	if (get_light().is_valid() && RS::get_singleton()) {
+		RS::get_singleton()->light_area_set_shape(get_light(), RS::LightAreaShape(p_shape));
+	}
+	notify_property_list_changed(); // The editor redraws the gizmo and the Area group.
+}
+
 void AreaLight3D::set_area_size(const Vector2 &p_size) {
 	ERR_FAIL_COND_MSG(!p_size.is_finite(), vformat("AreaLight3D \"%s\": area_size must be finite in both components (got (%s, %s)); the old value (%s, %s) is kept.", get_name().c_str(), rtos(p_size.x).c_str(), rtos(p_size.y).c_str(), rtos(area_size.x).c_str(), rtos(area_size.y).c_str()));
 	// Upstream Godot 4.7 clamps negative components to 0; we do too, and say so.
@@ -668,13 +685,25 @@ void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
 }
 
 AABB AreaLight3D::get_aabb() const {
+	// Same box as RendererLightStorage::compute_area_light_aabb() (the server's bound).
 	const real_t r = get_param(PARAM_RANGE);
+	if (area_shape == AREA_SHAPE_SPHERE) {
+		const real_t h = area_size.x * 0.5f + r;
+		return AABB(-Vector3(h, h, h), Vector3(h, h, h) * 2);
+	}
+	if (area_shape == AREA_SHAPE_TUBE) {
+		const real_t radius = area_size.y * 0.5f;
+		const Vector3 h(area_size.x * 0.5f + radius + r, radius + r, radius + r);
+		return AABB(-h, h * 2);
+	}
 	const real_t half_a = area_size.x * 0.5f + r;
 	const real_t half_b = area_size.y * 0.5f + r;
 	return AABB(-Vector3(half_a, half_b, r), Vector3(half_a * 2, half_b * 2, r));
 }
 
 void AreaLight3D::_bind_methods() {
+	ClassDB::bind_method(D_METHOD("set_area_shape", "shape"), &AreaLight3D::set_area_shape);
+	ClassDB::bind_method(D_METHOD("get_area_shape"), &AreaLight3D::get_area_shape);
 	ClassDB::bind_method(D_METHOD("set_area_size", "size"), &AreaLight3D::set_area_size);
 	ClassDB::bind_method(D_METHOD("get_area_size"), &AreaLight3D::get_area_size);
 	ClassDB::bind_method(D_METHOD("set_area_normalize_energy", "enabled"), &AreaLight3D::set_area_normalize_energy);
@@ -689,6 +718,7 @@ void AreaLight3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_area_shadow_grid"), &AreaLight3D::get_area_shadow_grid);
 
 	ADD_GROUP("Area", "area_");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shape", PROPERTY_HINT_ENUM, "Rectangle,Disk,Sphere,Tube"), "set_area_shape", "get_area_shape");
 	ADD_PROPERTY(PropertyInfo(Variant::VECTOR2, "area_size", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,suffix:m"), "set_area_size", "get_area_size");
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_range", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,exp,suffix:m"), "set_param", "get_param", PARAM_RANGE);
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_attenuation", PROPERTY_HINT_RANGE, "0,10,0.001,or_greater"), "set_param", "get_param", PARAM_ATTENUATION);
@@ -699,6 +729,10 @@ void AreaLight3D::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_grid", PROPERTY_HINT_RANGE, "2,9"), "set_area_shadow_grid", "get_area_shadow_grid");
 	ADD_GROUP("", "");
 
+	BIND_ENUM_CONSTANT(AREA_SHAPE_RECTANGLE);
+	BIND_ENUM_CONSTANT(AREA_SHAPE_DISK);
+	BIND_ENUM_CONSTANT(AREA_SHAPE_SPHERE);
+	BIND_ENUM_CONSTANT(AREA_SHAPE_TUBE);
 	BIND_ENUM_CONSTANT(AREA_SHADING_LTC);
 	BIND_ENUM_CONSTANT(AREA_SHADING_LTC_POLYNOMIAL);
 	BIND_ENUM_CONSTANT(AREA_SHADING_MRP);
@@ -716,6 +750,7 @@ AreaLight3D::AreaLight3D() :
 	// shadow_normal_bias 1 come from Light3D), pushed to the server.
 	set_param(PARAM_SPECULAR, 1.0f);
 	set_param(PARAM_SIZE, 0.5f);
+	set_area_shape(AREA_SHAPE_RECTANGLE);
 	set_area_size(Vector2(1, 1));
 	set_area_normalize_energy(true);
 	set_area_shading_method(AREA_SHADING_LTC);

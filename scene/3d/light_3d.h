@@ -216,11 +216,13 @@ public:
 	SpotLight3D();
 };
 
-// A rectangular area light: area_size.x along local +X by area_size.y along +Y, centred at the
-// origin; it emits uniform radiance along local -Z only (nothing behind it, z > 0, is lit):
-//   L_e = srgb_to_linear(light_color) * light_energy * pi / A_n,  A_n = x * y if area_normalize_energy else 1,
+// An area light; by default (area_shape RECTANGLE) a rectangle area_size.x along local +X by area_size.y
+// along +Y, centred at the origin; it emits uniform radiance along local -Z only (nothing behind it, z > 0,
+// is lit). DISK is one-sided the same way; SPHERE and TUBE emit outwards everywhere (see AreaShape):
+//   L_e = srgb_to_linear(light_color) * light_energy * pi / A_n,  A_n = the shape's emitting area
+//   (RendererLightStorage::compute_area_light_emitting_area) if area_normalize_energy else 1,
 // attenuated by W(d) = max(1 - (d / area_range)^4, 0)^2 * max(d, 1e-4)^(2 - area_attenuation), d = distance
-// to the closest point of the rectangle (upstream Godot 4.7's meaning: area_attenuation is a distance
+// to the closest point of the shape (upstream Godot 4.7's meaning: area_attenuation is a distance
 // exponent, 2 = physically correct inverse square, default 1). A zero area emits nothing.
 class AreaLight3D : public Light3D {
 	GDCLASS(AreaLight3D, Light3D);
@@ -233,6 +235,15 @@ public:
 		AREA_SHADING_STOCHASTIC = RS::LIGHT_AREA_SHADING_STOCHASTIC,
 		AREA_SHADING_AUTO = RS::LIGHT_AREA_SHADING_AUTO,
 	};
+	// The emitting shape (values equal RS::LightAreaShape); area_size means per shape: RECTANGLE x by y,
+	// DISK an ellipse of diameters x and y (both one-sided, along -Z), SPHERE diameter x, TUBE a capsule
+	// of segment length x along local X and diameter y (both emit outwards everywhere).
+	enum AreaShape {
+		AREA_SHAPE_RECTANGLE = RS::LIGHT_AREA_SHAPE_RECTANGLE,
+		AREA_SHAPE_DISK = RS::LIGHT_AREA_SHAPE_DISK,
+		AREA_SHAPE_SPHERE = RS::LIGHT_AREA_SHAPE_SPHERE,
+		AREA_SHAPE_TUBE = RS::LIGHT_AREA_SHAPE_TUBE,
+	};
 	// How shadows are drawn when shadow_enabled is on (values equal RS::LightAreaShadowMode).
 	enum AreaShadowMode {
 		AREA_SHADOW_FIXED = RS::LIGHT_AREA_SHADOW_FIXED,
@@ -242,6 +253,7 @@ public:
 	};
 
 private:
+	AreaShape area_shape = AREA_SHAPE_RECTANGLE;
 	Vector2 area_size = Vector2(1, 1);
 	bool area_normalize_energy = true;
 	AreaShadingMethod area_shading_method = AREA_SHADING_LTC;
@@ -255,6 +267,9 @@ protected:
 	void _validate_property(PropertyInfo &p_property) const;
 
 public:
+	// RECTANGLE (default, upstream's), DISK, SPHERE or TUBE (else rejected with a message, the old value kept).
+	void set_area_shape(AreaShape p_shape);
+	AreaShape get_area_shape() const { return area_shape; }
 	// Metres; both components finite and >= 0 (else rejected with a message, the old value kept).
 	void set_area_size(const Vector2 &p_size);
 	Vector2 get_area_size() const { return area_size; }
@@ -271,8 +286,9 @@ public:
 	void set_area_shadow_grid(int p_grid);
 	int get_area_shadow_grid() const { return area_shadow_grid; }
 
-	// Thesis Listing A.1: the rectangle grown by the range r sideways and in front:
-	// AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)) (z from -r to 0).
+	// Thesis Listing A.1: the shape grown by the range r (RendererLightStorage::compute_area_light_aabb):
+	// rectangle and disk sideways and in front, AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)); sphere
+	// and tube all around.
 	AABB get_aabb() const override;
 
 	AreaLight3D();
@@ -283,5 +299,6 @@ VARIANT_ENUM_CAST(Light3D::BakeMode);
 VARIANT_ENUM_CAST(DirectionalLight3D::ShadowMode);
 VARIANT_ENUM_CAST(DirectionalLight3D::SkyMode);
 VARIANT_ENUM_CAST(OmniLight3D::ShadowMode);
+VARIANT_ENUM_CAST(AreaLight3D::AreaShape);
 VARIANT_ENUM_CAST(AreaLight3D::AreaShadingMethod);
 VARIANT_ENUM_CAST(AreaLight3D::AreaShadowMode);

@@ -480,7 +480,8 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 				// around its centre has radius range + half the diagonal (scaled like the range: conservative).
 				const real_t max_scale = std::fmax(scale.x, std::fmax(scale.y, scale.z));
 				const Vector2 size = RSG::light_storage->light_area_get_size(instance->base);
-				const real_t radius = RendererLightStorage::compute_area_light_cull_radius(range, size * max_scale);
+				const RS::LightAreaShape shape = RSG::light_storage->light_area_get_shape(instance->base);
+				const real_t radius = RendererLightStorage::compute_area_light_cull_radius(range, size * max_scale, shape);
 				culled = is_sphere_culled(planes, instance->transform.origin, radius);
 			} else {
 				const Vector3 axis = (-instance->transform.basis.get_column(2)).normalized();

@@ -586,10 +586,18 @@ void RenderingServerDefault::light_area_set_shadow_grid(RID p_light, int p_grid)
 	RSG::light_storage->light_area_set_shadow_grid(p_light, p_grid);
 }
 
+void RenderingServerDefault::light_area_set_shape(RID p_light, LightAreaShape p_shape) {
+	RSG::light_storage->light_area_set_shape(p_light, p_shape);
+}
+
 RS::LightAreaShadowMode RenderingServerDefault::light_area_get_shadow_mode(RID p_light) const {
 	return RSG::light_storage->light_area_get_shadow_mode(p_light);
 }
 
 int RenderingServerDefault::light_area_get_shadow_grid(RID p_light) const {
 	return RSG::light_storage->light_area_get_shadow_grid(p_light);
+}
+
+RS::LightAreaShape RenderingServerDefault::light_area_get_shape(RID p_light) const {
+	return RSG::light_storage->light_area_get_shape(p_light);
 }

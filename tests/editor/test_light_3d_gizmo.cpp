@@ -129,6 +129,58 @@ TEST_CASE("[AreaLight3D][Gizmo] redraw: outline always, range box and two handle
 	CHECK(Vector2(gizmo->get_handle_value(0)).is_equal_approx(Vector2(2, 1)));
 }
 
+TEST_CASE("[AreaLight3D][Gizmo] the outline is drawn as the area_shape; sphere and tube bounds all around") {
+	GizmoScene s;
+	AreaLight3D *light = s.add(new AreaLight3D);
+	light->set_param(Light3D::PARAM_RANGE, 3.0f);
+	Ref<EditorNode3DGizmo> gizmo = s.plugin->create_gizmo(light);
+	REQUIRE(gizmo.is_valid());
+
+	// Disk 2 x 1: an ellipse of semi-axes 1 and 0.5 in the XY plane.
+	light->set_area_shape(AreaLight3D::AREA_SHAPE_DISK);
+	light->set_area_size(Vector2(2, 1));
+	gizmo->redraw();
+	REQUIRE(gizmo->get_lines().size() == 1);
+	const std::vector<Vector3> disk = gizmo->get_lines()[0].points;
+	CHECK(disk.size() == 64);
+	for (const Vector3 &p : disk) {
+		CHECK(p.x * p.x + 4.0f * p.y * p.y == doctest::Approx(1.0).epsilon(1e-4));
+		CHECK(p.z == doctest::Approx(0.0));
+	}
+	CHECK(has_point(disk, Vector3(1, 0, 0)));
+
+	// Sphere of diameter 2: three great circles of radius 1; one handle (its diameter).
+	light->set_area_shape(AreaLight3D::AREA_SHAPE_SPHERE);
+	gizmo->set_selected(true);
+	gizmo->redraw();
+	REQUIRE(gizmo->get_lines().size() == 2);
+	const std::vector<Vector3> sphere = gizmo->get_lines()[0].points;
+	CHECK(sphere.size() == 3 * 64);
+	for (const Vector3 &p : sphere) {
+		CHECK(p.length() == doctest::Approx(1.0).epsilon(1e-4));
+	}
+	// The bound: the cube of half side 1 + 3 around the centre, in front of and behind the light.
+	const std::vector<Vector3> &bound = gizmo->get_lines()[1].points;
+	CHECK(bound.size() == 24);
+	CHECK(has_point(bound, Vector3(4, 4, 4)));
+	CHECK(has_point(bound, Vector3(-4, -4, -4)));
+	CHECK(gizmo->get_handles().size() == 1);
+	CHECK(gizmo->get_handle_name(Light3DGizmoPlugin::HANDLE_AREA_WIDTH) == "Diameter");
+
+	// Tube: segment 2 along X, diameter 1: every outline point is on the capsule's surface.
+	light->set_area_shape(AreaLight3D::AREA_SHAPE_TUBE);
+	gizmo->redraw();
+	const std::vector<Vector3> tube = gizmo->get_lines()[0].points;
+	CHECK(tube.size() == 2 * 2 * (24 + 12 + 12) + 8);
+	for (const Vector3 &p : tube) {
+		const float ax = std::max(std::fabs(p.x) - 1.0f, 0.0f);
+		CHECK(std::sqrt(ax * ax + p.y * p.y + p.z * p.z) == doctest::Approx(0.5).epsilon(1e-4));
+	}
+	CHECK(gizmo->get_handle_name(Light3DGizmoPlugin::HANDLE_AREA_WIDTH) == "Length");
+	CHECK(gizmo->get_handle_name(Light3DGizmoPlugin::HANDLE_AREA_HEIGHT) == "Diameter");
+	CHECK(has_point(gizmo->get_lines()[1].points, Vector3(-4.5f, -3.5f, -3.5f)));
+}
+
 TEST_CASE("[AreaLight3D][Gizmo] a handle drag follows the camera ray into light space") {
 	GizmoScene s;
 	AreaLight3D *light = s.add(new AreaLight3D);

@@ -159,7 +159,7 @@ TEST_CASE("[LightStorage] LightData, AreaLightData and ClusterElementData match 
 	using ED = ClusterBuilderRD::ElementData;
 	check_layout(spirv_struct_layout(spirv, "ClusterElementData"), "ClusterElementData",
 			{ MEMBER(ED, position), MEMBER(ED, radius), MEMBER(ED, direction), MEMBER(ED, cone_cos), MEMBER(ED, extents), MEMBER(ED, cone_sin),
-					MEMBER(ED, axis_x), MEMBER(ED, pad0) },
+					MEMBER(ED, axis_x), MEMBER(ED, sphere_offset) },
 			sizeof(ED));
 }
 
@@ -181,6 +181,20 @@ static long embedded_define(const char *p_file, const String &p_name) {
 	const String source = text ? String(text) : String();
 	const size_t at = source.find("#define " + p_name + " ");
 	return at == String::npos ? -1 : strtol(source.c_str() + at + p_name.size() + 9, nullptr, 10);
+}
+
+TEST_CASE("[LightStorage] the GLSL area shape and method values equal RS's, and the shape fits bits 24-31") {
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_RECTANGLE") == long(RS::LIGHT_AREA_SHAPE_RECTANGLE));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_DISK") == long(RS::LIGHT_AREA_SHAPE_DISK));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_SPHERE") == long(RS::LIGHT_AREA_SHAPE_SPHERE));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHAPE_TUBE") == long(RS::LIGHT_AREA_SHAPE_TUBE));
+	CHECK(embedded_define("light_data_inc.glsl", "AREA_SHADING_STOCHASTIC") == long(RS::LIGHT_AREA_SHADING_STOCHASTIC));
+	CHECK(RendererRD::LightStorage::AREA_METHOD_SHAPE_SHIFT == 24u);
+	CHECK(int(RS::LIGHT_AREA_SHAPE_MAX) <= 256);
+	// The shader reads the shape as shading_method >> 24u (area_light_get_shape).
+	const char *dispatch = ShaderRD::get_embedded_source("area_light_inc.glsl");
+	REQUIRE(dispatch != nullptr);
+	CHECK(String(dispatch).find("p_light.shading_method >> 24u") != String::npos);
 }
 
 TEST_CASE("[AreaShadowRendererRD] AreaShadowData and the adaptive pass structs match their GLSL structs in the SPIR-V") {

@@ -6,6 +6,7 @@
 #include "editor/plugins/gizmos/light_3d_gizmo_plugin.h"
 
 #include "core/error/error_macros.h"
+#include "core/math/math_funcs.h"
 #include "scene/3d/camera_3d.h"
 #include "scene/3d/light_3d.h"
 
@@ -56,6 +57,52 @@ std::vector<Vector3> Light3DGizmoPlugin::get_area_outline(const Vector2 &p_size)
 	for (int i = 0; i < 4; i++) {
 		points.push_back(corners[i]);
 		points.push_back(corners[(i + 1) % 4]);
+	}
+	return points;
+}
+
+// Line pairs of the arc p_centre + p_u cos t + p_v sin t for t in [p_t0, p_t1], p_segments segments.
+static void _add_arc(std::vector<Vector3> &r_points, const Vector3 &p_centre, const Vector3 &p_u, const Vector3 &p_v, real_t p_t0, real_t p_t1, int p_segments) {
+	for (int i = 0; i < p_segments; i++) {
+		const real_t a = p_t0 + (p_t1 - p_t0) * real_t(i) / p_segments;
+		const real_t b = p_t0 + (p_t1 - p_t0) * real_t(i + 1) / p_segments;
+		r_points.push_back(p_centre + p_u * std::cos(a) + p_v * std::sin(a));
+		r_points.push_back(p_centre + p_u * std::cos(b) + p_v * std::sin(b));
+	}
+}
+
+std::vector<Vector3> Light3DGizmoPlugin::get_area_shape_outline(int p_shape, const Vector2 &p_size) {
+	const real_t tau = real_t(Math::PI) * 2;
+	std::vector<Vector3> points;
+	switch (p_shape) {
+		case RS::LIGHT_AREA_SHAPE_DISK:
+			_add_arc(points, Vector3(), Vector3(p_size.x * real_t(0.5), 0, 0), Vector3(0, p_size.y * real_t(0.5), 0), 0, tau, 32);
+			break;
+		case RS::LIGHT_AREA_SHAPE_SPHERE: {
+			const real_t r = p_size.x * real_t(0.5);
+			_add_arc(points, Vector3(), Vector3(r, 0, 0), Vector3(0, r, 0), 0, tau, 32);
+			_add_arc(points, Vector3(), Vector3(r, 0, 0), Vector3(0, 0, r), 0, tau, 32);
+			_add_arc(points, Vector3(), Vector3(0, r, 0), Vector3(0, 0, r), 0, tau, 32);
+		} break;
+		case RS::LIGHT_AREA_SHAPE_TUBE: {
+			const real_t h = p_size.x * real_t(0.5);
+			const real_t r = p_size.y * real_t(0.5);
+			const Vector3 ends[2] = { Vector3(-h, 0, 0), Vector3(h, 0, 0) };
+			for (int e = 0; e < 2; e++) {
+				_add_arc(points, ends[e], Vector3(0, r, 0), Vector3(0, 0, r), 0, tau, 24);
+				// The cap: half circles in the XY and XZ planes, bulging outwards.
+				const Vector3 out(e == 0 ? -r : r, 0, 0);
+				_add_arc(points, ends[e], Vector3(0, r, 0), out, 0, real_t(Math::PI), 12);
+				_add_arc(points, ends[e], Vector3(0, 0, r), out, 0, real_t(Math::PI), 12);
+			}
+			const Vector3 sides[4] = { Vector3(0, r, 0), Vector3(0, -r, 0), Vector3(0, 0, r), Vector3(0, 0, -r) };
+			for (const Vector3 &s : sides) {
+				points.push_back(ends[0] + s);
+				points.push_back(ends[1] + s);
+			}
+		} break;
+		default:
+			return get_area_outline(p_size);
 	}
 	return points;
 }
@@ -183,11 +230,29 @@ void Light3DGizmoPlugin::redraw(EditorNode3DGizmo *p_gizmo) {
 			const Vector2 size = area->get_area_size();
 			// Thesis Listing A.4, except that the outline is always shown, so the light's extent is
 			// visible without selecting it.
-			p_gizmo->add_lines(get_area_outline(size), lines, false, color);
+			p_gizmo->add_lines(get_area_shape_outline(int(area->get_area_shape()), size), lines, false, color);
 			if (selected) {
 				const real_t r = light->get_param(Light3D::PARAM_RANGE);
-				p_gizmo->add_lines(get_area_range_box(size, r), lines, false, Color(color.r, color.g, color.b, 0.35f));
-				p_gizmo->add_handles({ Vector3(size.x * real_t(0.5), 0, 0), Vector3(0, size.y * real_t(0.5), 0) }, get_material("handles"), { HANDLE_AREA_WIDTH, HANDLE_AREA_HEIGHT });
+				std::vector<Vector3> box = get_area_range_box(size, r);
+				if (area->get_area_shape() == AreaLight3D::AREA_SHAPE_SPHERE || area->get_area_shape() == AreaLight3D::AREA_SHAPE_TUBE) {
+					// Lit all around: the node's bound (the range around the whole shape), its 12 edges.
+					const AABB bound = area->get_aabb();
+					box.clear();
+					for (int i = 0; i < 8; i++) {
+						for (int axis = 0; axis < 3; axis++) {
+							if (!(i & (1 << axis))) { // Corner i and its neighbour along one axis.
+								box.push_back(bound.get_endpoint(i));
+								box.push_back(bound.get_endpoint(i | (1 << axis)));
+							}
+						}
+					}
+				}
+				p_gizmo->add_lines(box, lines, false, Color(color.r, color.g, color.b, 0.35f));
+				if (area->get_area_shape() == AreaLight3D::AREA_SHAPE_SPHERE) {
+					p_gizmo->add_handles({ Vector3(size.x * real_t(0.5), 0, 0) }, get_material("handles"), { HANDLE_AREA_WIDTH }); // Its diameter only.
+				} else {
+					p_gizmo->add_handles({ Vector3(size.x * real_t(0.5), 0, 0), Vector3(0, size.y * real_t(0.5), 0) }, get_material("handles"), { HANDLE_AREA_WIDTH, HANDLE_AREA_HEIGHT });
+				}
 			}
 			p_gizmo->add_unscaled_billboard(get_material("light_area_icon", p_gizmo), ICON_SCALE, color);
 		} break;
@@ -204,8 +269,17 @@ String Light3DGizmoPlugin::get_handle_name(const EditorNode3DGizmo *p_gizmo, int
 			return p_id == HANDLE_RANGE ? "Radius" : String();
 		case RS::LIGHT_SPOT:
 			return p_id == HANDLE_RANGE ? "Radius" : (p_id == HANDLE_SPOT_ANGLE ? "Aperture" : String());
-		case RS::LIGHT_AREA:
+		case RS::LIGHT_AREA: {
+			const AreaLight3D *area = Object::cast_to<AreaLight3D>(light);
+			const AreaLight3D::AreaShape shape = area ? area->get_area_shape() : AreaLight3D::AREA_SHAPE_RECTANGLE;
+			if (shape == AreaLight3D::AREA_SHAPE_SPHERE) {
+				return p_id == HANDLE_AREA_WIDTH ? "Diameter" : String();
+			}
+			if (shape == AreaLight3D::AREA_SHAPE_TUBE) {
+				return p_id == HANDLE_AREA_WIDTH ? "Length" : (p_id == HANDLE_AREA_HEIGHT ? "Diameter" : String());
+			}
 			return p_id == HANDLE_AREA_WIDTH ? "Width" : (p_id == HANDLE_AREA_HEIGHT ? "Height" : String());
+		}
 		default:
 			return String();
 	}

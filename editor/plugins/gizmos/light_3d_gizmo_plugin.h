@@ -64,6 +64,9 @@ public:
 	static Color get_gizmo_color(const Light3D *p_light);
 	// Local-space geometry, as line pairs.
 	static std::vector<Vector3> get_area_outline(const Vector2 &p_size); // 4 segments, 8 points.
+	// The outline drawn as the shape (RS::LightAreaShape): rectangle get_area_outline(); disk the ellipse;
+	// sphere its three great circles; tube its two end circles, four side lines and the cap arcs.
+	static std::vector<Vector3> get_area_shape_outline(int p_shape, const Vector2 &p_size);
 	static std::vector<Vector3> get_area_range_box(const Vector2 &p_size, real_t p_range); // 12 segments.
 	// New area_size when handle p_id is dragged to local point p_local (x or y is the half-extent).
 	Vector2 get_area_size_for_drag(const Vector2 &p_old_size, int p_id, const Vector3 &p_local) const;

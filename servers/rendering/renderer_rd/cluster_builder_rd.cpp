@@ -168,7 +168,29 @@ bool ClusterBuilderRD::add_area_light(const Vector3 &p_center, const Vector3 &p_
 	e.radius = r + std::sqrt(half_a * half_a + half_b * half_b); // Thesis eq. 5.1.
 	e.cone_cos = 1.0f;
 	e.cone_sin = 0.0f;
+	e.sphere_offset = ext.z;
 	// The eq. 5.1 sphere is centred on the rectangle (the box centre minus direction * extents.z).
+	element_depth_max = std::fmax(element_depth_max, -p_center.z + e.radius);
+	element_count[ELEMENT_TYPE_AREA_LIGHT]++;
+	return true;
+}
+
+bool ClusterBuilderRD::add_area_light_box(const Vector3 &p_center, const Vector3 &p_axis_x, const Vector3 &p_axis_z, const Vector3 &p_extents, float p_radius) {
+	if (element_count[ELEMENT_TYPE_AREA_LIGHT] >= max_elements) {
+		return false;
+	}
+	ElementData &e = elements[ELEMENT_TYPE_AREA_LIGHT * max_elements + element_count[ELEMENT_TYPE_AREA_LIGHT]];
+	e = ElementData();
+	for (int i = 0; i < 3; i++) {
+		e.position[i] = p_center[i];
+		e.direction[i] = p_axis_z[i];
+		e.axis_x[i] = p_axis_x[i];
+		e.extents[i] = std::fmax(p_extents[i], 0.0f);
+	}
+	e.radius = std::fmax(p_radius, 0.0f);
+	e.cone_cos = 1.0f;
+	e.cone_sin = 0.0f;
+	e.sphere_offset = 0.0f; // The box is centred on the light.
 	element_depth_max = std::fmax(element_depth_max, -p_center.z + e.radius);
 	element_count[ELEMENT_TYPE_AREA_LIGHT]++;
 	return true;

@@ -43,13 +43,13 @@ public:
 	// Mirror of ClusterElementData (shaders/cluster_data_inc.glsl), 64 bytes std430.
 	struct ElementData {
 		float position[3]; // View space centre (sphere, box) / cone apex.
-		float radius; // Sphere radius; box: eq. 5.1 radius r + sqrt(a^2 + b^2) / 2 around position - direction * extents.z.
+		float radius; // Sphere radius; box: eq. 5.1 radius (range + the shape's reach) around position - direction * sphere_offset.
 		float direction[3]; // View space unit cone axis; box: unit axis z (the area light's normal).
 		float cone_cos; // cos(half angle).
 		float extents[3]; // Box half sizes along axis_x, axis_y (= direction x axis_x) and direction.
 		float cone_sin; // sin(half angle).
 		float axis_x[3]; // Box: unit axis x (view space).
-		float pad0;
+		float sphere_offset; // Box: from the box centre back to the light centre along -direction (one-sided: extents.z; all around: 0).
 	};
 	static_assert(sizeof(ElementData) == 64, "ElementData must match shaders/cluster_data_inc.glsl.");
 	static_assert(sizeof(ElementData) % 16 == 0, "ElementData must stay a multiple of 16 bytes.");
@@ -122,6 +122,10 @@ public:
 	// all, so the slices are spent where lights are (a floor lit from 8-30 m of a 100 m camera range
 	// gets slices 4x thinner). Call after the last add_*(); the scene shader slices with the same value.
 	float get_slice_depth() const;
+	// Adds an area light that emits all around (sphere, tube shapes) in view space: the oriented box of
+	// half extents p_extents centred on the light centre p_center (axes p_axis_x, cross(p_axis_z, p_axis_x),
+	// p_axis_z; unit, orthogonal), intersected with the sphere of radius p_radius around p_center.
+	bool add_area_light_box(const Vector3 &p_center, const Vector3 &p_axis_x, const Vector3 &p_axis_z, const Vector3 &p_extents, float p_radius);
 	// Uploads the elements and records the build dispatch (outside any list). p_type_count < ELEMENT_TYPE_MAX
 	// builds only the first types (the benchmark's "no area code" baseline; the other masks are stale).
 	void bake_cluster(uint32_t p_type_count = ELEMENT_TYPE_MAX);

@@ -128,17 +128,49 @@ bool RendererLightStorage::validate_area_size(const Vector2 &p_size) {
 	return true;
 }
 
-AABB RendererLightStorage::compute_area_light_aabb(float p_range, const Vector2 &p_size) {
+AABB RendererLightStorage::compute_area_light_aabb(float p_range, const Vector2 &p_size, RS::LightAreaShape p_shape) {
+	if (p_shape == RS::LIGHT_AREA_SHAPE_SPHERE) {
+		const real_t h = p_size.x * 0.5f + p_range;
+		return AABB(Vector3(-h, -h, -h), Vector3(h, h, h) * 2.0f);
+	}
+	if (p_shape == RS::LIGHT_AREA_SHAPE_TUBE) {
+		const real_t radius = p_size.y * 0.5f;
+		const Vector3 h(p_size.x * 0.5f + radius + p_range, radius + p_range, radius + p_range);
+		return AABB(-h, h * 2.0f);
+	}
 	const real_t half_a = p_size.x * 0.5f + p_range;
 	const real_t half_b = p_size.y * 0.5f + p_range;
 	return AABB(Vector3(-half_a, -half_b, -p_range), Vector3(half_a * 2.0f, half_b * 2.0f, p_range));
 }
 
-float RendererLightStorage::compute_area_light_cull_radius(float p_range, const Vector2 &p_size) {
-	return p_range + 0.5f * std::sqrt(p_size.x * p_size.x + p_size.y * p_size.y);
+float RendererLightStorage::compute_area_light_cull_radius(float p_range, const Vector2 &p_size, RS::LightAreaShape p_shape) {
+	switch (p_shape) {
+		case RS::LIGHT_AREA_SHAPE_DISK:
+			return p_range + 0.5f * std::fmax(p_size.x, p_size.y);
+		case RS::LIGHT_AREA_SHAPE_SPHERE:
+			return p_range + 0.5f * p_size.x;
+		case RS::LIGHT_AREA_SHAPE_TUBE:
+			return p_range + 0.5f * (p_size.x + p_size.y);
+		default:
+			return p_range + 0.5f * std::sqrt(p_size.x * p_size.x + p_size.y * p_size.y);
+	}
 }
 
-AABB RendererLightStorage::compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees, const Vector2 &p_area_size) {
+float RendererLightStorage::compute_area_light_emitting_area(const Vector2 &p_size, RS::LightAreaShape p_shape) {
+	const float pi = float(Math::PI);
+	switch (p_shape) {
+		case RS::LIGHT_AREA_SHAPE_DISK:
+			return pi * p_size.x * p_size.y * 0.25f;
+		case RS::LIGHT_AREA_SHAPE_SPHERE:
+			return pi * p_size.x * p_size.x;
+		case RS::LIGHT_AREA_SHAPE_TUBE:
+			return pi * p_size.y * (p_size.x + p_size.y);
+		default:
+			return p_size.x * p_size.y;
+	}
+}
+
+AABB RendererLightStorage::compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees, const Vector2 &p_area_size, RS::LightAreaShape p_area_shape) {
 	switch (p_type) {
 		case RS::LIGHT_DIRECTIONAL:
 			return AABB();
@@ -155,7 +187,7 @@ AABB RendererLightStorage::compute_light_aabb(RS::LightType p_type, float p_rang
 			return AABB(Vector3(-radial, -radial, -p_range), Vector3(radial * 2.0f, radial * 2.0f, p_range));
 		}
 		case RS::LIGHT_AREA:
-			return compute_area_light_aabb(p_range, p_area_size);
+			return compute_area_light_aabb(p_range, p_area_size, p_area_shape);
 	}
 	ERR_FAIL_V_MSG(AABB(), vformat("Invalid light type %d.", (int)p_type));
 }

@@ -31,13 +31,22 @@ public:
 	// Returns the local-space bound of a light: omni cube of side 2 * range, spot cone AABB
 	// (along -Z; a sphere cube when the angle is 90 degrees or more), directional empty, area
 	// compute_area_light_aabb(p_range, p_area_size).
-	static AABB compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees, const Vector2 &p_area_size = Vector2());
-	// Local-space bound of an area light (thesis Listing A.1): the rectangle a x b in the XY plane grown
-	// by the range r sideways and in front (-Z): AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)).
-	static AABB compute_area_light_aabb(float p_range, const Vector2 &p_size);
-	// Radius of the culling sphere of an area light around its centre (thesis eq. 5.1):
-	// R = r + sqrt(a^2 + b^2) / 2, the range plus half the rectangle's diagonal.
-	static float compute_area_light_cull_radius(float p_range, const Vector2 &p_size);
+	static AABB compute_light_aabb(RS::LightType p_type, float p_range, float p_spot_angle_degrees, const Vector2 &p_area_size = Vector2(), RS::LightAreaShape p_area_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE);
+	// Local-space bound of an area light (thesis Listing A.1): the shape grown by the range r. One-sided
+	// shapes (rectangle, disk: a x b in the XY plane) only in front (-Z): AABB(-(a/2 + r, b/2 + r, r),
+	// (a + 2r, b + 2r, r)). Shapes emitting all around: sphere (radius a/2) the cube of half side a/2 + r,
+	// tube (segment a along X, radius b/2) the box of half extents (a/2 + b/2 + r, b/2 + r, b/2 + r).
+	static AABB compute_area_light_aabb(float p_range, const Vector2 &p_size, RS::LightAreaShape p_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE);
+	// Radius of the culling sphere of an area light around its centre (thesis eq. 5.1): the range plus
+	// the largest distance of a point of the shape from the centre: rectangle sqrt(a^2 + b^2) / 2, disk
+	// max(a, b) / 2, sphere a / 2, tube (a + b) / 2.
+	static float compute_area_light_cull_radius(float p_range, const Vector2 &p_size, RS::LightAreaShape p_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE);
+	// Emitting area (m^2) of an area light's shape, the A of area_normalize_energy: rectangle a b, disk
+	// (ellipse of diameters a, b) pi a b / 4, sphere (diameter a) pi a^2, tube (capsule: segment a,
+	// diameter b) pi b a + pi b^2.
+	static float compute_area_light_emitting_area(const Vector2 &p_size, RS::LightAreaShape p_shape);
+	// True for shapes that emit from both sides / all around (sphere, tube): no one-sided half space.
+	static bool is_area_shape_two_sided(RS::LightAreaShape p_shape) { return p_shape == RS::LIGHT_AREA_SHAPE_SPHERE || p_shape == RS::LIGHT_AREA_SHAPE_TUBE; }
 	// Returns the parameter's enum name ("LIGHT_PARAM_RANGE"), for messages.
 	static const char *get_param_name(RS::LightParam p_param);
 
@@ -85,6 +94,8 @@ public:
 	// Area-light shadows: mode and FIXED sample grid (RS::LIGHT_AREA_SHADOW_GRID_MIN..MAX).
 	virtual void light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) = 0;
 	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
+	// Sets an area light's shape (bump the version: the bound changes).
+	virtual void light_area_set_shape(RID p_light, RS::LightAreaShape p_shape) = 0;
 
 	// Returns the type (LIGHT_DIRECTIONAL with an error for an invalid RID).
 	virtual RS::LightType light_get_type(RID p_light) const = 0;
@@ -130,6 +141,7 @@ public:
 	virtual int light_area_get_stochastic_samples(RID p_light) const = 0;
 	virtual RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
 	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
+	virtual RS::LightAreaShape light_area_get_shape(RID p_light) const = 0;
 	// Returns the local-space bound (see compute_light_aabb).
 	virtual AABB light_get_aabb(RID p_light) const = 0;
 	// Returns a counter bumped whenever culling or shadows are affected (cached shadows compare it).

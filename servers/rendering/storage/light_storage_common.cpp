@@ -319,7 +319,7 @@ RS::LightDirectionalSkyMode LightStorageCommon::light_directional_get_sky_mode(R
 AABB LightStorageCommon::light_get_aabb(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, AABB());
 	// Area lights: thesis Listing A.1 (see compute_area_light_aabb).
-	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE], light->area_size);
+	return compute_light_aabb(light->type, light->param[RS::LIGHT_PARAM_RANGE], light->param[RS::LIGHT_PARAM_SPOT_ANGLE], light->area_size, light->area_shape);
 }
 
 uint64_t LightStorageCommon::light_get_version(RID p_light) const {
@@ -355,6 +355,22 @@ void LightStorageCommon::light_area_set_shadow_grid(RID p_light, int p_grid) {
 RS::LightAreaShadowMode LightStorageCommon::light_area_get_shadow_mode(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADOW_FIXED);
 	return light->area_shadow_mode;
+}
+
+void LightStorageCommon::light_area_set_shape(RID p_light, RS::LightAreaShape p_shape) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_shape: the light is not an area light.");
+	ERR_FAIL_INDEX_MSG((int)p_shape, (int)RS::LIGHT_AREA_SHAPE_MAX, vformat("light_area_set_shape: %d is not a LightAreaShape value (0..%d); the old shape is kept.", (int)p_shape, (int)RS::LIGHT_AREA_SHAPE_MAX - 1));
+	if (light->area_shape == p_shape) {
+		return;
+	}
+	light->area_shape = p_shape;
+	light->version++; // Culling bounds and shadow sample points change.
+}
+
+RS::LightAreaShape LightStorageCommon::light_area_get_shape(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHAPE_RECTANGLE);
+	return light->area_shape;
 }
 
 int LightStorageCommon::light_area_get_shadow_grid(RID p_light) const {

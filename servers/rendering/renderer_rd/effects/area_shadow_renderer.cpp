@@ -376,7 +376,17 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		if (!light_storage->owns_light(li.light) || !light_storage->light_has_shadow(li.light)) {
 			continue;
 		}
+		// The sample points lie on a rectangle in the light's XY plane (thesis 6.1). Other shapes use the
+		// rectangle of their extent: a disk (and a sphere's disk facing -Z) the square of its area,
+		// sqrt(pi) / 2 = 0.886 of its diameters; a tube its segment by its diameter. Sphere and tube maps,
+		// like the rectangle's, cover the half space in front of the light (local -Z).
 		Vector2 size = light_storage->light_area_get_size(li.light);
+		const RS::LightAreaShape shape = light_storage->light_area_get_shape(li.light);
+		if (shape == RS::LIGHT_AREA_SHAPE_DISK) {
+			size = size * 0.8862269f;
+		} else if (shape == RS::LIGHT_AREA_SHAPE_SPHERE) {
+			size = Vector2(size.x, size.x) * 0.8862269f;
+		}
 		if (!(size.x * size.y > 0.0f)) {
 			continue; // A zero-size light emits nothing.
 		}

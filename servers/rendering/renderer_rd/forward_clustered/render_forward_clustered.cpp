@@ -111,6 +111,7 @@ void RenderForwardClustered::finalize() {
 	scene_set_cluster_buffer = RID();
 	area_versions.clear(); // Their shaders are freed by scene_shader.clear(), their sets with scene_ubo.
 	compiled_area_method_mask = 0;
+	compiled_area_shapes = false;
 	compiled_feature_mask = 0;
 	ltc_lut.finalize();
 	sky.finalize();
@@ -212,6 +213,9 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 	if (p_area_methods & AREA_VERSION_SHADOWS_PCSS) {
 		defines += "#define AREA_SHADOWS_PCSS\n";
 	}
+	if (p_area_methods & AREA_VERSION_SHAPES) {
+		defines += "#define USE_AREA_SHAPES\n";
+	}
 	return defines;
 }
 
@@ -225,6 +229,13 @@ std::vector<std::pair<String, String>> RenderForwardClustered::get_debug_scene_s
 		}
 		const String name = m < int(std::size(names)) ? String(names[m]) : vformat("method_%d", m);
 		sources.push_back({ "area_" + name + ".frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR_AREA, get_area_method_defines(1u << m)) });
+	}
+	for (int m = 0; m < RS::LIGHT_AREA_SHADING_MAX; m++) {
+		if (m == RS::LIGHT_AREA_SHADING_AUTO) {
+			continue;
+		}
+		const String name = m < int(std::size(names)) ? String(names[m]) : vformat("method_%d", m);
+		sources.push_back({ "area_" + name + "_shapes.frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR_AREA, get_area_method_defines((1u << m) | AREA_VERSION_SHAPES)) });
 	}
 	return sources;
 }
@@ -275,7 +286,7 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 }
 
 RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVariant p_variant) {
-	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS;
+	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES;
 	const uint32_t valid_bits = area_bits | SCENE_VERSION_FEATURE_BITS;
 	const bool has_area = (p_key & AREA_VERSION_METHOD_BITS) != 0;
 	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0), RID(),
@@ -292,6 +303,7 @@ RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVaria
 	if (shader.is_valid()) {
 		if (p_variant == SCENE_SHADER_COLOR_AREA) {
 			compiled_area_method_mask |= p_key & AREA_VERSION_METHOD_BITS;
+			compiled_area_shapes = compiled_area_shapes || (p_key & AREA_VERSION_SHAPES) != 0;
 		}
 		compiled_feature_mask |= p_key & SCENE_VERSION_FEATURE_BITS;
 	}
@@ -495,6 +507,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	const bool use_area = ubo.area_light_count > 0;
 	// Directional lights and sky add their own feature bits (no code, no bindings without them).
 	uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
+	if (use_area && (light_storage->get_area_shape_mask() & ~(1u << RS::LIGHT_AREA_SHAPE_RECTANGLE)) != 0) {
+		area_methods |= AREA_VERSION_SHAPES;
+	}
 	if (light_storage->get_directional_light_count() > 0) {
 		area_methods |= SCENE_VERSION_DIRECTIONAL;
 	}

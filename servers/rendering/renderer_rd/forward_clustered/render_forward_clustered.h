@@ -176,6 +176,7 @@ private:
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
 	uint32_t compiled_feature_mask = 0; // Union of the SCENE_VERSION_* feature bits compiled so far.
+	bool compiled_area_shapes = false; // Some compiled area version has AREA_VERSION_SHAPES.
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
@@ -236,6 +237,8 @@ public:
 	// Bit m (RS::LightAreaShadingMethod m) is set when a compiled area shader version contains method m's code.
 	uint32_t get_compiled_area_method_mask() const { return compiled_area_method_mask; }
 	bool is_area_method_compiled(RS::LightAreaShadingMethod p_method) const { return (compiled_area_method_mask >> uint32_t(p_method)) & 1u; }
+	// True once some compiled area version holds the disk/sphere/tube code (USE_AREA_SHAPES).
+	bool is_area_shape_code_compiled() const { return compiled_area_shapes; }
 	// Number of area shader versions (method combinations) compiled so far.
 	int get_area_shader_version_count() const;
 	// Bits of an area version key above the method bits: the area shadow lookups compiled in
@@ -243,6 +246,10 @@ public:
 	// HEURISTIC, ADAPTIVE); PCSS: some light has its PCSS_BASELINE map. Neither: no shadow code at all.
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCF = 1u << 8;
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCSS = 1u << 9;
+	// USE_AREA_SHAPES: some area light of the view is a disk, sphere or tube (area_light_shapes_inc.glsl);
+	// a view of rectangles only compiles no shape code.
+	static constexpr uint32_t AREA_VERSION_SHAPES = 1u << 15; // Below bit 16: the pipeline key keeps 16 bits of the version key.
+	static_assert(AREA_VERSION_SHAPES <= 0xFFFFu, "_get_pipeline() keys pipelines by the low 16 bits of the version key.");
 	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
 	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with

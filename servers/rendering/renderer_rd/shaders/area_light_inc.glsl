@@ -12,6 +12,9 @@
 /*   AREA_METHOD_LTC_POLYNOMIAL  area_light_ltc_inc.glsl (polynomial)     */
 /*   AREA_METHOD_MRP             area_light_mrp_inc.glsl (thesis 5.3)     */
 /*   AREA_METHOD_STOCHASTIC      area_light_mc_inc.glsl (thesis 5.2)      */
+/*   USE_AREA_SHAPES             area_light_shapes_inc.glsl: disk, sphere */
+/*                               and tube lights (only when a view has    */
+/*                               one; rectangles need none of it)         */
 /* area_light_ltc_inc.glsl is always included: it also holds the range    */
 /* window W(d) of the contract (area_light_range_window) that every       */
 /* method applies once per shading point, outside the integral.           */
@@ -38,6 +41,11 @@ uint area_light_get_method(AreaLightData p_light) {
 
 uint area_light_get_stochastic_samples(AreaLightData p_light) {
 	return clamp((p_light.shading_method >> 8u) & 0xFFFFu, 1u, 256u);
+}
+
+// Bits 24-31: AREA_SHAPE_* (RendererRD::LightStorage::AREA_METHOD_SHAPE_SHIFT).
+uint area_light_get_shape(AreaLightData p_light) {
+	return p_light.shading_method >> 24u;
 }
 
 // Orthonormal frame of the rectangle: unit axes and half extents (metres). False for a zero-size light.
@@ -170,6 +178,9 @@ float area_light_solid_angle(AreaLightData p_light, vec3 p_vertex, vec3 p_x, vec
 #ifdef AREA_METHOD_STOCHASTIC
 #include "area_light_mc_inc.glsl"
 #endif
+#ifdef USE_AREA_SHAPES
+#include "area_light_shapes_inc.glsl"
+#endif
 
 #ifndef AREA_LIGHT_DISPATCH_GLSL
 #define AREA_LIGHT_DISPATCH_GLSL
@@ -180,6 +191,12 @@ float area_light_solid_angle(AreaLightData p_light, vec3 p_vertex, vec3 p_x, vec
 // (the renderer always compiles the methods of every uploaded light).
 void light_process_area_method(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, uint p_diffuse_mode, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
 	uint method = area_light_get_method(p_light);
+#ifdef USE_AREA_SHAPES
+	if (area_light_get_shape(p_light) != AREA_SHAPE_RECTANGLE) {
+		light_process_area_shape(p_light, method, p_vertex, N, V, p_diffuse_mode, p_roughness, p_f0, p_f90, p_specular_enabled, r_diffuse, r_specular);
+		return;
+	}
+#endif
 #ifdef AREA_METHOD_LTC
 	if (method == AREA_SHADING_LTC) {
 		light_process_area_ltc(p_light, p_vertex, N, V, p_roughness, p_f0, p_f90, p_specular_enabled, false, r_diffuse, r_specular);

@@ -185,8 +185,9 @@ void main() {
 		float radius = e.radius * (1.0 + CLUSTER_ELEMENT_MARGIN);
 		vec3 sphere_center = e.position;
 		if (cluster_get_bound_type(type) == CLUSTER_BOUND_BOX) {
-			// Area light: the box centre sits r / 2 in front of the light; the sphere (eq. 5.1) is centred on the light.
-			sphere_center -= e.direction * e.extents.z;
+			// Area light: a one-sided light's box centre sits r / 2 in front of it (sphere_offset = extents.z), a
+			// sphere or tube light's box is centred on it (0); the sphere (eq. 5.1) is centred on the light.
+			sphere_center -= e.direction * e.sphere_offset;
 		}
 		bool hit = test_sphere(box_min, box_max, sphere_center, radius);
 		if (hit && cluster_get_bound_type(type) == CLUSTER_BOUND_CONE) {

@@ -62,7 +62,7 @@ struct ClusterElementData { // 64 bytes, std430. Mirror: ClusterBuilderRD::Eleme
 	vec3 extents; // 32: box half sizes along axis_x, cross(direction, axis_x), direction (metres).
 	float cone_sin; // 44: sine of the cone half angle.
 	vec3 axis_x; // 48: box unit axis x, view space.
-	float pad0; // 60
+	float sphere_offset; // 60: box: from position back to the light centre along -direction (one-sided lights: extents.z; all around: 0).
 };
 
 // Index of the first mask word of cluster (p_tile, p_slice) for element type p_type.

@@ -41,16 +41,22 @@ struct LightData { // Byte offsets (std430).
 #define AREA_SHADING_MRP 2u
 #define AREA_SHADING_STOCHASTIC 3u
 
+// Must match RS::LightAreaShape (bits 24-31 of AreaLightData::shading_method).
+#define AREA_SHAPE_RECTANGLE 0u
+#define AREA_SHAPE_DISK 1u
+#define AREA_SHAPE_SPHERE 2u
+#define AREA_SHAPE_TUBE 3u
+
 struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	vec3 position; // 0: view space centre of the rectangle, metres.
 	float inv_radius; // 12: 1 / area_range (1/m); range = max distance from any point of the rectangle.
-	vec3 half_axis_x; // 16: view space, local +X scaled by area_size.x / 2 (metres).
+	vec3 half_axis_x; // 16: view space, local +X scaled by area_size.x / 2 (metres); disk: semi-axis; tube: half the segment; sphere: local +X * radius.
 	float attenuation; // 28: area_attenuation, distance exponent a of W(d) = window * d^(2 - a) (2 = physical).
-	vec3 half_axis_y; // 32: view space, local +Y scaled by area_size.y / 2 (metres).
+	vec3 half_axis_y; // 32: view space, local +Y scaled by area_size.y / 2 (metres); disk: semi-axis; tube: local +Y * radius; sphere: local +Y * radius.
 	float specular_amount; // 44: "light_specular" multiplier of the specular lobe.
 	vec3 normal; // 48: view space unit emission direction (the light's local -Z); only this side emits.
-	uint shading_method; // 60: bits 0-7 AREA_SHADING_*, bits 8-23 stochastic samples (area_light_get_method()).
-	vec3 color; // 64: emitted radiance L_e = linear colour * energy * pi / A_n (A_n = a b when energy is normalised, else 1); 0 for a zero-size light.
+	uint shading_method; // 60: bits 0-7 AREA_SHADING_*, bits 8-23 stochastic samples, bits 24-31 AREA_SHAPE_* (area_light_get_method()).
+	vec3 color; // 64: emitted radiance L_e = linear colour * energy * pi / A_n (A_n = the shape's emitting area when energy is normalised, else 1); 0 for a zero-size light.
 	uint cull_mask; // 76: "light_cull_mask" render layers.
 };
 

@@ -124,9 +124,10 @@ bool LightStorage::fill_area_light_data(RID p_light, const Transform3D &p_world_
 	ERR_FAIL_COND_V_MSG(light->type != RS::LIGHT_AREA, false, "LightStorage::fill_area_light_data: the light is not an area light.");
 
 	Transform3D view_from_light = p_view_from_world * p_world_from_light;
+	const RS::LightAreaShape shape = light->area_shape;
 	const float a = light->area_size.x;
 	const float b = light->area_size.y;
-	// Half axes keep the node's scale out: the rectangle is area_size in metres, only the rotation of
+	// Half axes keep the node's scale out: the shape is area_size in metres, only the rotation of
 	// the transform orients it (as Godot ignores scale for light ranges).
 	Vector3 axis_x = view_from_light.basis.xform(Vector3(1, 0, 0)).normalized();
 	Vector3 axis_y = view_from_light.basis.xform(Vector3(0, 1, 0)).normalized();
@@ -136,14 +137,16 @@ bool LightStorage::fill_area_light_data(RID p_light, const Transform3D &p_world_
 		axis_y = Vector3(0, 1, 0);
 		normal = Vector3(0, 0, -1);
 	}
+	// Per shape (AreaLightData): rectangle and disk the half sizes; sphere the radius a / 2 on both axes;
+	// tube half the segment (a / 2) and the radius (b / 2).
 	Vector3 hx = axis_x * (a * 0.5f);
-	Vector3 hy = axis_y * (b * 0.5f);
+	Vector3 hy = axis_y * (shape == RS::LIGHT_AREA_SHAPE_SPHERE ? a * 0.5f : b * 0.5f);
 	float range = std::fmax(light->param[RS::LIGHT_PARAM_RANGE], 1e-4f);
 
 	// Unit conversion (the contract): L_e = srgb_to_linear(colour) * energy * pi / A_n,
-	// A_n = a * b when normalised, else 1; a * b == 0 emits exactly nothing.
+	// A_n = the shape's emitting area when normalised, else 1; a zero area emits exactly nothing.
 	Color linear = light->color.srgb_to_linear();
-	float area = a * b;
+	float area = compute_area_light_emitting_area(light->area_size, shape);
 	float radiance = 0.0f;
 	if (area > 0.0f && std::isfinite(area)) {
 		float a_n = light->area_normalize_energy ? area : 1.0f;
@@ -161,7 +164,7 @@ bool LightStorage::fill_area_light_data(RID p_light, const Transform3D &p_world_
 	r_data.inv_radius = 1.0f / range;
 	r_data.attenuation = light->param[RS::LIGHT_PARAM_ATTENUATION];
 	r_data.specular_amount = light->param[RS::LIGHT_PARAM_SPECULAR];
-	r_data.shading_method = pack_area_shading_method(light->area_shading_method, light->area_stochastic_samples);
+	r_data.shading_method = pack_area_shading_method(light->area_shading_method, light->area_stochastic_samples, shape);
 	r_data.color[0] = linear.r * radiance;
 	r_data.color[1] = linear.g * radiance;
 	r_data.color[2] = linear.b * radiance;
@@ -220,7 +223,7 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 				choice.size_over_distance = est.size_over_distance;
 				choice.roughness = est.roughness;
 				choice.predicted_error = AreaMethodSelector::predict_error(choice.method, est.size_over_distance, est.roughness, light->area_stochastic_samples);
-				s.data.shading_method = pack_area_shading_method(choice.method, light->area_stochastic_samples);
+				s.data.shading_method = pack_area_shading_method(choice.method, light->area_stochastic_samples, light->area_shape);
 			}
 			Vector3 p(s.data.position[0], s.data.position[1], s.data.position[2]);
 			s.distance_sq = p.length_squared();
@@ -289,6 +292,7 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	area_source_indices.clear();
 	area_auto_choices.clear();
 	area_shading_method_mask = 0;
+	area_shape_mask = 0;
 	auto_geometry = nullptr; // Consumed: valid for this update only.
 	auto_mesh_storage = nullptr;
 	auto_material_storage = nullptr;
@@ -297,7 +301,26 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 		area_source_indices.push_back(s.index);
 		area_auto_choices.push_back(auto_choices[s.index]);
 		area_shading_method_mask |= 1u << (s.data.shading_method & AREA_METHOD_MASK);
-		if (p_cluster_builder) {
+		const RS::LightAreaShape shape = unpack_area_shape(s.data.shading_method);
+		area_shape_mask |= 1u << uint32_t(shape);
+		if (p_cluster_builder && is_area_shape_two_sided(shape)) {
+			// Sphere and tube emit all around: a box centred on the light, grown by the range on every side
+			// (sphere: radius |half_axis_x|; tube: segment half_axis_x, radius |half_axis_y|).
+			const AreaLightData &d = s.data;
+			const Vector3 hx(d.half_axis_x[0], d.half_axis_x[1], d.half_axis_x[2]);
+			const Vector3 hy(d.half_axis_y[0], d.half_axis_y[1], d.half_axis_y[2]);
+			const Vector3 n(d.normal[0], d.normal[1], d.normal[2]);
+			Vector3 ax = hy.cross(n).normalized(); // Local X, also for a zero-length segment.
+			if (ax == Vector3()) {
+				ax = std::fabs(n.x) < 0.9f ? Vector3(1, 0, 0) : Vector3(0, 1, 0);
+				ax = (ax - n * n.dot(ax)).normalized();
+			}
+			const bool sphere = shape == RS::LIGHT_AREA_SHAPE_SPHERE;
+			const float radius = sphere ? hx.length() : hy.length();
+			const float half_length = sphere ? 0.0f : hx.length();
+			const Vector3 ext(half_length + radius + s.range, radius + s.range, radius + s.range);
+			p_cluster_builder->add_area_light_box(Vector3(d.position[0], d.position[1], d.position[2]), ax, n, ext, s.range + half_length + radius);
+		} else if (p_cluster_builder) {
 			const AreaLightData &d = s.data;
 			p_cluster_builder->add_area_light(Vector3(d.position[0], d.position[1], d.position[2]), Vector3(d.half_axis_x[0], d.half_axis_x[1], d.half_axis_x[2]),
 					Vector3(d.half_axis_y[0], d.half_axis_y[1], d.half_axis_y[2]), Vector3(d.normal[0], d.normal[1], d.normal[2]), s.range);

@@ -66,25 +66,28 @@ public:
 	struct AreaLightData {
 		float position[3]; // View space centre, metres.
 		float inv_radius; // 1 / area_range.
-		float half_axis_x[3]; // View space local +X * size.x / 2.
+		float half_axis_x[3]; // View space local +X * size.x / 2 (rectangle, disk, tube: half the segment; sphere: local +X * radius).
 		float attenuation; // area_attenuation: distance exponent (2 = physical).
-		float half_axis_y[3]; // View space local +Y * size.y / 2.
+		float half_axis_y[3]; // View space local +Y * size.y / 2 (rectangle, disk, tube: its radius; sphere: local +Y * radius).
 		float specular_amount; // LIGHT_PARAM_SPECULAR.
 		float normal[3]; // View space unit emission direction (local -Z).
-		uint32_t shading_method; // Bits 0-7: RS::LightAreaShadingMethod; bits 8-23: stochastic samples (AREA_METHOD_SAMPLES_SHIFT).
-		float color[3]; // L_e = srgb_to_linear(color) * energy * pi / A_n, negated for negative lights; 0 when size.x * size.y == 0.
+		uint32_t shading_method; // Bits 0-7: RS::LightAreaShadingMethod; bits 8-23: stochastic samples; bits 24-31: RS::LightAreaShape.
+		float color[3]; // L_e = srgb_to_linear(color) * energy * pi / A_n, negated for negative lights; 0 when the emitting area is 0.
 		uint32_t cull_mask; // light_cull_mask.
 	};
 	static_assert(sizeof(AreaLightData) == 80, "AreaLightData must match shaders/light_data_inc.glsl (80 bytes).");
 	static_assert(sizeof(AreaLightData) % 16 == 0, "AreaLightData must stay a multiple of 16 bytes (std430 array stride).");
 
-	// AreaLightData::shading_method packs the method (low 8 bits) and the stochastic sample count, so the
-	// 80-byte layout stays as it is. Must match area_light_get_method()/_samples() in shaders/area_light_inc.glsl.
+	// AreaLightData::shading_method packs the method (low 8 bits), the stochastic sample count (bits 8-23)
+	// and the shape (bits 24-31), so the 80-byte layout stays as it is. Must match area_light_get_method(),
+	// _stochastic_samples() and _shape() in shaders/area_light_inc.glsl.
 	static constexpr uint32_t AREA_METHOD_MASK = 0xFFu;
 	static constexpr uint32_t AREA_METHOD_SAMPLES_SHIFT = 8;
-	static uint32_t pack_area_shading_method(RS::LightAreaShadingMethod p_method, int p_samples) {
-		return (uint32_t(p_method) & AREA_METHOD_MASK) | ((uint32_t(p_samples) & 0xFFFFu) << AREA_METHOD_SAMPLES_SHIFT);
+	static constexpr uint32_t AREA_METHOD_SHAPE_SHIFT = 24;
+	static uint32_t pack_area_shading_method(RS::LightAreaShadingMethod p_method, int p_samples, RS::LightAreaShape p_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE) {
+		return (uint32_t(p_method) & AREA_METHOD_MASK) | ((uint32_t(p_samples) & 0xFFFFu) << AREA_METHOD_SAMPLES_SHIFT) | ((uint32_t(p_shape) & 0xFFu) << AREA_METHOD_SHAPE_SHIFT);
 	}
+	static RS::LightAreaShape unpack_area_shape(uint32_t p_packed) { return RS::LightAreaShape(p_packed >> AREA_METHOD_SHAPE_SHIFT); }
 
 	// One directional light as the scene shader reads it (std140 array element). Mirror of struct
 	// DirectionalLightData in shaders/light_data_inc.glsl: same names, same order, 48 bytes.
@@ -133,6 +136,7 @@ private:
 	uint32_t dropped_light_count = 0; // Visible lights of the last update not drawn (over max_lights).
 	uint32_t warned_dropped_count = 0; // The count last warned about (a steady overflow warns once).
 	uint32_t area_shading_method_mask = 0; // Bit m set: an uploaded area light uses RS::LightAreaShadingMethod m.
+	uint32_t area_shape_mask = 0; // Bit s set: an uploaded area light has RS::LightAreaShape s.
 	std::vector<LightData> omni_data;
 	std::vector<LightData> spot_data;
 	std::vector<AreaLightData> area_data;
@@ -191,6 +195,9 @@ public:
 	// Bit m is set when an area light of the last update_light_buffers() uses RS::LightAreaShadingMethod m
 	// (the renderer compiles only these methods). 0 without area lights.
 	uint32_t get_area_shading_method_mask() const { return area_shading_method_mask; }
+	// Bit s is set when an area light of the last update_light_buffers() has RS::LightAreaShape s (the
+	// renderer compiles the shape code only when some bit other than RECTANGLE's is set). 0 without area lights.
+	uint32_t get_area_shape_mask() const { return area_shape_mask; }
 	uint32_t get_max_lights() const { return max_lights; }
 	// Visible lights (all types) of the last update_light_buffers() beyond the capacity, so not drawn.
 	uint32_t get_dropped_light_count() const { return dropped_light_count; }
