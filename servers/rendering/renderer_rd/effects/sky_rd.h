@@ -63,8 +63,9 @@ public:
 		uint32_t sample_count;
 	};
 	static constexpr int MAX_RADIANCE_MIPS = 8; // Godot's roughness_layers default.
-	// GGX samples per texel for mip p_mip (> 0): more for rougher mips, whose lobes are wider.
-	static uint32_t get_radiance_sample_count(int p_mip) { return p_mip <= 0 ? 1u : std::min(256u, 32u << (p_mip - 1)); }
+	// GGX samples per texel for mip p_mip (> 0): 8 at mip 1 (a lobe about a texel wide), doubling per mip up
+	// to 64 (the rough mips have few texels; their wide lobes over a smooth sky need no more on this test).
+	static uint32_t get_radiance_sample_count(int p_mip) { return p_mip <= 0 ? 1u : std::min(64u, 8u << (p_mip - 1)); }
 	// Perceptual roughness a mip is filtered for (see above).
 	static float get_mip_roughness(int p_mip, int p_mips) {
 		const float t = p_mips > 1 ? float(p_mip) / float(p_mips - 1) : 0.0f;
