@@ -37,6 +37,15 @@ uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, ui
 	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20) | (w << 24);
 }
 
+RS::AreaShadowFilter AreaShadowRendererRD::get_project_filter() {
+	const int v = int(GLOBAL_DEF(SETTING_FILTER, int(RS::AREA_SHADOW_FILTER_PENUMBRA)).to_int());
+	if (v < 0 || v >= int(RS::AREA_SHADOW_FILTER_MAX)) {
+		ERR_PRINT(vformat("%s must be 0 (PCF) or 1 (PENUMBRA); got %d. Using 1.", SETTING_FILTER, v));
+		return RS::AREA_SHADOW_FILTER_PENUMBRA;
+	}
+	return RS::AreaShadowFilter(v);
+}
+
 bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, uint32_t p_max_lights) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "AreaShadowRendererRD::initialize() needs an initialized RenderingDevice.");
@@ -47,6 +56,7 @@ bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage,
 	light_storage = p_light_storage;
 	mesh_storage = p_mesh_storage;
 	max_lights = std::max(p_max_lights, 1u);
+	sample_filter = get_project_filter() == RS::AREA_SHADOW_FILTER_PENUMBRA;
 	// Project settings for the default atlas (per-viewport sizes come from RS::area_shadow_atlas_set_size).
 	// Invalid values are reported by set_atlas_size() and the built-in defaults stay.
 	{

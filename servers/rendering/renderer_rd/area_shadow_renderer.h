@@ -212,7 +212,11 @@ public:
 	// Per-sample penumbra filter (default on): each map's lookup is filtered over the penumbra of the light
 	// cell its sample point stands for (shaders/area_light_shadow_inc.glsl, area_shadow_sample_filtered()).
 	// Off: the fixed-size PCF of shadow_blur (thesis 6.1 as written), for comparisons.
+	// RS::area_shadow_filter_set_mode(); initialize() starts from the project setting SETTING_FILTER.
 	void set_sample_penumbra_filter(bool p_enable) { sample_filter = p_enable; }
+	static constexpr const char *SETTING_FILTER = "rendering/lights_and_shadows/area_shadow_filter";
+	// SETTING_FILTER as an RS::AreaShadowFilter (default PENUMBRA; bad values print an error and use it).
+	static RS::AreaShadowFilter get_project_filter();
 	bool is_sample_penumbra_filter_enabled() const { return sample_filter; }
 
 	RID get_data_buffer() const { return data_buffer; }
