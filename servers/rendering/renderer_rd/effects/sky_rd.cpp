@@ -151,7 +151,9 @@ bool SkyRD::prepare(const RenderSceneData &p_data, const RendererLightStorage *p
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	model = SkyModel::from_scene_data(p_data, p_light_storage);
 	const uint64_t model_key = model.get_hash();
-	const uint64_t hash = model_key ^ (uint64_t(*reinterpret_cast<const uint32_t *>(&env.ambient_sky_contribution)) * 0x9E3779B97F4A7C15ULL);
+	uint32_t contribution_bits = 0;
+	memcpy(&contribution_bits, &env.ambient_sky_contribution, sizeof(contribution_bits));
+	const uint64_t hash = model_key ^ (uint64_t(contribution_bits) * 0x9E3779B97F4A7C15ULL);
 	if (frame_ambient && (!model_valid || hash != model_hash)) {
 		// The sky changed (or the first frame with sky ambient): project once, upload once.
 		model.compute_irradiance_sh(sh);
