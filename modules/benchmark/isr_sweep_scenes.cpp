@@ -5,6 +5,7 @@
 #include "modules/benchmark/isr_sweep_scenes.h"
 
 #include "core/math/math_funcs.h"
+#include "scene/resources/primitive_meshes.h"
 #include "servers/rendering_server.h"
 
 // Appends a quad centred at p_center with half axes p_u, p_v; its front (normal p_u x p_v) is clockwise
@@ -23,16 +24,13 @@ static void _isr_add_quad(RS::SurfaceData &r_s, const Vector3 &p_center, const V
 	}
 }
 
-// A closed box (outward faces) of half extents p_half centred at p_center.
+// A closed box (outward faces) of half extents p_half centred at p_center (BoxMesh's arrays, moved).
 static RS::SurfaceData _isr_box(const Vector3 &p_center, const Vector3 &p_half) {
 	RS::SurfaceData s;
-	const Vector3 x(p_half.x, 0, 0), y(0, p_half.y, 0), z(0, 0, p_half.z);
-	_isr_add_quad(s, p_center + y, z, x); // +Y.
-	_isr_add_quad(s, p_center - y, x, z); // -Y.
-	_isr_add_quad(s, p_center + x, y, z); // +X.
-	_isr_add_quad(s, p_center - x, z, y); // -X.
-	_isr_add_quad(s, p_center + z, x, y); // +Z.
-	_isr_add_quad(s, p_center - z, y, x); // -Z.
+	BoxMesh::create_box_arrays(s, p_half * 2, 0, 0, 0);
+	for (Vector3 &v : s.vertices) {
+		v += p_center;
+	}
 	return s;
 }
 

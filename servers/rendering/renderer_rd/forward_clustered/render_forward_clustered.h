@@ -49,7 +49,7 @@
 #pragma once
 
 #include "core/templates/rid_owner.h"
-#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/directional_shadow_rd.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"

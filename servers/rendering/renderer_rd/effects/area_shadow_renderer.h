@@ -9,7 +9,7 @@
 /* shaders/area_light_shadow_inc.glsl where each light's maps are.        */
 /*                                                                        */
 /* Tile sharing, dirty tracking and the per-frame draw cap live in the    */
-/* GPU-free AreaShadowAtlas (storage_rd/area_shadow_atlas.h).             */
+/* GPU-free AreaShadowAtlas (area_lights/area_shadow_atlas.h).             */
 /* Mapping of one map: four perspective octant views in the four          */
 /* quadrants of a tile (shaders/area_shadow_octant_inc.glsl; the choice   */
 /* is measured in doc/shadows.md).                                        */
@@ -26,9 +26,9 @@
 
 #pragma once
 
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_scene_render.h"
 
 #include <map>
