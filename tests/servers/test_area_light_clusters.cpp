@@ -91,7 +91,7 @@ struct ClusterSetup {
 		float py = (ndc.y * 0.5f + 0.5f) * height;
 		r_tx = std::min(uint32_t(px) / ClusterBuilderRD::TILE_SIZE, builder.get_tiles_x() - 1);
 		r_ty = std::min(uint32_t(py) / ClusterBuilderRD::TILE_SIZE, builder.get_tiles_y() - 1);
-		r_slice = std::min(uint32_t(depth / z_far * ClusterBuilderRD::Z_SLICES), ClusterBuilderRD::Z_SLICES - 1);
+		r_slice = std::min(uint32_t(depth / builder.get_slice_depth() * ClusterBuilderRD::Z_SLICES), ClusterBuilderRD::Z_SLICES - 1);
 		return true;
 	}
 	uint32_t count(ClusterBuilderRD::ElementType p_type, uint32_t p_index) const {

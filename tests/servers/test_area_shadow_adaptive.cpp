@@ -247,6 +247,27 @@ TEST_CASE("[AreaShadowAdaptive] quadtree tiles come from the atlas and the grid 
 
 namespace TestAreaShadowAdaptive {
 
+TEST_CASE("[AreaShadowAdaptive] heuristic grid from the casters: an occluder near the light needs more maps than one near the floor") {
+	RenderSceneData data;
+	data.fovy_degrees = 60.0f;
+	data.viewport_height = 720;
+	// A 1 x 0.5 m light 1.5 m above a floor, facing down (local -Z = world -Y), range 3 m.
+	const Transform3D light(Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f), Vector3(0, 1.5f, 0));
+	const AABB box(Vector3(-3.5f, -1.5f, -3.5f), Vector3(7.0f, 3.0f, 7.0f));
+	const AABB floor(Vector3(-8, 0, -8), Vector3(16, 0, 16));
+	data.cam_transform = Transform3D(Basis(), Vector3(0.0f, 1.0f, 40.0f)); // Far enough that the penumbra decides.
+	const uint32_t conservative = AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 0.5f), 3.0f, data, light, {});
+	const uint32_t floor_only = AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 0.5f), 3.0f, data, light, { floor });
+	const uint32_t low_box = AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 0.5f), 3.0f, data, light, { floor, AABB(Vector3(-0.25f, 0.0f, -0.25f), Vector3(0.5f, 0.2f, 0.5f)) });
+	const uint32_t high_box = AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 0.5f), 3.0f, data, light, { floor, AABB(Vector3(-0.25f, 1.0f, -0.25f), Vector3(0.5f, 0.2f, 0.5f)) });
+	MESSAGE("grids: no casters ", conservative, ", floor only ", floor_only, ", box on the floor ", low_box, ", box under the light ", high_box);
+	CHECK(floor_only == 2); // Nothing between the light and the floor: no penumbra to resolve.
+	CHECK(low_box <= high_box); // A wider penumbra (occluder near the light) never needs fewer maps ...
+	CHECK(low_box < conservative); // ... and a box on the floor needs fewer than the conservative guess.
+	const AABB behind(Vector3(-1, 2.0f, -1), Vector3(2, 1, 2)); // Above the light (behind its emitting side).
+	CHECK(AreaShadowAdaptiveRD::compute_heuristic_grid(box, Vector2(1, 0.5f), 3.0f, data, light, { floor, behind }) == floor_only);
+}
+
 TEST_CASE("[AreaShadowAdaptive] heuristic grid from the camera, with the project's max depth") {
 	RenderSceneData data;
 	data.fovy_degrees = 60.0f;

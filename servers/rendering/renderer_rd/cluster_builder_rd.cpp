@@ -109,6 +109,7 @@ bool ClusterBuilderRD::setup(uint32_t p_width, uint32_t p_height) {
 void ClusterBuilderRD::begin(const Projection &p_clip_from_view, float p_z_far) {
 	clip_from_view = p_clip_from_view;
 	z_far = p_z_far > 0.0f && std::isfinite(p_z_far) ? p_z_far : 1.0f;
+	element_depth_max = 0.0f;
 	for (uint32_t i = 0; i < ELEMENT_TYPE_MAX; i++) {
 		element_count[i] = 0;
 	}
@@ -133,6 +134,7 @@ bool ClusterBuilderRD::add_light(ElementType p_type, const Vector3 &p_position, 
 	float half_angle = std::fmin(std::fmax(p_spot_half_angle, 0.0f), float(Math::PI));
 	e.cone_cos = std::cos(half_angle);
 	e.cone_sin = std::sin(half_angle);
+	element_depth_max = std::fmax(element_depth_max, -p_position.z + e.radius);
 	element_count[p_type]++;
 	return true;
 }
@@ -166,8 +168,21 @@ bool ClusterBuilderRD::add_area_light(const Vector3 &p_center, const Vector3 &p_
 	e.radius = r + std::sqrt(half_a * half_a + half_b * half_b); // Thesis eq. 5.1.
 	e.cone_cos = 1.0f;
 	e.cone_sin = 0.0f;
+	// The eq. 5.1 sphere is centred on the rectangle (the box centre minus direction * extents.z).
+	element_depth_max = std::fmax(element_depth_max, -p_center.z + e.radius);
 	element_count[ELEMENT_TYPE_AREA_LIGHT]++;
 	return true;
+}
+
+float ClusterBuilderRD::get_slice_depth() const {
+	uint32_t elements_total = 0;
+	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
+		elements_total += element_count[t];
+	}
+	if (elements_total == 0 || !std::isfinite(element_depth_max)) {
+		return z_far;
+	}
+	return std::fmin(z_far, std::fmax(element_depth_max * 1.001f + 1e-4f, 1e-3f));
 }
 
 void ClusterBuilderRD::bake_cluster(uint32_t p_type_count) {
@@ -186,7 +201,7 @@ void ClusterBuilderRD::bake_cluster(uint32_t p_type_count) {
 	clip_from_view.inverse().to_floats(pc.view_from_clip);
 	pc.screen_size[0] = float(width);
 	pc.screen_size[1] = float(height);
-	pc.z_far = z_far;
+	pc.z_far = get_slice_depth();
 	pc.words_per_type = get_words_per_type();
 	pc.tiles_x = tiles_x;
 	pc.tiles_y = tiles_y;

@@ -426,9 +426,15 @@ AreaShadowQuadtree::HeuristicResult AreaShadowQuadtree::estimate_heuristic(const
 	if (light <= 0.0f) {
 		return res;
 	}
-	// Penumbra width on the receiver (similar triangles), occluder between the light and the receiver.
+	// Penumbra width on the receiver (similar triangles), occluder between the light and the receiver:
+	// the casters' distances when known, else the conservative fraction of the range.
 	float occluder = std::min(std::max(in.occluder_fraction, 1e-3f), 1.0f) * range;
-	float penumbra = light * (range - occluder) / occluder;
+	float receiver = range;
+	if (in.occluder_distance > 0.0f && in.receiver_distance > 0.0f && std::isfinite(in.occluder_distance) && std::isfinite(in.receiver_distance)) {
+		receiver = std::min(in.receiver_distance, range);
+		occluder = std::min(std::max(in.occluder_distance, 1e-3f * range), receiver);
+	}
+	float penumbra = light * (receiver - occluder) / occluder;
 	penumbra = std::min(penumbra, light + 2.0f * range); // Never wider than the lit range box.
 	// Pixel footprint at the camera distance.
 	float cam = std::max(in.camera_distance, std::max(in.min_camera_distance, 1e-3f));

@@ -92,6 +92,10 @@ public:
 		float viewport_height = 1080.0f; // Pixels.
 		float target_step_px = 1.5f; // Largest acceptable banding step on screen.
 		float occluder_fraction = 0.25f; // Conservative occluder distance, as a fraction of the range.
+		// Measured from the light's casters along its normal (metres; 0 = unknown: occluder_fraction *
+		// range and the range): the nearest caster point and the farthest receiver point in range.
+		float occluder_distance = 0.0f;
+		float receiver_distance = 0.0f;
 		float min_camera_distance = 0.1f; // Clamp (camera inside the box).
 		uint32_t max_depth = DEFAULT_MAX_DEPTH;
 	};

@@ -8,6 +8,7 @@
 #include "core/error/error_macros.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <set>
@@ -42,7 +43,7 @@ float AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction() {
 	return float(v);
 }
 
-uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data) {
+uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light, const std::vector<AABB> &p_casters) {
 	AreaShadowQuadtree::HeuristicInput in;
 	in.light_size = p_size;
 	in.range = p_range;
@@ -59,6 +60,28 @@ uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, c
 	in.viewport_height = p_data.viewport_height > 0 ? float(p_data.viewport_height) : 1080.0f;
 	in.max_depth = get_project_max_depth();
 	in.occluder_fraction = get_project_heuristic_occluder_fraction();
+	// Each caster's extent along the light's normal: its nearest point can occlude, its farthest can
+	// receive. Casters behind the light plane or beyond the range do neither.
+	const Vector3 normal = -p_world_from_light.basis.get_column(2).normalized();
+	const Vector3 origin = p_world_from_light.origin;
+	float nearest = FLT_MAX, farthest = 0.0f;
+	for (const AABB &b : p_casters) {
+		float lo = FLT_MAX, hi = -FLT_MAX;
+		for (int c = 0; c < 8; c++) {
+			const float t = (b.get_endpoint(c) - origin).dot(normal);
+			lo = std::min(lo, t);
+			hi = std::max(hi, t);
+		}
+		if (hi <= 0.0f || lo >= p_range) {
+			continue;
+		}
+		nearest = std::min(nearest, std::max(lo, 0.0f));
+		farthest = std::max(farthest, std::min(hi, p_range));
+	}
+	if (nearest <= farthest && farthest > 0.0f) { // Equal: no occluder in front of any receiver.
+		in.occluder_distance = std::max(nearest, 1e-3f);
+		in.receiver_distance = farthest;
+	}
 	return AreaShadowQuadtree::estimate_heuristic(in).grid;
 }
 

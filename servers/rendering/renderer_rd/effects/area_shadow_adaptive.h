@@ -304,8 +304,10 @@ public:
 	static float get_project_heuristic_occluder_fraction();
 	// HEURISTIC (thesis 6.5): the grid (2, 3, 5 or 9) for an area light of p_size and p_range whose
 	// world range box is p_world_box, seen by p_data's camera (distance to the box, fovy, viewport
-	// height), up to get_project_max_depth().
-	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data);
+	// height), up to get_project_max_depth(). p_casters (world AABBs of the light's casters, may be
+	// empty) give the occluder and receiver distances along the light's normal (-Z of
+	// p_world_from_light); without them the project's occluder fraction of the range is assumed.
+	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light = Transform3D(), const std::vector<AABB> &p_casters = {});
 
 	// True once a dispatch with work compiled the reprojection shader.
 	bool is_reprojection_compiled() const { return reprojection_shader.is_variant_created(0); }

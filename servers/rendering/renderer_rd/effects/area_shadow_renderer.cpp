@@ -417,7 +417,11 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		} else {
 			uint32_t grid = mode == RS::LIGHT_AREA_SHADOW_PCSS_BASELINE ? 1 : uint32_t(light_storage->light_area_get_shadow_grid(li.light));
 			if (mode == RS::LIGHT_AREA_SHADOW_HEURISTIC) {
-				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data); // Thesis 6.5 estimate.
+				std::vector<AABB> casters;
+				for (const RenderSceneData::GeometryInstance *gi : lf.casters) {
+					casters.push_back(gi->aabb);
+				}
+				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data, lf.world_from_light, casters); // Thesis 6.5 estimate.
 			}
 			_hash_bytes(hash, &grid, sizeof(grid));
 			float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);

@@ -469,7 +469,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.viewport_size[0] = float(rt->width);
 	ubo.viewport_size[1] = float(rt->height);
 	ubo.z_near = p_data.z_near;
-	ubo.z_far = z_far;
+	ubo.z_far = cluster_builder.get_slice_depth(); // The depth the cluster slices cover (<= z_far).
 	const RenderSceneData::EnvironmentData &env = p_data.environment;
 	Color ambient = env.ambient_color.srgb_to_linear();
 	// Sky ambient: the colour part keeps (1 - ambient_light_sky_contribution), the sky part is the SH (SkyRD).

@@ -18,30 +18,32 @@
 /* is a few % at grazing angles and roughness 1, as Godot's own Burley vs */
 /* Lambert).                                                               */
 /*                                                                        */
-/* Horizon: the polygon is CLIPPED to the upper hemisphere z >= 0 of the  */
-/* cosine space (Sutherland-Hodgman against one plane: 4 -> at most 5     */
-/* vertices). Exact, unlike the sphere form-factor approximation of       */
-/* Heitz 2017.                                                            */
-/* Surface horizon (issue #18): at grazing views the lobe D = D_o(M^-1 l) */
-/* has mass below the receiver's plane, where the BRDF times cos is 0, so */
-/* a light crossing that plane was lit by lobe mass under the surface     */
-/* (1.24x too bright on a floor seen at 10 degrees). Where a vertex of P  */
-/* is below z = 0, and only there (a real branch: lights wholly above     */
-/* pay one comparison), the specular polygon is first clipped to z >= 0   */
-/* of the receiver frame, then transformed by M^-1 and clipped to the     */
-/* cosine space's z >= 0 (4 -> 5 -> at most 6 vertices). The integral is  */
-/* then the lobe's mass over (light above the surface), as the BRDF's.    */
+/* Horizon: the polygon is CLIPPED (Sutherland-Hodgman against one plane */
+/* at a time), exact, unlike the sphere form-factor approximation of      */
+/* Heitz 2017. ONE clip in the shading frame to the receiver's plane      */
+/* z >= 0 serves both lobes (ltc_rect_form_factors): it is the diffuse    */
+/* horizon, and the surface horizon of the specular lobe (issue #18: at   */
+/* grazing views D = D_o(M^-1 l) has mass below the receiver's plane,     */
+/* where the BRDF times cos is 0; a light crossing that plane was 1.24x   */
+/* too bright on a floor seen at 10 degrees). The clipped polygon mapped  */
+/* by M^-1 is clipped again to the cosine space's z >= 0 only where a     */
+/* mapped vertex is below it. A rectangle wholly above the receiver's     */
+/* plane is not clipped at all (the fast path: 4 corners, 2 integrals;   */
+/* a real branch on GPUs. llvmpipe runs every side of an if under a lane  */
+/* mask and a loop only while a lane is in it, so there the savings come  */
+/* from running each integral once, looped to the vertex count).          */
 /*                                                                        */
 /* Edge integral precision (thesis section 5.4.4): for unit vectors a, b  */
 /* the edge term is theta * normalize(a x b).z. Near-antipodal a, b make  */
-/* a x b tiny and its direction noisy; we split such edges (dot < -0.5,   */
-/* i.e. wider than 120 degrees) at the projected midpoint: the point of   */
-/* the 3D segment closest to the shading point, normalised, which lies on */
-/* the spherical edge between a and b (thesis fig. 5.20). The triangle   */
-/* (origin, m, v) has its right angle at m, so each half spans less than  */
-/* 90 degrees and is well conditioned. The angle itself is              */
-/* atan(|a x b|, a.b), accurate over the whole range (acos is not near   */
-/* +-1).                                                                  */
+/* a x b tiny and its direction noisy; for such edges (dot < -0.5, i.e.   */
+/* wider than 120 degrees) the circle's normal comes from a and the       */
+/* projected midpoint m instead: the point of the 3D segment closest to   */
+/* the shading point, which lies on the spherical edge between a and b    */
+/* (thesis fig. 5.20) more than 30 degrees from a. The thesis integrates  */
+/* the two arcs (a, m) and (m, b); they share the circle, so one normal   */
+/* and the whole angle theta = atan(|a x b|, a.b) (accurate over the     */
+/* whole range in absolute terms; acos is not near +-1) give the same     */
+/* sum for one atan instead of two.                                       */
 /* AREA_LTC_NO_PRECISION_FIX (a define, for the stress test only) turns   */
 /* the fix off: Heitz et al.'s original edge integral                     */
 /* (a x b).z * theta / sin(theta) with theta = acos(a.b), no split, i.e.  */
@@ -79,37 +81,28 @@
 
 #ifndef AREA_LTC_NO_PRECISION_FIX
 
-// Edge integral of the clamped cosine (times 2 pi) over the great arc from unit vector a to unit
-// vector b: theta * (a x b).z / |a x b|. Returns 0 for a degenerate (zero-length) arc.
-float ltc_edge_integral_unit(vec3 a, vec3 b) {
-	vec3 c = cross(a, b);
-	float s = length(c);
-	if (s < 1e-12) {
-		return 0.0; // a == b (a zero-length edge); a == -b never reaches here (split below).
-	}
-	float theta = atan(s, dot(a, b));
-	return theta * c.z / s;
-}
-
 // Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit), with
 // p_a, p_b their unit directions (normalised once per vertex by the caller).
 float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
-	// Thesis section 5.4.4: an edge wider than 120 degrees is split at the projected midpoint m. The first
-	// arc ends at m (split) or at b, so only two arcs are ever evaluated: a software rasterizer runs both
-	// sides of a branch, and the result is the same as evaluating (a, b) or (a, m) + (m, b).
-	bool split = !(dot(p_a, p_b) > -0.5);
-	vec3 m = p_b;
-	if (split) {
+	// theta * n.z with theta = atan(|a x b|, a.b): accurate in absolute terms over the whole range (acos is
+	// not near +-1). Only the direction n of the great circle is ill-conditioned for near-antipodal a, b
+	// (a x b tiny and noisy), so for an edge wider than 120 degrees (thesis section 5.4.4) it is taken from
+	// the projected midpoint m instead: the point of the 3D segment closest to the shading point, which
+	// lies on the arc between a and b (thesis fig. 5.20). The triangle (origin, v1, v2) then has its obtuse
+	// angle at the origin, so m is strictly inside the segment and more than 30 degrees from a: |a x m| >=
+	// |m| / 2, well conditioned. Same result as the thesis' two arcs (a, m) + (m, b), which share the
+	// circle, for one atan instead of two (a software rasterizer evaluates both sides of the branch).
+	vec3 c = cross(p_a, p_b);
+	float s = length(c);
+	float theta = atan(s, dot(p_a, p_b));
+	if (!(dot(p_a, p_b) > -0.5)) {
 		vec3 e = p_v2 - p_v1;
 		float t = clamp(-dot(p_v1, e) / max(dot(e, e), 1e-30), 0.0, 1.0);
-		m = p_v1 + e * t;
-		m = m / max(length(m), 1e-30);
+		vec3 m = p_v1 + e * t;
+		c = cross(p_a, m / max(length(m), 1e-30));
+		s = length(c);
 	}
-	float sum = ltc_edge_integral_unit(p_a, m);
-	if (split) {
-		sum += ltc_edge_integral_unit(m, p_b);
-	}
-	return sum;
+	return s < 1e-12 ? 0.0 : theta * c.z / s; // 0 for a zero-length edge (a == b).
 }
 
 #else // AREA_LTC_NO_PRECISION_FIX
@@ -126,67 +119,14 @@ float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
 
 #endif // AREA_LTC_NO_PRECISION_FIX
 
-// Slot p_i of the clipped polygon (c0..c4 are named, not an array: no indexed local memory, which a
-// software rasterizer handles lane by lane).
-vec3 ltc_clip_pick(int p_i, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4) {
-	return p_i == 0 ? c0 : (p_i == 1 ? c1 : (p_i == 2 ? c2 : (p_i == 3 ? c3 : c4)));
-}
-
-// Appends p_v as vertex n of the clipped polygon when p_emit and n < 5 (Sutherland-Hodgman output).
-void ltc_clip_emit(bool p_emit, vec3 p_v, inout int n, inout vec3 c0, inout vec3 c1, inout vec3 c2, inout vec3 c3, inout vec3 c4) {
-	if (!p_emit || n >= 5) {
-		return;
-	}
-	c0 = n == 0 ? p_v : c0;
-	c1 = n == 1 ? p_v : c1;
-	c2 = n == 2 ? p_v : c2;
-	c3 = n == 3 ? p_v : c3;
-	c4 = n == 4 ? p_v : c4;
-	n++;
-}
-
-// Cosine form factor (1 / pi) integral of max(z, 0) over the spherical projection of the quad p_q
-// (a planar convex polygon not containing the origin), i.e. the integral of the normalised clamped
-// cosine distribution D_o = max(z, 0) / pi. In [0, 1]; independent of the winding.
-float ltc_polygon_form_factor(vec3 p_q[4]) {
-	// Sutherland-Hodgman clipping to z >= 0 (at most 5 vertices for a convex quad), into named slots.
-	vec3 c0 = vec3(0.0), c1 = vec3(0.0), c2 = vec3(0.0), c3 = vec3(0.0), c4 = vec3(0.0);
-	int n = 0;
-	for (int i = 0; i < 4; i++) {
-		vec3 a = p_q[i];
-		vec3 b = p_q[(i + 1) & 3];
-		bool a_in = a.z > 0.0;
-		bool b_in = b.z > 0.0;
-		ltc_clip_emit(a_in, a, n, c0, c1, c2, c3, c4);
-		vec3 p = mix(a, b, a.z / (a.z - b.z));
-		p.z = 0.0;
-		ltc_clip_emit(a_in != b_in, p, n, c0, c1, c2, c3, c4);
-	}
-	if (n < 3) {
-		return 0.0;
-	}
-	// The edges in clipping order, each vertex normalised once.
-	float sum = 0.0;
-	vec3 first = c0 / max(length(c0), 1e-30);
-	vec3 a = first;
-	for (int i = 0; i < n; i++) {
-		vec3 v1 = ltc_clip_pick(i, c0, c1, c2, c3, c4);
-		vec3 v2 = i + 1 < n ? ltc_clip_pick(i + 1, c0, c1, c2, c3, c4) : c0;
-		vec3 b = i + 1 < n ? v2 / max(length(v2), 1e-30) : first;
-		sum += ltc_edge_integral(v1, v2, a, b);
-		a = b;
-	}
-	// Lambert: integral of cos over the polygon = 1/2 sum theta_i n.gamma_i; divided by pi.
-	return abs(sum) * (0.5 / M_PI);
-}
-
-// Slot p_i of a polygon of at most 6 vertices (the surface-horizon path; named slots as above).
-vec3 ltc_clip_pick6(int p_i, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
+// Slot p_i of a clipped polygon of at most 6 vertices (c0..c5 are named, not an array: no indexed local
+// memory, which a software rasterizer handles lane by lane).
+vec3 ltc_clip_pick(int p_i, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
 	return p_i == 0 ? c0 : (p_i == 1 ? c1 : (p_i == 2 ? c2 : (p_i == 3 ? c3 : (p_i == 4 ? c4 : c5))));
 }
 
-// Appends p_v as vertex n of a polygon of at most 6 vertices when p_emit.
-void ltc_clip_emit6(bool p_emit, vec3 p_v, inout int n, inout vec3 c0, inout vec3 c1, inout vec3 c2, inout vec3 c3, inout vec3 c4, inout vec3 c5) {
+// Appends p_v as vertex n of the clipped polygon when p_emit and n < 6 (Sutherland-Hodgman output).
+void ltc_clip_emit(bool p_emit, vec3 p_v, inout int n, inout vec3 c0, inout vec3 c1, inout vec3 c2, inout vec3 c3, inout vec3 c4, inout vec3 c5) {
 	if (!p_emit || n >= 6) {
 		return;
 	}
@@ -199,58 +139,99 @@ void ltc_clip_emit6(bool p_emit, vec3 p_v, inout int n, inout vec3 c0, inout vec
 	n++;
 }
 
-// Specular form factor of the quad p_q (receiver frame) under the LTC p_m_inv with the surface horizon:
-// Sutherland-Hodgman to z >= 0 of the receiver frame (at most 5 vertices), M^-1, Sutherland-Hodgman
-// to z >= 0 of the cosine space (at most 6), then the edge integrals. Called only where the quad
-// crosses the receiver's plane; for a quad wholly above it equals ltc_polygon_form_factor(M^-1 p_q).
-float ltc_polygon_form_factor_horizon(vec3 p_q[4], mat3 p_m_inv) {
-	vec3 h0 = vec3(0.0), h1 = vec3(0.0), h2 = vec3(0.0), h3 = vec3(0.0), h4 = vec3(0.0);
-	int nh = 0;
-	for (int i = 0; i < 4; i++) {
-		vec3 a = p_q[i];
-		vec3 b = p_q[(i + 1) & 3];
+// Sutherland-Hodgman clipping of the polygon p_n, p0..p4 (at most 5 vertices) to z >= 0: r_n (at most 6)
+// vertices r0..r5. A quad gives at most 5.
+void ltc_clip_polygon(int p_n, vec3 p0, vec3 p1, vec3 p2, vec3 p3, vec3 p4, out int r_n, out vec3 r0, out vec3 r1, out vec3 r2, out vec3 r3, out vec3 r4, out vec3 r5) {
+	r0 = vec3(0.0);
+	r1 = vec3(0.0);
+	r2 = vec3(0.0);
+	r3 = vec3(0.0);
+	r4 = vec3(0.0);
+	r5 = vec3(0.0);
+	r_n = 0;
+	for (int i = 0; i < min(p_n, 5); i++) {
+		vec3 a = ltc_clip_pick(i, p0, p1, p2, p3, p4, p4);
+		vec3 b = i + 1 < p_n ? ltc_clip_pick(i + 1, p0, p1, p2, p3, p4, p4) : p0;
 		bool a_in = a.z > 0.0;
 		bool b_in = b.z > 0.0;
-		ltc_clip_emit(a_in, p_m_inv * a, nh, h0, h1, h2, h3, h4);
+		ltc_clip_emit(a_in, a, r_n, r0, r1, r2, r3, r4, r5);
 		vec3 p = mix(a, b, a.z / (a.z - b.z));
 		p.z = 0.0;
-		ltc_clip_emit(a_in != b_in, p_m_inv * p, nh, h0, h1, h2, h3, h4);
+		ltc_clip_emit(a_in != b_in, p, r_n, r0, r1, r2, r3, r4, r5);
 	}
-	if (nh < 3) {
-		return 0.0; // Wholly below the surface.
-	}
-	vec3 c0 = vec3(0.0), c1 = vec3(0.0), c2 = vec3(0.0), c3 = vec3(0.0), c4 = vec3(0.0), c5 = vec3(0.0);
-	int n = 0;
-	for (int i = 0; i < 5; i++) {
-		if (i >= nh) {
-			break;
-		}
-		vec3 a = ltc_clip_pick(i, h0, h1, h2, h3, h4);
-		vec3 b = i + 1 < nh ? ltc_clip_pick(i + 1, h0, h1, h2, h3, h4) : h0;
-		bool a_in = a.z > 0.0;
-		bool b_in = b.z > 0.0;
-		ltc_clip_emit6(a_in, a, n, c0, c1, c2, c3, c4, c5);
-		vec3 p = mix(a, b, a.z / (a.z - b.z));
-		p.z = 0.0;
-		ltc_clip_emit6(a_in != b_in, p, n, c0, c1, c2, c3, c4, c5);
-	}
-	if (n < 3) {
-		return 0.0;
-	}
+}
+
+// (1 / pi) integral of cos over the spherical projection of the closed polygon p_n, c0..c5 (3 to 6
+// vertices, every one with z >= 0: already clipped), i.e. the cosine form factor (Lambert: 1/2 sum
+// theta_i n.gamma_i, divided by pi). In [0, 1]; independent of the winding.
+float ltc_polygon_integral(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
+	// The edges in order, each vertex picked and normalised once. The trip count is the lanes' largest
+	// p_n (4 for a rectangle above the horizon): a software rasterizer runs a loop body only while some
+	// lane is in it, but every side of an if.
 	float sum = 0.0;
 	vec3 first = c0 / max(length(c0), 1e-30);
+	vec3 v1 = c0;
 	vec3 a = first;
-	for (int i = 0; i < 6; i++) {
-		if (i >= n) {
-			break;
-		}
-		vec3 v1 = ltc_clip_pick6(i, c0, c1, c2, c3, c4, c5);
-		vec3 v2 = i + 1 < n ? ltc_clip_pick6(i + 1, c0, c1, c2, c3, c4, c5) : c0;
-		vec3 b = i + 1 < n ? v2 / max(length(v2), 1e-30) : first;
+	for (int i = 0; i < p_n; i++) {
+		bool last = i + 1 >= p_n;
+		vec3 v2 = last ? c0 : ltc_clip_pick(i + 1, c0, c1, c2, c3, c4, c5);
+		vec3 b = last ? first : v2 / max(length(v2), 1e-30);
 		sum += ltc_edge_integral(v1, v2, a, b);
+		v1 = v2;
 		a = b;
 	}
 	return abs(sum) * (0.5 / M_PI);
+}
+
+// Cosine form factor of the quad p_q (a planar convex polygon not containing the origin) clipped to
+// z >= 0, i.e. the integral of the normalised clamped cosine D_o = max(z, 0) / pi over it. In [0, 1].
+float ltc_polygon_form_factor(vec3 p_q[4]) {
+	int n;
+	vec3 c0, c1, c2, c3, c4, c5;
+	ltc_clip_polygon(4, p_q[0], p_q[1], p_q[2], p_q[3], p_q[3], n, c0, c1, c2, c3, c4, c5);
+	return n < 3 ? 0.0 : ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5);
+}
+
+// Diffuse and specular form factors of the rectangle p_q (receiver frame, z = N) with ONE clip
+// (Heitz et al. 2016, section 4: the integral of the LTC D = D_o(M^-1 l) over P is that of D_o over
+// M^-1 P, so the specular polygon is the shading-frame polygon mapped by M^-1).
+// Clipping commutes with a linear map when the plane is mapped with it: M^-1 sends the segment
+// mix(a, b, t) to mix(M^-1 a, M^-1 b, t), so the point where an edge leaves the half-space {n.x >= 0} is
+// sent to where the mapped edge leaves its image {(M^T n).y >= 0}. Two planes bound the lit part:
+// - the receiver's plane z >= 0: the whole diffuse horizon (M = identity) and the surface horizon of the
+//   specular lobe (no lobe mass below the surface, issue #18). Clipped ONCE here, in the shading frame,
+//   and the clipped polygon serves both lobes;
+// - the cosine space's horizon z_o >= 0 of the specular lobe, in the shading frame a z - d x >= 0: a
+//   different plane (d != 0), crossed only by polygons reaching near the horizon on the side the lobe
+//   leans to. The mapped polygon is clipped to it only where one of its vertices has z_o < 0 (a real
+//   branch; its image under M^-1 is exactly z_o >= 0, so clipping there is the same clip).
+// Fast path: a rectangle wholly above the receiver's plane (every corner z > 0, the common case) is not
+// clipped at all: its four corners are the diffuse polygon, and M^-1 of them the specular one.
+// r_specular is left 0 unless p_specular_enabled.
+void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, out float r_diffuse, out float r_specular) {
+	r_diffuse = 0.0;
+	r_specular = 0.0;
+	int n = 4;
+	vec3 c0 = p_q[0], c1 = p_q[1], c2 = p_q[2], c3 = p_q[3], c4 = p_q[3], c5 = p_q[3];
+	if (!(min(min(p_q[0].z, p_q[1].z), min(p_q[2].z, p_q[3].z)) > 0.0)) {
+		ltc_clip_polygon(4, p_q[0], p_q[1], p_q[2], p_q[3], p_q[3], n, c0, c1, c2, c3, c4, c5);
+		if (n < 3) {
+			return; // Wholly below the receiver's plane: neither lobe sees it.
+		}
+	}
+	r_diffuse = ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5);
+	if (!p_specular_enabled) {
+		return;
+	}
+	vec3 s0 = p_m_inv * c0, s1 = p_m_inv * c1, s2 = p_m_inv * c2, s3 = p_m_inv * c3, s4 = p_m_inv * c4;
+	// Slots past n hold a copy of a corner (fast path) or 0 (after a clip): neither turns z_min negative.
+	float z_min = min(min(min(s0.z, s1.z), min(s2.z, s3.z)), s4.z);
+	int m = n;
+	vec3 d0 = s0, d1 = s1, d2 = s2, d3 = s3, d4 = s4, d5 = s4;
+	if (z_min < 0.0) {
+		ltc_clip_polygon(n, s0, s1, s2, s3, s4, m, d0, d1, d2, d3, d4, d5);
+	}
+	r_specular = m < 3 ? 0.0 : ltc_polygon_integral(m, d0, d1, d2, d3, d4, d5);
 }
 
 // Distance attenuation of upstream Godot 4.7's area light (its class reference and shader):
@@ -392,12 +373,9 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	q[2] = local_from_view * (base + hx + hy);
 	q[3] = local_from_view * (base - hx + hy);
 
-	// Diffuse: the exact Lambert integral, (1/pi) L_e integral cos = L_e FF (albedo applied later).
-	r_diffuse += radiance * ltc_polygon_form_factor(q);
-
+	vec4 t0 = vec4(1.0, 0.0, 1.0, 0.0); // a, b, c, d
+	vec4 t1 = vec4(1.0, 0.0, 0.0, 0.0); // e, fn, fg, 0
 	if (p_specular_enabled) {
-		vec4 t0; // a, b, c, d
-		vec4 t1; // e, fn, fg, 0
 #if defined(AREA_LTC_HAS_POLYNOMIAL) && defined(AREA_LTC_HAS_LUT)
 		if (p_polynomial) {
 			ltc_fetch_polynomial(p_roughness, NoV, t0, t1);
@@ -409,28 +387,26 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 #else
 		ltc_fetch_lut(p_roughness, NoV, t0, t1);
 #endif
-		float a = t0.x;
-		float b = t0.y;
-		float c = t0.z;
-		float d = t0.w;
-		float e = t1.x;
-		// Thesis eqs. 5.7-5.8: M = [[a, 0, b], [0, c, 0], [d, 0, e]] (row-major), inverted at run time.
-		// We stay in the fitter's frame (above), so the Godot-frame conjugation of eq. 5.9 is not needed.
-		// a e - b d > 0 in every cell (ltc_lut_data.inc) and in the guarded polynomials, so s is finite.
-		float s = 1.0 / (a * e - b * d);
-		// GLSL matrices are column-major: columns of M^-1.
-		mat3 m_inv = mat3(vec3(s * e, 0.0, -s * d), vec3(0.0, 1.0 / c, 0.0), vec3(-s * b, 0.0, s * a));
-		float spec;
-		if (min(min(q[0].z, q[1].z), min(q[2].z, q[3].z)) < 0.0) {
-			// The light crosses (or is below) the receiver's plane: clip to the surface horizon first.
-			spec = ltc_polygon_form_factor_horizon(q, m_inv);
-		} else {
-			vec3 qs[4];
-			for (int i = 0; i < 4; i++) {
-				qs[i] = m_inv * q[i];
-			}
-			spec = ltc_polygon_form_factor(qs);
-		}
+	}
+	float a = t0.x;
+	float b = t0.y;
+	float c = t0.z;
+	float d = t0.w;
+	float e = t1.x;
+	// Thesis eqs. 5.7-5.8: M = [[a, 0, b], [0, c, 0], [d, 0, e]] (row-major), inverted at run time.
+	// We stay in the fitter's frame (above), so the Godot-frame conjugation of eq. 5.9 is not needed.
+	// a e - b d > 0 in every cell (ltc_lut_data.inc) and in the guarded polynomials, so s is finite.
+	float s = 1.0 / (a * e - b * d);
+	// GLSL matrices are column-major: columns of M^-1.
+	mat3 m_inv = mat3(vec3(s * e, 0.0, -s * d), vec3(0.0, 1.0 / c, 0.0), vec3(-s * b, 0.0, s * a));
+
+	// Diffuse: the exact Lambert integral, (1/pi) L_e integral cos = L_e FF (albedo applied later);
+	// specular: the LTC's integral over the same clipped polygon mapped by M^-1.
+	float diffuse;
+	float spec;
+	ltc_rect_form_factors(q, p_specular_enabled, m_inv, diffuse, spec);
+	r_diffuse += radiance * diffuse;
+	if (p_specular_enabled) {
 		// Thesis eq. 5.10.
 		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
 		r_specular += radiance * p_light.specular_amount * spec * F;

@@ -51,7 +51,7 @@ layout(set = 0, binding = 0, std140) uniform SceneDataBlock { // 320 bytes; runn
 	mat4 world_from_view; // 192
 	vec2 viewport_size; // 256: pixels.
 	float z_near; // 264
-	float z_far; // 268: metres; also the depth covered by the cluster slices.
+	float z_far; // 268: metres: the depth the cluster slices cover (ClusterBuilderRD::get_slice_depth(), <= the camera far).
 	vec4 ambient_light; // 272: rgb = linear ambient colour * energy, a unused.
 	uint omni_light_count; // 288
 	uint spot_light_count; // 292
