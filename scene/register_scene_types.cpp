@@ -61,6 +61,7 @@ void register_scene_types() {
 	GDREGISTER_CLASS(TorusMesh);
 	GDREGISTER_CLASS(PrismMesh);
 	GDREGISTER_CLASS(ProceduralSkyMaterial);
+	GDREGISTER_CLASS(PhysicalSkyMaterial);
 	GDREGISTER_CLASS(Sky);
 	GDREGISTER_CLASS(Environment);
 	GDREGISTER_CLASS(World3D);

@@ -482,9 +482,34 @@ public:
 					ground_energy_multiplier == p_o.ground_energy_multiplier && sun_angle_max == p_o.sun_angle_max && sun_curve == p_o.sun_curve && energy_multiplier == p_o.energy_multiplier;
 		}
 	};
-	// A sky material (ProceduralSkyMaterial) and a sky (Sky: material + radiance size), as Godot's RS.
+	// Godot's PhysicalSkyMaterial parameters (colours sRGB as saved); night_sky is not drawn (counted warning).
+	struct PhysicalSkyParams {
+		float rayleigh_coefficient = 2.0f;
+		Color rayleigh_color = Color(0.3f, 0.405f, 0.6f);
+		float mie_coefficient = 0.005f;
+		float mie_eccentricity = 0.8f;
+		Color mie_color = Color(0.69f, 0.729f, 0.812f);
+		float turbidity = 10.0f;
+		float sun_disk_scale = 1.0f;
+		Color ground_color = Color(0.1f, 0.07f, 0.034f);
+		float energy_multiplier = 1.0f;
+		bool use_debanding = true;
+		bool has_night_sky = false; // A night_sky texture was set (stored, not drawn).
+		bool operator==(const PhysicalSkyParams &p_o) const {
+			return rayleigh_coefficient == p_o.rayleigh_coefficient && rayleigh_color == p_o.rayleigh_color && mie_coefficient == p_o.mie_coefficient &&
+					mie_eccentricity == p_o.mie_eccentricity && mie_color == p_o.mie_color && turbidity == p_o.turbidity && sun_disk_scale == p_o.sun_disk_scale &&
+					ground_color == p_o.ground_color && energy_multiplier == p_o.energy_multiplier && use_debanding == p_o.use_debanding && has_night_sky == p_o.has_night_sky;
+		}
+	};
+	enum SkyMaterialType {
+		SKY_MATERIAL_PROCEDURAL,
+		SKY_MATERIAL_PHYSICAL,
+	};
+	// A sky material (ProceduralSkyMaterial or PhysicalSkyMaterial) and a sky (Sky: material + radiance size),
+	// as Godot's RS. Setting either parameter block makes the material of that type.
 	virtual RID sky_material_create() = 0;
 	virtual void sky_material_set_procedural(RID p_material, const ProceduralSkyParams &p_params) = 0;
+	virtual void sky_material_set_physical(RID p_material, const PhysicalSkyParams &p_params) = 0;
 	virtual RID sky_create() = 0;
 	virtual void sky_set_material(RID p_sky, RID p_material) = 0;
 	// Radiance cubemap size in pixels (Godot's Sky.radiance_size as a size: 32..2048).
@@ -493,6 +518,15 @@ public:
 	virtual void environment_set_sky(RID p_env, RID p_sky) = 0;
 	// ambient_light_sky_contribution (0..1): the share of the ambient that comes from the sky.
 	virtual void environment_set_ambient_sky_contribution(RID p_env, float p_contribution) = 0;
+	// Environment.reflected_light_source (Godot's order and default BG): where glossy surfaces' reflections come
+	// from. BG: the sky when background_mode is SKY, none otherwise; DISABLED: none; SKY: the sky whatever the
+	// background.
+	enum EnvironmentReflectionSource {
+		ENV_REFLECTION_SOURCE_BG,
+		ENV_REFLECTION_SOURCE_DISABLED,
+		ENV_REFLECTION_SOURCE_SKY,
+	};
+	virtual void environment_set_reflection_source(RID p_env, EnvironmentReflectionSource p_source) = 0;
 
 	/* SCENARIO API */
 

@@ -84,7 +84,7 @@ def _class_stub(p_module, p_cls):
 			if enum_info and enum_info[0] is not None:
 				kind = enum_info[0].__qualname__
 			elif prop["type_name"] == "Object":
-				kind = (prop["class_name"] or "Object") + " | None"
+				kind = " | ".join((prop["class_name"] or "Object").split(",")) + " | None"
 			else:
 				kind = {"bool": "bool", "int": "int", "float": "float", "String": "str"}.get(prop["type_name"], prop["type_name"])
 			out.append("\t%s: %s" % (prop["name"], kind))

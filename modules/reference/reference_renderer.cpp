@@ -47,6 +47,7 @@ struct ReferenceRenderer::Frame {
 	bool sky_background = false; // ENV_BG_SKY: rays that miss see the sky.
 	bool sky_ambient = false; // Sky ambient: an importance-sampled environment light (diffuse, as the GPU's SH).
 	float ambient_sky_contribution = 1.0f;
+	bool sky_reflections = false; // reflected_light_source resolved: the sky lights the specular lobe exactly.
 	ReferenceSkyLight sky;
 	ReferenceRenderOptions options;
 	int thread_count = 1;
@@ -402,6 +403,7 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 		frame.sky_background = env.background == RS::ENV_BG_SKY;
 		frame.sky_ambient = env.sky_ambient && env.ambient_sky_contribution > 0.0f;
 		frame.ambient_sky_contribution = env.ambient_sky_contribution;
+		frame.sky_reflections = env.sky_reflections;
 		frame.sky.build(SkyModel::from_scene_data(p_data, light_storage));
 		if (frame.sky_ambient) {
 			frame.ambient_light *= 1.0f - env.ambient_sky_contribution; // The colour share; the sky share is integrated.
@@ -660,6 +662,55 @@ static Vector3 _reference_sky_irradiance(RTCScene p_scene, const ReferenceRender
 	return sum / float(count);
 }
 
+// Sky reflections at the shading point: the exact integral of sky(L) f_spec(L, V) (N.L) over the hemisphere,
+// with the specular BRDF of the GPU's direct lights (brdf.h: GGX D, Hammon's V, Schlick F), estimated with
+// options.sky_samples half vectors drawn from D(H) (N.H) on a jittered grid (Walter et al. 2007, eq. 35-36),
+// pdf(L) = D (N.H) / (4 V.H). The estimator f (N.L) / pdf = 4 F V_vis (N.L) (V.H) / (N.H) has no D in it, so
+// it stays exact for a mirror (roughness 0). Shadow rays only when shadows are on.
+static Vector3 _reference_sky_specular(RTCScene p_scene, const ReferenceRenderOptions &p_options, const ReferenceSkyLight &p_sky, const AreaLightShadingPoint &p_point, ReferenceRNG &r_rng, uint64_t &r_shadow_rays) {
+	using namespace ReferenceBRDF;
+	const int grid = std::max(int(std::sqrt(double(std::max(p_options.sky_samples, 1)))), 1);
+	const int count = grid * grid;
+	const Vector3 &N = p_point.N;
+	const Vector3 &V = p_point.V;
+	const float NoV = std::max(N.dot(V), 1e-4f);
+	const float alpha = p_point.roughness * p_point.roughness;
+	const float a2 = alpha * alpha;
+	const Vector3 axis = std::fabs(N.y) < 0.999f ? Vector3(0, 1, 0) : Vector3(1, 0, 0);
+	const Vector3 T = axis.cross(N).normalized();
+	const Vector3 B = N.cross(T);
+	Vector3 sum;
+	for (int i = 0; i < count; i++) {
+		const double u = (double(i / grid) + r_rng.next_double()) / grid;
+		const double v = (double(i % grid) + r_rng.next_double()) / grid;
+		const double cos_h = std::sqrt((1.0 - u) / (1.0 + (double(a2) - 1.0) * u));
+		const double sin_h = std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h));
+		const double phi = 2.0 * Math::PI * v;
+		const Vector3 H = (T * float(sin_h * std::cos(phi)) + B * float(sin_h * std::sin(phi)) + N * float(cos_h)).normalized();
+		const float VoH = V.dot(H);
+		if (VoH <= 0.0f) {
+			continue;
+		}
+		const Vector3 L = (H * (2.0f * VoH) - V).normalized();
+		const float NoL = N.dot(L);
+		const float NoH = std::max(N.dot(H), 1e-6f);
+		if (NoL <= 0.0f) {
+			continue;
+		}
+		if (p_options.shadows) {
+			const Vector3 side = p_point.ng.dot(L) >= 0.0f ? p_point.ng : -p_point.ng;
+			r_shadow_rays++;
+			if (_reference_occluded(p_scene, p_point.vertex + side * p_point.offset, L, std::numeric_limits<float>::infinity())) {
+				continue;
+			}
+		}
+		const Vector3 F = F_Schlick(p_point.f0, p_point.f90, glsl_clamp(L.dot(H), 0.0f, 1.0f));
+		const float vis = V_SmithGGXCorrelatedFast(NoV, NoL, alpha);
+		sum += p_sky.evaluate(L) * F * (4.0f * vis * NoL * VoH / NoH);
+	}
+	return sum / float(count);
+}
+
 Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters) {
 	// Pixel centre in Vulkan NDC (y down, top row first), unprojected at depth 0 (near) and 1 (far):
 	// the segment the rasteriser's depth range covers for this pixel.
@@ -893,6 +944,9 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 	Vector3 ambient_light = p_frame.ambient_light;
 	if (p_frame.sky_ambient) {
 		ambient_light += _reference_sky_irradiance(p_frame.scene, p_options, p_frame.sky, point, r_rng, r_counters.shadow_rays) * p_frame.ambient_sky_contribution;
+	}
+	if (p_frame.sky_reflections && m.specular_enabled && !m.unshaded) {
+		specular_light += _reference_sky_specular(p_frame.scene, p_options, p_frame.sky, point, r_rng, r_counters.shadow_rays);
 	}
 	Vector3 color = m.emission + (ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
 	return Color(color.x, color.y, color.z, alpha);

@@ -87,6 +87,16 @@ void Environment::set_ambient_light_sky_contribution(float p_contribution) {
 	emit_changed();
 }
 
+void Environment::set_reflection_source(ReflectionSource p_source) {
+	ERR_FAIL_INDEX_MSG((int)p_source, REFLECTION_SOURCE_MAX, vformat("reflected_light_source must be 0..%d (Background, Disabled, Sky); got %d. The old value is kept.", REFLECTION_SOURCE_MAX - 1, (int)p_source));
+	reflection_source = p_source;
+	RS *rs = RS::get_singleton();
+	if (rs && environment.is_valid()) {
+		rs->environment_set_reflection_source(environment, RS::EnvironmentReflectionSource(reflection_source));
+	}
+	emit_changed();
+}
+
 bool Environment::_check_ss_value(const char *p_property, float p_value, float p_min, float p_max) {
 	ERR_FAIL_COND_V_MSG(!Math::is_finite(p_value) || p_value < p_min || p_value > p_max, false,
 			vformat("%s must be finite and in %s..%s (got %s); the old value is kept.", p_property, rtos(p_min).c_str(), rtos(p_max).c_str(), rtos(p_value).c_str()));
@@ -294,6 +304,10 @@ void Environment::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "ambient_light_color", PROPERTY_HINT_COLOR_NO_ALPHA), "set_ambient_light_color", "get_ambient_light_color");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ambient_light_sky_contribution", PROPERTY_HINT_RANGE, "0,1,0.001"), "set_ambient_light_sky_contribution", "get_ambient_light_sky_contribution");
 	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "ambient_light_energy", PROPERTY_HINT_RANGE, "0,16,0.01"), "set_ambient_light_energy", "get_ambient_light_energy");
+	ClassDB::bind_method(D_METHOD("set_reflection_source", "source"), &Environment::set_reflection_source);
+	ClassDB::bind_method(D_METHOD("get_reflection_source"), &Environment::get_reflection_source);
+	ADD_GROUP("Reflected Light", "reflected_light_");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "reflected_light_source", PROPERTY_HINT_ENUM, "Background,Disabled,Sky"), "set_reflection_source", "get_reflection_source");
 	ClassDB::bind_method(D_METHOD("set_tonemapper", "mode"), &Environment::set_tonemapper);
 	ClassDB::bind_method(D_METHOD("get_tonemapper"), &Environment::get_tonemapper);
 	ClassDB::bind_method(D_METHOD("set_tonemap_exposure", "exposure"), &Environment::set_tonemap_exposure);
@@ -357,6 +371,9 @@ void Environment::_bind_methods() {
 	BIND_ENUM_CONSTANT(BG_KEEP);
 	BIND_ENUM_CONSTANT(BG_CAMERA_FEED);
 	BIND_ENUM_CONSTANT(BG_MAX);
+	BIND_ENUM_CONSTANT(REFLECTION_SOURCE_BG);
+	BIND_ENUM_CONSTANT(REFLECTION_SOURCE_DISABLED);
+	BIND_ENUM_CONSTANT(REFLECTION_SOURCE_SKY);
 	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_BG);
 	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_DISABLED);
 	BIND_ENUM_CONSTANT(AMBIENT_SOURCE_COLOR);
@@ -377,6 +394,7 @@ Environment::Environment() {
 	rs->environment_set_bg_color(environment, bg_color);
 	rs->environment_set_bg_energy(environment, bg_energy_multiplier);
 	rs->environment_set_ambient_light(environment, ambient_color, RS::EnvironmentAmbientSource(ambient_source), ambient_energy);
+	rs->environment_set_reflection_source(environment, RS::EnvironmentReflectionSource(reflection_source));
 	rs->environment_set_ssao(environment, ssao_enabled, ssao_radius, ssao_intensity, ssao_power, ssao_detail, ssao_horizon, ssao_sharpness, ssao_direct_light_affect, ssao_ao_channel_affect);
 	rs->environment_set_ssil(environment, ssil_enabled, ssil_radius, ssil_intensity, ssil_sharpness, ssil_normal_rejection);
 }

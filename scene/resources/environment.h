@@ -33,6 +33,13 @@ public:
 		AMBIENT_SOURCE_SKY = RS::ENV_AMBIENT_SOURCE_SKY,
 		AMBIENT_SOURCE_MAX
 	};
+	// Godot's Environment.ReflectionSource (reflected_light_source), same order and values.
+	enum ReflectionSource {
+		REFLECTION_SOURCE_BG = RS::ENV_REFLECTION_SOURCE_BG,
+		REFLECTION_SOURCE_DISABLED = RS::ENV_REFLECTION_SOURCE_DISABLED,
+		REFLECTION_SOURCE_SKY = RS::ENV_REFLECTION_SOURCE_SKY,
+		REFLECTION_SOURCE_MAX
+	};
 	// Godot's Environment.ToneMapper (tonemap_mode), same order and values.
 	enum ToneMapper {
 		TONE_MAPPER_LINEAR,
@@ -52,6 +59,7 @@ private:
 	Color ambient_color = Color(0, 0, 0, 1);
 	float ambient_energy = 1.0f;
 	float ambient_sky_contribution = 1.0f;
+	ReflectionSource reflection_source = REFLECTION_SOURCE_BG;
 	Ref<Sky> sky;
 	ToneMapper tonemap_mode = TONE_MAPPER_LINEAR;
 	float tonemap_exposure = 1.0f;
@@ -107,6 +115,9 @@ public:
 	// 0..1 (Godot clamps it): the share of the ambient light that comes from the sky.
 	void set_ambient_light_sky_contribution(float p_contribution);
 	float get_ambient_light_sky_contribution() const { return ambient_sky_contribution; }
+	// reflected_light_source: BG (default) reflects the sky under a sky background, SKY always, DISABLED never.
+	void set_reflection_source(ReflectionSource p_source);
+	ReflectionSource get_reflection_source() const { return reflection_source; }
 
 	// Tonemapping of the 8-bit previews (PNG, editor viewport); the HDR image and EXR stay scene-linear.
 	void set_tonemapper(ToneMapper p_mode);
@@ -161,4 +172,5 @@ public:
 
 VARIANT_ENUM_CAST(Environment::BGMode);
 VARIANT_ENUM_CAST(Environment::AmbientSource);
+VARIANT_ENUM_CAST(Environment::ReflectionSource);
 VARIANT_ENUM_CAST(Environment::ToneMapper);

@@ -6,7 +6,9 @@
 
 #include "core/error/error_macros.h"
 
-void Sky::set_material(const Ref<ProceduralSkyMaterial> &p_material) {
+void Sky::set_material(const Ref<Resource> &p_material) {
+	ERR_FAIL_COND_MSG(p_material.is_valid() && !Object::cast_to<ProceduralSkyMaterial>(p_material.ptr()) && !Object::cast_to<PhysicalSkyMaterial>(p_material.ptr()),
+			vformat("Sky: sky_material must be a ProceduralSkyMaterial or a PhysicalSkyMaterial; got %s. The old value is kept.", p_material->get_class().c_str()));
 	sky_material = p_material;
 	RS *rs = RS::get_singleton();
 	if (rs && sky.is_valid()) {
@@ -38,7 +40,7 @@ void Sky::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_radiance_size"), &Sky::get_radiance_size);
 	ClassDB::bind_method(D_METHOD("set_process_mode", "mode"), &Sky::set_process_mode);
 	ClassDB::bind_method(D_METHOD("get_process_mode"), &Sky::get_process_mode);
-	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "sky_material", PROPERTY_HINT_RESOURCE_TYPE, "ProceduralSkyMaterial"), "set_material", "get_material");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "sky_material", PROPERTY_HINT_RESOURCE_TYPE, "ProceduralSkyMaterial,PhysicalSkyMaterial"), "set_material", "get_material");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "process_mode", PROPERTY_HINT_ENUM, "Automatic,High-Quality,High-Quality Incremental,Real-Time"), "set_process_mode", "get_process_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "radiance_size", PROPERTY_HINT_ENUM, "32,64,128,256,512,1024,2048"), "set_radiance_size", "get_radiance_size");
 	BIND_ENUM_CONSTANT(RADIANCE_SIZE_32);

@@ -2,8 +2,9 @@
 /*  sky.h                                                                 */
 /**************************************************************************/
 /* godot-area: Sky (Godot 4's resource: sky_material, process_mode,       */
-/* radiance_size), owning one RS sky RID. Only ProceduralSkyMaterial is   */
-/* drawn; process_mode is stored (the sky is recomputed only when it      */
+/* radiance_size), owning one RS sky RID. ProceduralSkyMaterial and      */
+/* PhysicalSkyMaterial are drawn (other materials are refused with an     */
+/* error); process_mode is stored (the sky is recomputed only when it     */
 /* changes, as Godot's automatic mode does for a static sky).             */
 
 #pragma once
@@ -36,7 +37,7 @@ public:
 
 private:
 	RID sky;
-	Ref<ProceduralSkyMaterial> sky_material;
+	Ref<Resource> sky_material; // A ProceduralSkyMaterial or a PhysicalSkyMaterial.
 	RadianceSize radiance_size = RADIANCE_SIZE_256;
 	ProcessMode process_mode = PROCESS_MODE_AUTOMATIC;
 
@@ -45,8 +46,8 @@ protected:
 
 public:
 	RID get_rid() const override { return sky; }
-	void set_material(const Ref<ProceduralSkyMaterial> &p_material);
-	Ref<ProceduralSkyMaterial> get_material() const { return sky_material; }
+	void set_material(const Ref<Resource> &p_material);
+	Ref<Resource> get_material() const { return sky_material; }
 	void set_radiance_size(RadianceSize p_size);
 	RadianceSize get_radiance_size() const { return radiance_size; }
 	void set_process_mode(ProcessMode p_mode);

@@ -7,8 +7,10 @@
 /* whole from every setter. The formula it describes is in               */
 /* servers/rendering/sky_model.h. sky_cover / sky_cover_modulate are     */
 /* stored only (no cloud texture is drawn; a set cover is warned about). */
-/* Godot derives sky materials from Material; here it is a Resource of   */
-/* its own (it has no mesh material to own).                              */
+/* Godot derives sky materials from Material; here they are Resources of */
+/* their own (no mesh material to own). PhysicalSkyMaterial (Godot 4's    */
+/* properties and defaults) pushes RS::PhysicalSkyParams; its formula     */
+/* (Preetham et al. 1999 as Godot documents it) is in sky_model.h.        */
 
 #pragma once
 
@@ -66,4 +68,48 @@ public:
 
 	ProceduralSkyMaterial();
 	~ProceduralSkyMaterial() override;
+};
+
+class PhysicalSkyMaterial : public Resource {
+	GDCLASS(PhysicalSkyMaterial, Resource);
+
+	RID material;
+	RS::PhysicalSkyParams params;
+	Ref<Texture2D> night_sky;
+
+	void _push();
+	bool _check(float p_value, float p_min, float p_max, const char *p_property);
+
+protected:
+	static void _bind_methods();
+
+public:
+	RID get_rid() const override { return material; }
+	const RS::PhysicalSkyParams &get_params() const { return params; }
+
+	void set_rayleigh_coefficient(float p_value); // 0..64
+	float get_rayleigh_coefficient() const { return params.rayleigh_coefficient; }
+	void set_rayleigh_color(const Color &p_color);
+	Color get_rayleigh_color() const { return params.rayleigh_color; }
+	void set_mie_coefficient(float p_value); // 0..1
+	float get_mie_coefficient() const { return params.mie_coefficient; }
+	void set_mie_eccentricity(float p_value); // -1..1
+	float get_mie_eccentricity() const { return params.mie_eccentricity; }
+	void set_mie_color(const Color &p_color);
+	Color get_mie_color() const { return params.mie_color; }
+	void set_turbidity(float p_value); // 0..1000
+	float get_turbidity() const { return params.turbidity; }
+	void set_sun_disk_scale(float p_value); // 0..360
+	float get_sun_disk_scale() const { return params.sun_disk_scale; }
+	void set_ground_color(const Color &p_color);
+	Color get_ground_color() const { return params.ground_color; }
+	void set_energy_multiplier(float p_value); // 0..128
+	float get_energy_multiplier() const { return params.energy_multiplier; }
+	void set_use_debanding(bool p_enable);
+	bool get_use_debanding() const { return params.use_debanding; }
+	void set_night_sky(const Ref<Texture2D> &p_night_sky);
+	Ref<Texture2D> get_night_sky() const { return night_sky; }
+
+	PhysicalSkyMaterial();
+	~PhysicalSkyMaterial() override;
 };

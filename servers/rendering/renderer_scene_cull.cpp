@@ -342,7 +342,9 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 	const RendererEnvironmentStorage::Sky *sky = RSG::environment_storage->sky_get(env->sky);
 	const RendererEnvironmentStorage::SkyMaterial *sky_material = sky ? RSG::environment_storage->sky_material_get(sky->material) : nullptr;
 	if (sky_material) {
+		r_env.sky_type = sky_material->type;
 		r_env.sky = sky_material->procedural;
+		r_env.physical_sky = sky_material->physical;
 		r_env.sky_radiance_size = sky->radiance_size;
 	}
 	switch (env->background) {
@@ -405,7 +407,9 @@ void RendererSceneCull::_resolve_environment(RID p_camera_env, RID p_scenario_en
 		r_env.ambient_energy = 0.0f;
 		r_env.sky_ambient = false;
 	}
-	r_env.has_sky = sky_material && (r_env.background == RS::ENV_BG_SKY || r_env.sky_ambient);
+	// reflected_light_source (Godot): BG reflects the sky only under a sky background; SKY always; DISABLED never.
+	r_env.sky_reflections = sky_material && (env->reflection_source == RS::ENV_REFLECTION_SOURCE_SKY || (env->reflection_source == RS::ENV_REFLECTION_SOURCE_BG && r_env.background == RS::ENV_BG_SKY));
+	r_env.has_sky = sky_material && (r_env.background == RS::ENV_BG_SKY || r_env.sky_ambient || r_env.sky_reflections);
 }
 
 bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, int p_width, int p_height, const Color &p_default_clear_color, RenderSceneData &r_data) {

@@ -51,8 +51,12 @@ struct RenderSceneData {
 		float ambient_energy = 0.0f; // Resolved: 0 when ambient is disabled.
 		// Sky (ENV_BG_SKY and sky ambient): the ProceduralSkyMaterial of the environment's Sky.
 		bool has_sky = false; // A sky with a material is attached and used (background or ambient).
+		RS::SkyMaterialType sky_type = RS::SKY_MATERIAL_PROCEDURAL;
 		RS::ProceduralSkyParams sky;
+		RS::PhysicalSkyParams physical_sky; // sky_type PHYSICAL.
 		int sky_radiance_size = 256;
+		// Sky reflections (radiance cubemap, SkyRD): resolved from reflected_light_source and the background.
+		bool sky_reflections = false;
 		// Ambient from the sky: ambient = mix(ambient_color * energy, sky irradiance / pi * energy, contribution).
 		bool sky_ambient = false;
 		float ambient_sky_contribution = 1.0f;

@@ -317,6 +317,14 @@ void RenderingServerDefault::sky_material_set_procedural(RID p_material, const P
 	environment_storage->sky_material_set_procedural(p_material, p_params);
 }
 
+void RenderingServerDefault::sky_material_set_physical(RID p_material, const PhysicalSkyParams &p_params) {
+	environment_storage->sky_material_set_physical(p_material, p_params);
+}
+
+void RenderingServerDefault::environment_set_reflection_source(RID p_env, EnvironmentReflectionSource p_source) {
+	environment_storage->environment_set_reflection_source(p_env, p_source);
+}
+
 RID RenderingServerDefault::sky_create() {
 	return environment_storage->sky_allocate();
 }

@@ -113,6 +113,8 @@ public:
 	void environment_set_ssil_quality(EnvironmentSSILQuality p_quality, bool p_half_size, int p_blur_passes = 2) override;
 	RID sky_material_create() override;
 	void sky_material_set_procedural(RID p_material, const ProceduralSkyParams &p_params) override;
+	void sky_material_set_physical(RID p_material, const PhysicalSkyParams &p_params) override;
+	void environment_set_reflection_source(RID p_env, EnvironmentReflectionSource p_source) override;
 	RID sky_create() override;
 	void sky_set_material(RID p_sky, RID p_material) override;
 	void sky_set_radiance_size(RID p_sky, int p_size) override;

@@ -63,10 +63,83 @@ SkyModel SkyModel::from_scene_data(const RenderSceneData &p_data, const Renderer
 			break; // Godot's LIGHT0: the first one.
 		}
 	}
+	if (env.sky_type == RS::SKY_MATERIAL_PHYSICAL) {
+		return SkyModel::from_physical(env.physical_sky, env.bg_energy, sun, sun_dir, sun_color, sun_energy, sun_size);
+	}
 	return SkyModel::from_procedural(env.sky, env.bg_energy, sun, sun_dir, sun_color, sun_energy, sun_size);
 }
 
+SkyModel SkyModel::from_physical(const RS::PhysicalSkyParams &p_params, float p_bg_energy, bool p_sun, const Vector3 &p_sun_direction, const Color &p_sun_color, float p_sun_energy, float p_sun_angular_distance_deg) {
+	SkyModel m;
+	m.type = TYPE_PHYSICAL;
+	m.sun_enabled = p_sun;
+	m.exposure = p_params.energy_multiplier * p_bg_energy;
+	m.physical_ground = _lin(p_params.ground_color);
+	m.mie_eccentricity = p_params.mie_eccentricity;
+	if (!p_sun) {
+		return m;
+	}
+	Vector3 d = p_sun_direction.normalized();
+	m.sun_direction = d == Vector3() ? Vector3(0, 1, 0) : d;
+	m.sun_zenith_cos = std::fmin(std::fmax(m.sun_direction.y, -1.0f), 1.0f);
+	m.sun_energy = std::fmax(0.0f, 0.757f * m.sun_zenith_cos) * p_sun_energy;
+	m.sun_fade = 1.0f - std::fmin(std::fmax(1.0f - std::exp(m.sun_direction.y), 0.0f), 1.0f);
+	m.rayleigh_beta = _lin(p_params.rayleigh_color) * ((p_params.rayleigh_coefficient - (1.0f - m.sun_fade)) * 1.0e-4f);
+	m.mie_beta = _lin(p_params.mie_color) * (p_params.turbidity * p_params.mie_coefficient * 4.34e-4f);
+	m.physical_sun_color = _lin(p_sun_color);
+	const float size = Math::deg_to_rad(p_sun_angular_distance_deg) * p_params.sun_disk_scale;
+	m.sun_size = Math::deg_to_rad(p_sun_angular_distance_deg);
+	m.disk_cos_outer = std::cos(size);
+	m.disk_cos_inner = std::cos(size * 0.5f);
+	m.sun_radiance = m.physical_sun_color * m.sun_energy; // For reference: the disk's unextinguished colour.
+	return m;
+}
+
+static float _smoothstep(float p_e0, float p_e1, float p_x) {
+	const float t = std::fmin(std::fmax((p_x - p_e0) / (p_e1 - p_e0), 0.0f), 1.0f);
+	return t * t * (3.0f - 2.0f * t);
+}
+
+Vector3 SkyModel::evaluate_physical(const Vector3 &p_dir) const {
+	if (!sun_enabled) {
+		return Vector3();
+	}
+	const float pi = float(Math::PI);
+	const float mu = std::fmax(0.0f, p_dir.y);
+	const float optical_mass = 1.0f / (mu + 0.15f * std::pow(3.885f + 54.5f * mu, -1.253f));
+	auto ex = [](float p_v) { return std::exp(p_v); };
+	const Vector3 depth = rayleigh_beta * (8.4e3f * optical_mass) + mie_beta * (1.25e3f * optical_mass);
+	const Vector3 extinction(ex(-depth.x), ex(-depth.y), ex(-depth.z));
+	const float c = p_dir.dot(sun_direction);
+	const float half = c * 0.5f + 0.5f;
+	const float phase_r = (3.0f / (16.0f * pi)) * (1.0f + half * half);
+	const float g = mie_eccentricity;
+	const float phase_m = (1.0f / (4.0f * pi)) * (1.0f - g * g) / std::pow(std::fmax(1.0f + g * g - 2.0f * g * c, 1e-6f), 1.5f);
+	const Vector3 beta_sum = rayleigh_beta + mie_beta;
+	const Vector3 num = (rayleigh_beta * phase_r + mie_beta * phase_m) * sun_energy;
+	const Vector3 scatter(num.x / std::fmax(beta_sum.x, 1e-12f), num.y / std::fmax(beta_sum.y, 1e-12f), num.z / std::fmax(beta_sum.z, 1e-12f));
+	const float horizon_mix = std::fmin(std::fmax(std::pow(1.0f - sun_zenith_cos, 5.0f), 0.0f), 1.0f);
+	const float ground_mix = _smoothstep(-0.1f, 0.1f, p_dir.y);
+	Vector3 result;
+	for (int k = 0; k < 3; k++) {
+		float lin = std::pow(std::fmax(scatter[k] * (1.0f - extinction[k]), 0.0f), 1.5f);
+		lin *= 1.0f + (std::pow(std::fmax(scatter[k] * extinction[k], 0.0f), 0.5f) - 1.0f) * horizon_mix;
+		lin *= physical_ground[k] + (1.0f - physical_ground[k]) * ground_mix;
+		float disk = 0.0f;
+		if (disk_cos_inner > disk_cos_outer) {
+			disk = _smoothstep(disk_cos_outer, disk_cos_inner, c);
+		}
+		const float col = lin + sun_energy * extinction[k] * disk * physical_sun_color[k];
+		result[k] = std::pow(std::fmax(col, 0.0f), 1.0f / (1.2f + 1.2f * sun_fade)) * exposure;
+	}
+	return result;
+}
+
 Vector3 SkyModel::evaluate(const Vector3 &p_dir) const {
+	return type == TYPE_PHYSICAL ? evaluate_physical(p_dir) : evaluate_procedural(p_dir);
+}
+
+Vector3 SkyModel::evaluate_procedural(const Vector3 &p_dir) const {
 	const float half_pi = float(Math::PI) * 0.5f;
 	const float v = std::acos(std::fmin(std::fmax(p_dir.y, -1.0f), 1.0f));
 	if (p_dir.y >= 0.0f) {
@@ -147,13 +220,13 @@ uint64_t SkyModel::get_hash() const {
 			h = (h ^ b[i]) * 1099511628211ULL;
 		}
 	};
-	const Vector3 vectors[6] = { sky_top, sky_horizon, ground_bottom, ground_horizon, sun_direction, sun_radiance };
+	const Vector3 vectors[10] = { sky_top, sky_horizon, ground_bottom, ground_horizon, sun_direction, sun_radiance, rayleigh_beta, mie_beta, physical_ground, physical_sun_color };
 	for (const Vector3 &v : vectors) {
 		mix(&v.x, sizeof(float));
 		mix(&v.y, sizeof(float));
 		mix(&v.z, sizeof(float));
 	}
-	const float scalars[5] = { sky_curve, ground_curve, sun_angle_max, sun_curve, sun_size };
+	const float scalars[13] = { sky_curve, ground_curve, sun_angle_max, sun_curve, sun_size, mie_eccentricity, sun_fade, sun_energy, sun_zenith_cos, exposure, disk_cos_outer, disk_cos_inner, float(type) };
 	mix(scalars, sizeof(scalars));
 	const uint8_t sun = sun_enabled ? 1 : 0;
 	mix(&sun, 1);

@@ -192,7 +192,9 @@ TEST_CASE("[Render][DirectionalShadowRD] the shadow of a box on a plane matches 
 
 		// PSSM 4 at camera distances whose view of the box falls in splits 0, 1 and 2 (defaults 0.1, 0.2, 0.5 of
 		// 100 m), with a soft (2 degree disk: blocker search + PCF) and a hard (0 degrees: 1 texel PCF) sun; then
-		// ORTHOGONAL, PSSM 2 and blend_splits. Bounds: about twice the RMSE measured on lavapipe (doc/sun_sky.md).
+		// ORTHOGONAL, PSSM 2 and blend_splits. Bounds: about twice the RMSE measured on lavapipe (doc/sun_sky.md);
+		// since the biases follow Godot's metres (more offset in coarse splits: ORTHOGONAL over 100 m, PSSM 2, and
+		// the 1-texel hard PCF at 4 m), those three cases about 1.25 times their measured RMSE.
 		struct Case {
 			RS::LightDirectionalShadowMode mode;
 			float angular_distance;
@@ -207,12 +209,12 @@ TEST_CASE("[Render][DirectionalShadowRD] the shadow of a box on a plane matches 
 			{ PSSM4, 2.0f, false, 4.0f, 4, 0.04, 0.2 },
 			{ PSSM4, 2.0f, false, 15.0f, 4, 0.04, 0.2 },
 			{ PSSM4, 2.0f, false, 35.0f, 4, 0.04, 0.2 },
-			{ PSSM4, 0.0f, false, 4.0f, 4, 0.08, 0.4 },
+			{ PSSM4, 0.0f, false, 4.0f, 4, 0.09, 0.55 },
 			{ PSSM4, 0.0f, false, 15.0f, 4, 0.08, 0.4 },
 			{ PSSM4, 0.0f, false, 35.0f, 4, 0.08, 0.4 },
-			{ RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL, 2.0f, false, 4.0f, 1, 0.04, 0.2 },
+			{ RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL, 2.0f, false, 4.0f, 1, 0.065, 0.4 },
 			{ RS::LIGHT_DIRECTIONAL_SHADOW_ORTHOGONAL, 2.0f, false, 15.0f, 1, 0.04, 0.2 },
-			{ RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_2_SPLITS, 2.0f, false, 15.0f, 2, 0.04, 0.2 },
+			{ RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_2_SPLITS, 2.0f, false, 15.0f, 2, 0.06, 0.45 },
 			{ PSSM4, 2.0f, true, 15.0f, 4, 0.04, 0.2 },
 		};
 		for (const Case &c : cases) {
@@ -251,11 +253,127 @@ TEST_CASE("[Render][DirectionalShadowRD] the shadow of a box on a plane matches 
 			CHECK(shadow_pixels > 30); // The shadow is in view (else the comparison says nothing).
 			CHECK(rmse < c.bound);
 			CHECK(shadow_rmse < c.shadow_bound);
-			CHECK(std::fabs(mean_gpu - mean_ref) < 0.005);
+			CHECK(std::fabs(mean_gpu - mean_ref) < 0.007);
 		}
 		CHECK((f.renderer.get_compiled_feature_mask() & RenderForwardClustered::SCENE_VERSION_DIRECTIONAL_SHADOWS) != 0u);
 		ref_open.render_target_free(rt_open);
 		ref_shadow.render_target_free(rt_shadow);
+		f.renderer.render_target_free(rt);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+// Measured 2026-12-02 03:40 UTC on lavapipe (doc/sun_sky.md, "Depth bias"): with Godot's defaults no acne pixel
+// on the bare plane (0 of about 7000; 98 % acne with both biases 0, so the check can fail); the box's shadow
+// starts 0.05 m from its base (pixels of 0.037 m). Bounds: under 7 pixels of acne, 0.1 m.
+static const double ACNE_FRACTION_BOUND = 0.001;
+static const double PETER_PAN_BOUND_M = 0.1;
+
+TEST_CASE("[Render][DirectionalShadowRD] Godot's shadow_bias in metres: a grazing sun leaves a bare plane acne-free and a box's shadow attached") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	// The metres formula itself (Godot 4: shadow_bias / 100 * (2 radius + pancake) * shadow_blur).
+	CHECK(DirectionalShadowRD::get_bias_metres(0.1f, 5.0f, 20.0f, 1.0f) == doctest::Approx(0.03f));
+	CHECK(DirectionalShadowRD::get_bias_metres(0.1f, 5.0f, 20.0f, 2.0f) == doctest::Approx(0.06f));
+	CHECK(DirectionalShadowRD::get_normal_bias_metres(2.0f, 5.0f, 2048) == doctest::Approx(2.0f * 10.0f / 2048.0f));
+	{
+		RenderTest::RenderFixture f;
+		REQUIRE(f.init());
+		const int W = 128, H = 96;
+		RID plane = f.plane(150.0f);
+		RID box = f.mesh(RenderTest::make_box(Vector3(0.5f, 0.5f, 0.5f)));
+		RS::MaterialParams mp;
+		mp.albedo = Color(1, 1, 1, 1);
+		mp.roughness = 1.0f;
+		mp.specular = 0.0f;
+		mp.diffuse_mode = RS::MATERIAL_DIFFUSE_LAMBERT;
+		RID mat = f.material(mp);
+		RID sun = f.light_storage.light_create(RS::LIGHT_DIRECTIONAL);
+		f.lights.push_back(sun);
+		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_MAX_DISTANCE, 100.0f);
+		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_FADE_START, 0.8f);
+		f.light_storage.light_directional_set_shadow_mode(sun, RS::LIGHT_DIRECTIONAL_SHADOW_PARALLEL_4_SPLITS);
+		RID rt = f.renderer.render_target_create(W, H);
+		RenderSceneData::LightInstance l;
+		l.light = sun;
+		l.type = RS::LIGHT_DIRECTIONAL;
+		// A grazing sun, 15 degrees above the horizon: the worst case for acne on a plane.
+		const Vector3 sun_dir = Vector3(0.5f, -std::tan(Math::deg_to_rad(15.0f)), -0.866f).normalized();
+		l.transform = sun_along(sun_dir);
+
+		// 1. The bare plane seen from 1.7 m out to 100 m: every split, no caster but the plane itself.
+		auto acne_fraction = [&](float p_bias, float p_normal_bias) {
+			f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_BIAS, p_bias);
+			f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS, p_normal_bias);
+			RenderSceneData d = make_scene(camera_at(Vector3(0, 1.7f, 0), Vector3(0, 0.2f, -10.0f)), 70.0f, W, H, 200.0f);
+			add_geometry(d, plane, mat, Transform3D());
+			d.directional_lights.push_back(l);
+			f.light_storage.light_set_shadow(sun, false);
+			f.renderer.render_scene(d, rt);
+			const std::vector<float> open = f.renderer.render_target_get_data(rt);
+			f.light_storage.light_set_shadow(sun, true);
+			f.renderer.render_scene(d, rt);
+			const std::vector<float> shadowed = f.renderer.render_target_get_data(rt);
+			int plane_pixels = 0, acne = 0;
+			for (int i = 0; i < W * H; i++) {
+				if (open[i * 4 + 1] <= 1e-4f) {
+					continue; // Background.
+				}
+				plane_pixels++;
+				acne += shadowed[i * 4 + 1] / open[i * 4 + 1] < 0.98f ? 1 : 0;
+			}
+			REQUIRE(plane_pixels > W * H / 3);
+			return double(acne) / double(plane_pixels);
+		};
+		const double acne_default = acne_fraction(0.1f, 2.0f); // DirectionalLight3D's defaults.
+		const double acne_none = acne_fraction(0.0f, 0.0f);
+		MESSAGE("bare plane under a 15 degree sun: acne fraction ", acne_default, " with Godot's default biases, ", acne_none, " with none");
+		CHECK(acne_default <= ACNE_FRACTION_BOUND);
+		CHECK(acne_none > 0.05); // Without bias the same view has acne: the check above can fail.
+
+		// 2. A 1 m box on the plane, the camera 4 m away (split 0), a 35 degree sun: how far from the box's base
+		// the GPU's shadow leaves lit plane that the exact shadow (the box's silhouette cast analytically) covers.
+		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_BIAS, 0.1f);
+		f.light_storage.light_set_param(sun, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS, 2.0f);
+		const Vector3 sun2 = Vector3(0.6f, -std::tan(Math::deg_to_rad(35.0f)), 0.35f).normalized();
+		l.transform = sun_along(sun2);
+		const Transform3D cam = camera_at(Vector3(0.0f, 2.2f, 3.4f), Vector3(-0.6f, 0.0f, -0.4f));
+		RenderSceneData d = make_scene(cam, 60.0f, W, H, 200.0f);
+		add_geometry(d, plane, mat, Transform3D());
+		add_geometry(d, box, mat, Transform3D(Basis(), Vector3(0, 0.5f, 0)));
+		d.directional_lights.push_back(l);
+		f.light_storage.light_set_shadow(sun, false);
+		f.renderer.render_scene(d, rt);
+		const std::vector<float> open = f.renderer.render_target_get_data(rt);
+		f.light_storage.light_set_shadow(sun, true);
+		f.renderer.render_scene(d, rt);
+		const std::vector<float> shadowed = f.renderer.render_target_get_data(rt);
+		// Walk from the box's footprint along the shadow's axis (away from the sun, on the plane), where the exact
+		// shadow is unambiguous, until the GPU's visibility first drops below 1/2: that distance is the gap.
+		const Projection clip_from_world = Projection::create_depth_correction(true) * d.cam_projection * Projection::from_transform(cam.affine_inverse());
+		const Vector3 axis = Vector3(sun2.x, 0.0f, sun2.z).normalized();
+		const float exit = 0.5f / std::fmax(std::fabs(axis.x), std::fabs(axis.z)); // Leaves the 1 m footprint.
+		const float shadow_length = 1.0f / std::tan(Math::deg_to_rad(35.0f)); // The box top's shadow, beyond the base.
+		double gap = -1.0;
+		int samples = 0;
+		for (float t = 0.0f; t < shadow_length * 0.8f; t += 0.01f) {
+			const Vector3 p = axis * (exit + t);
+			const Vector3 c = clip_from_world.xform(p); // Divides by w.
+			const int px = int((c.x * 0.5f + 0.5f) * W), py = int((c.y * 0.5f + 0.5f) * H);
+			if (px < 0 || py < 0 || px >= W || py >= H) {
+				continue;
+			}
+			samples++;
+			const size_t i = (size_t(py) * W + px) * 4;
+			if (open[i + 1] > 1e-4f && shadowed[i + 1] / open[i + 1] < 0.5f) {
+				gap = t;
+				break;
+			}
+		}
+		MESSAGE("box on the plane under a 35 degree sun: the GPU's shadow starts ", gap, " m from the box's base along its axis (", samples, " samples; pixel about ", 2.0 * 4.1 * std::tan(Math::deg_to_rad(30.0f)) / W, " m)");
+		CHECK(samples > 0); // The base of the shadow is in view.
+		CHECK(gap >= 0.0); // The shadow is found at all.
+		CHECK(gap <= PETER_PAN_BOUND_M);
 		f.renderer.render_target_free(rt);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);

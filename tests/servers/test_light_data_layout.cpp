@@ -291,7 +291,7 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
 
 	// The colour pass with every optional block compiled in.
-	const String scene_defines = "#define USE_AREA_LIGHTS\n#define USE_DIRECTIONAL_LIGHTS\n#define USE_DIRECTIONAL_SHADOWS\n#define USE_SKY_AMBIENT\n#define AREA_METHOD_LTC\n";
+	const String scene_defines = "#define USE_AREA_LIGHTS\n#define USE_DIRECTIONAL_LIGHTS\n#define USE_DIRECTIONAL_SHADOWS\n#define USE_SKY_AMBIENT\n#define USE_SKY_REFLECTION\n#define AREA_METHOD_LTC\n";
 	const std::vector<uint32_t> scene_fragment = compile_production_stage(rd, "forward_clustered/scene_forward_clustered.glsl", scene_defines, RenderingDevice::SHADER_STAGE_FRAGMENT);
 	using SU = RenderForwardClustered::SceneDataUBO;
 	check_block(scene_fragment, "SceneDataBlock",
@@ -340,7 +340,11 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	using SK = SkyRD::SkyDataUBO;
 	check_block(compile_production_stage(rd, "sky.glsl", "", RenderingDevice::SHADER_STAGE_FRAGMENT), "SkyDataBlock",
 			{ MEMBER(SK, view_from_clip), MEMBER(SK, world_from_view), MEMBER(SK, viewport_size), MEMBER(SK, sky_top), MEMBER(SK, sky_horizon),
-					MEMBER(SK, ground_bottom), MEMBER(SK, ground_horizon), MEMBER(SK, curves), MEMBER(SK, sun_direction), MEMBER(SK, sun_radiance) });
+					MEMBER(SK, ground_bottom), MEMBER(SK, ground_horizon), MEMBER(SK, curves), MEMBER(SK, sun_direction), MEMBER(SK, sun_radiance),
+					MEMBER(SK, rayleigh_beta), MEMBER(SK, mie_beta), MEMBER(SK, physical_ground), MEMBER(SK, physical_sun), MEMBER(SK, physical_disk) });
+	using SR = SkyRD::RadiancePushConstant;
+	check_block(compile_production_stage(rd, "sky_radiance.glsl", "", RenderingDevice::SHADER_STAGE_COMPUTE), "Params",
+			{ MEMBER(SR, face), MEMBER(SR, size), MEMBER(SR, alpha), MEMBER(SR, sample_count) });
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 

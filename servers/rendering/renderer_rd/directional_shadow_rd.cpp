@@ -312,6 +312,7 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 		ShadowData &sd = block.data[si];
 		const float bias = light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_BIAS);
 		const float normal_bias = light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS);
+		const float shadow_blur = std::fmax(light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_BLUR), 0.0f);
 		for (uint32_t k = 0; k < count; k++) {
 			Split &s = splits[k];
 			Pass pass;
@@ -351,11 +352,12 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 			uv_from_clip.origin = Vector3(0.5f * (u0 + u1), 0.5f * (v0 + v1), 0.0f);
 			Projection::from_transform(uv_from_clip * pass.clip_from_world * world_from_view).to_floats(sd.shadow_from_view[k]);
 			sd.split_end[k] = s.range_end;
-			// Godot: shadow_bias / 100 times bias_scale = the split's radius over the first split's, in depth units.
-			// Units of split 0's depth range, so the offset in metres grows with the texel size (linearly: in each
-			// split's own depth units it would grow with the square, since the depth range grows too).
-			sd.bias[k] = bias / 100.0f * (s.radius / splits[0].radius) * (splits[0].z_max - splits[0].z_min) / (s.z_max - s.z_min);
-			sd.normal_bias[k] = normal_bias * 2.0f * s.radius / float(std::min(rects[k][2], rects[k][3]));
+			// Godot 4's shadow_bias, in metres: the receiver moves towards the light by shadow_bias / 100 times the
+			// split's nominal depth range (2 radius + directional_shadow_pancake_size, Godot's bias_scale) times
+			// shadow_blur (RendererSceneCull::_light_instance_setup_directional_shadow, LightStorage). Stored in
+			// this split's depth units (an orthographic depth is linear in metres).
+			sd.bias[k] = get_bias_metres(bias, s.radius, pancake, shadow_blur) / std::fmax(s.z_max - s.z_min, 1e-6f);
+			sd.normal_bias[k] = get_normal_bias_metres(normal_bias, s.radius, std::min(rects[k][2], rects[k][3]));
 			sd.radius[k] = s.radius;
 			sd.depth_range[k] = s.z_max - s.z_min;
 			sd.uv_rect[k][0] = u0;
@@ -373,7 +375,7 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 		const float angular_radius = Math::deg_to_rad(std::fmin(std::fmax(light_storage->light_get_param(light, RS::LIGHT_PARAM_SIZE), 0.0f), 90.0f)) * 0.5f;
 		sd.params2[0] = std::tan(std::fmin(angular_radius, 1.5f));
 		sd.params2[1] = std::fmin(std::fmax(light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_OPACITY), 0.0f), 1.0f);
-		sd.params2[2] = std::fmax(light_storage->light_get_param(light, RS::LIGHT_PARAM_SHADOW_BLUR), 0.0f);
+		sd.params2[2] = shadow_blur;
 		sd.params2[3] = texel_uv;
 		light_storage->directional_light_set_shadow_index(gpu_index, int32_t(si));
 	}

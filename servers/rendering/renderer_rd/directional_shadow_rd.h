@@ -48,6 +48,8 @@
 #include "servers/rendering/renderer_scene_render.h"
 #include "servers/rendering/rendering_device.h"
 
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace RendererRD {
@@ -92,6 +94,16 @@ public:
 	// p_z_near / p_z_far: the camera's planes when known (perspective; 0: read from the projection).
 	// Returns the split count (1, 2 or 4); r_splits[0..count-1] are filled.
 	static uint32_t compute_splits(const SplitSettings &p_settings, const Transform3D &p_world_from_light, const Transform3D &p_cam_transform, const Projection &p_cam_projection, Split r_splits[MAX_SPLITS], float p_z_near = 0.0f, float p_z_far = 0.0f);
+
+	// Godot 4's shadow_bias of a split in metres (the receiver moves that far towards the light):
+	// shadow_bias / 100 * (2 * radius + pancake_size) * shadow_blur, radius of the split's sphere (m).
+	static float get_bias_metres(float p_shadow_bias, float p_radius, float p_pancake_size, float p_shadow_blur) {
+		return p_shadow_bias / 100.0f * (2.0f * p_radius + std::fmax(p_pancake_size, 0.0f)) * p_shadow_blur;
+	}
+	// Godot 4's shadow_normal_bias in metres: shadow_normal_bias texels of the split, 2 * radius / side.
+	static float get_normal_bias_metres(float p_shadow_normal_bias, float p_radius, uint32_t p_side) {
+		return p_shadow_normal_bias * 2.0f * p_radius / float(p_side > 0 ? p_side : 1);
+	}
 
 	// Mirror of DirectionalShadowData in shaders/scene_forward_directional_inc.glsl (std140).
 	struct ShadowData {

@@ -189,5 +189,20 @@ void RendererEnvironmentStorage::sky_set_radiance_size(RID p_sky, int p_size) {
 void RendererEnvironmentStorage::sky_material_set_procedural(RID p_material, const RS::ProceduralSkyParams &p_params) {
 	SkyMaterial *m = sky_material_owner.get_or_null(p_material);
 	ERR_FAIL_NULL_MSG(m, "sky_material_set_procedural: invalid sky material RID.");
+	m->type = RS::SKY_MATERIAL_PROCEDURAL;
 	m->procedural = p_params;
+}
+
+void RendererEnvironmentStorage::sky_material_set_physical(RID p_material, const RS::PhysicalSkyParams &p_params) {
+	SkyMaterial *m = sky_material_owner.get_or_null(p_material);
+	ERR_FAIL_NULL_MSG(m, "sky_material_set_physical: invalid sky material RID.");
+	m->type = RS::SKY_MATERIAL_PHYSICAL;
+	m->physical = p_params;
+}
+
+void RendererEnvironmentStorage::environment_set_reflection_source(RID p_env, RS::EnvironmentReflectionSource p_source) {
+	Environment *env = environment_owner.get_or_null(p_env);
+	ERR_FAIL_NULL_MSG(env, "environment_set_reflection_source: invalid environment RID.");
+	ERR_FAIL_COND_MSG(int(p_source) < 0 || int(p_source) > int(RS::ENV_REFLECTION_SOURCE_SKY), vformat("environment_set_reflection_source: %d is not a reflected_light_source (0 BG, 1 DISABLED, 2 SKY).", int(p_source)));
+	env->reflection_source = p_source;
 }

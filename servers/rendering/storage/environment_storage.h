@@ -48,10 +48,13 @@ public:
 		float ambient_energy = 1.0f;
 		float ambient_sky_contribution = 1.0f;
 		RID sky; // RendererEnvironmentStorage sky, RID() = none.
+		RS::EnvironmentReflectionSource reflection_source = RS::ENV_REFLECTION_SOURCE_BG; // Godot's default.
 		ScreenSpaceLightingSettings ss_lighting; // SSAO/SSIL (quality fields unused: they are global).
 	};
 	struct SkyMaterial {
+		RS::SkyMaterialType type = RS::SKY_MATERIAL_PROCEDURAL;
 		RS::ProceduralSkyParams procedural;
+		RS::PhysicalSkyParams physical;
 	};
 	struct Sky {
 		RID material; // A SkyMaterial, RID() = none (Godot then draws black).
@@ -90,6 +93,8 @@ public:
 	void sky_set_material(RID p_sky, RID p_material);
 	void sky_set_radiance_size(RID p_sky, int p_size);
 	void sky_material_set_procedural(RID p_material, const RS::ProceduralSkyParams &p_params);
+	void sky_material_set_physical(RID p_material, const RS::PhysicalSkyParams &p_params);
+	void environment_set_reflection_source(RID p_env, RS::EnvironmentReflectionSource p_source);
 	const Sky *sky_get(RID p_sky) const { return sky_owner.get_or_null(p_sky); }
 	const SkyMaterial *sky_material_get(RID p_material) const { return sky_material_owner.get_or_null(p_material); }
 

@@ -282,6 +282,9 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 	if (p_key & SCENE_VERSION_DIRECTIONAL_SHADOWS) {
 		defines += "#define USE_DIRECTIONAL_SHADOWS\n";
 	}
+	if (p_key & SCENE_VERSION_SKY_REFLECTION) {
+		defines += "#define USE_SKY_REFLECTION\n";
+	}
 	return defines;
 }
 
@@ -357,7 +360,8 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		const RID directional_buffer = (p_area_methods & SCENE_VERSION_DIRECTIONAL) ? light_storage->get_directional_light_buffer() : RID();
 		const RID sky_buffer = (p_area_methods & SCENE_VERSION_SKY_AMBIENT) ? sky.get_ambient_buffer() : RID();
 		const RID sun_atlas = (p_area_methods & SCENE_VERSION_DIRECTIONAL_SHADOWS) ? directional_shadows.get_atlas_texture() : RID();
-		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer && av.scene_set_directional_shadow_atlas == sun_atlas;
+		const RID sky_radiance = (p_area_methods & SCENE_VERSION_SKY_REFLECTION) ? sky.get_radiance_texture() : RID();
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer && av.scene_set_directional_shadow_atlas == sun_atlas && av.scene_set_sky_radiance == sky_radiance;
 		if (!area_ok) {
 			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
 				rd->free(av.scene_set);
@@ -392,12 +396,18 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 18, directional_shadows.get_compare_sampler()));
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 19, directional_shadows.get_nearest_sampler()));
 			}
+			if (p_area_methods & SCENE_VERSION_SKY_REFLECTION) {
+				ERR_FAIL_COND_V_MSG(!sky_radiance.is_valid(), false, "RenderForwardClustered: a sky reflection version without the radiance cubemap.");
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 20, sky_radiance));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 21, sky.get_radiance_sampler()));
+			}
 			av.scene_set = rd->uniform_set_create(u, shader, 0);
 			av.scene_set_cluster_buffer = cluster_buffer;
 			av.scene_set_shadow_atlas = shadow_atlas;
 			av.scene_set_directional_buffer = directional_buffer;
 			av.scene_set_sky_buffer = sky_buffer;
 			av.scene_set_directional_shadow_atlas = sun_atlas;
+			av.scene_set_sky_radiance = sky_radiance;
 		}
 		if (!av.scene_set.is_valid()) {
 			return false;
@@ -519,6 +529,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	if (sky.has_frame_ambient()) {
 		area_methods |= SCENE_VERSION_SKY_AMBIENT;
 	}
+	if (sky.has_frame_reflections()) {
+		area_methods |= SCENE_VERSION_SKY_REFLECTION;
+	}
 	// SSIL / SSAO: only when the environment enables one (otherwise no pass, target or shader code).
 	const SSRadiosityRD::FrameSettings ss_frame = SSRadiosityRD::get_frame_settings(env.ss_lighting);
 	ss_radiosity.begin_frame();
@@ -610,6 +623,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		rd->capture_timestamp(prefix + "directional_shadows");
 	}
 
+	// 0c. Sky reflections: the radiance cubemap, only in a frame whose sky changed (none for a static sky).
+	if (sky.has_pending_radiance()) {
+		rd->draw_command_begin_label("Filter Sky Radiance");
+		sky.filter_radiance();
+		rd->draw_command_end_label();
+		rd->capture_timestamp(prefix + "sky_radiance");
+	}
+
 	// 1. Depth pre-pass.
 	rd->draw_command_begin_label("Render Depth Pre-Pass");
 	RD::FramebufferFormatID depth_format = rd->framebuffer_get_format(rt->fb_depth);
@@ -695,9 +716,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const int pass_count = 10;
-	const char *names[pass_count] = { "begin", "area_shadows", "directional_shadows", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky" };
-	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+	const int pass_count = 11;
+	const char *names[pass_count] = { "begin", "area_shadows", "directional_shadows", "sky_radiance", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);

@@ -23,7 +23,8 @@
 /* "cluster_build", "opaque", "ss_radiosity" (only with SSIL/SSAO),      */
 /* "sky" (only with a sky background) in ms; "directional_shadows" (the   */
 /* sun's split depth passes, after "area_shadows"; only in frames with a  */
-/* shadowed directional light).                                           */
+/* shadowed directional light); "sky_radiance" (the sky reflections'     */
+/* cubemap filter, after it; only in frames whose sky changed).          */
 /*                                                                        */
 /* Area lights: the colour pass uses variant SCENE_SHADER_COLOR_AREA      */
 /* (USE_AREA_LIGHTS) only when the view has area lights, from a ShaderRD  */
@@ -172,6 +173,7 @@ private:
 		RID scene_set_directional_buffer; // Directional light buffer scene_set was made with (RID() without).
 		RID scene_set_sky_buffer; // Sky ambient buffer scene_set was made with (RID() without).
 		RID scene_set_directional_shadow_atlas; // Directional shadow atlas scene_set was made with (RID() without).
+		RID scene_set_sky_radiance; // Sky radiance cubemap scene_set was made with (RID() without).
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
@@ -265,7 +267,9 @@ public:
 	// USE_DIRECTIONAL_SHADOWS: some directional light of the view casts shadows this frame (bindings 16-19,
 	// directional_shadow_rd.h); always together with SCENE_VERSION_DIRECTIONAL.
 	static constexpr uint32_t SCENE_VERSION_DIRECTIONAL_SHADOWS = 1u << 14;
-	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY | SCENE_VERSION_DIRECTIONAL_SHADOWS;
+	// USE_SKY_REFLECTION: the view's environment reflects the sky (bindings 20-21, SkyRD's radiance cubemap).
+	static constexpr uint32_t SCENE_VERSION_SKY_REFLECTION = 1u << 15;
+	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY | SCENE_VERSION_DIRECTIONAL_SHADOWS | SCENE_VERSION_SKY_REFLECTION;
 	// get_area_method_defines() plus the feature defines of p_key.
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).

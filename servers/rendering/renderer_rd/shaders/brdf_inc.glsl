@@ -109,6 +109,19 @@ vec3 brdf_specular(float NoV, float NoL, float NoH, float LoH, float perceptual_
 	return D * V * F;
 }
 
+// Split-sum environment BRDF (the second sum of Karis 2013), in Karis' analytic fit of the pre-integrated
+// GGX DFG table: "Physically Based Shading on Mobile" (Unreal Engine blog, 2014), after Lazarov 2013 (the
+// fit Godot 4 uses). Returns the directional albedo of the specular lobe for reflectance f0 / f90 at NoV,
+// given the PERCEPTUAL roughness; multiply by the prefiltered radiance along the reflection vector.
+vec3 brdf_env_approx(vec3 f0, float f90, float NoV, float perceptual_roughness) {
+	const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
+	const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+	vec4 r = perceptual_roughness * c0 + c1;
+	float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+	vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+	return f0 * ab.x + vec3(f90 * ab.y);
+}
+
 // Diffuse BRDF without the albedo (1/sr). p_mode is BRDF_DIFFUSE_*.
 float brdf_diffuse(uint p_mode, float NoV, float NoL, float LoH, float perceptual_roughness) {
 	if (p_mode == BRDF_DIFFUSE_LAMBERT) {

@@ -36,7 +36,7 @@ void light_process_directional(DirectionalLightData p_light, vec3 N, vec3 V, uin
 struct DirectionalShadowData {
 	mat4 shadow_from_view[4]; // View space -> (atlas u, v, depth 0..1) per split.
 	vec4 split_end; // View depth (m) where each split ends.
-	vec4 bias; // Depth offset per split (depth units).
+	vec4 bias; // Depth offset per split (depth units): Godot's shadow_bias in metres / the split's depth range.
 	vec4 normal_bias; // Receiver offset along its normal per split (m).
 	vec4 radius; // Box half side per split (m).
 	vec4 depth_range; // Metres spanned by depth 0..1 per split.
@@ -68,8 +68,9 @@ vec2 directional_shadow_disk(int p_i, float p_rotation) {
 // a blocker search over the widest penumbra the receiver can have, then PCF of width
 // 2 tan(a) (receiver - blocker) (PCSS, Fernando 2005); at least shadow_blur texels.
 float directional_shadow_split(uint p_shadow, uint p_split, vec3 p_vertex, vec3 p_normal, vec3 p_L, float p_rotation) {
-	// Normal offset (Godot's): along the normal, more at grazing light, without its component along the light.
-	vec3 offset = p_normal * ((1.0 - max(0.0, dot(p_normal, p_L))) * directional_shadows.data[p_shadow].normal_bias[p_split]);
+	// Normal offset (Godot 4's): along the normal, scaled by 1 - max(0, L.(-N)) (full on faces towards the light,
+	// less on faces turned away), without its component along the light.
+	vec3 offset = p_normal * ((1.0 - max(0.0, dot(p_L, -p_normal))) * directional_shadows.data[p_shadow].normal_bias[p_split]);
 	offset -= p_L * dot(p_L, offset);
 	vec4 c = directional_shadows.data[p_shadow].shadow_from_view[p_split] * vec4(p_vertex + offset, 1.0);
 	vec4 rect = directional_shadows.data[p_shadow].uv_rect[p_split];

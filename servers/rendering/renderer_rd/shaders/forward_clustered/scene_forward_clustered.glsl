@@ -19,6 +19,8 @@
 /* scene_forward_directional_inc.glsl); without it there is no sun code.*/
 /* USE_DIRECTIONAL_SHADOWS (with it): the sun shadow lookup, bindings 16-19. */
 /* USE_SKY_AMBIENT adds the sky's irradiance SH (binding 9, SkyRD).       */
+/* USE_SKY_REFLECTION adds the sky's prefiltered radiance to specular    */
+/* (bindings 20-21, SkyRD) times the split-sum DFG fit (brdf_inc.glsl).   */
 /* USE_SS_RADIOSITY (SSIL/SSAO on, effects/ss_radiosity_rd.h) also writes */
 /* location 1 the view normal, 2 the diffuse albedo albedo * (1 -         */
 /* metallic), 3 the ambient part of the colour (image-space radiosity     */
@@ -341,6 +343,21 @@ void main() {
 		ambient_light += sky_ambient.sh[6].rgb * (0.315392 * (3.0 * n.z * n.z - 1.0)) + sky_ambient.sh[7].rgb * (1.092548 * n.x * n.z);
 		ambient_light += sky_ambient.sh[8].rgb * (0.546274 * (n.x * n.x - n.y * n.y));
 		ambient_light = max(ambient_light, vec3(0.0)); // SH ringing must not make light negative.
+	}
+#endif
+#ifdef USE_SKY_REFLECTION
+	if (specular_enabled) {
+		// Sky reflections as Godot 4: the reflection vector bent towards the normal by roughness^2 (the
+		// dominant direction of a rough lobe), lod = sqrt(roughness) * (mips - 1), a horizon fade against
+		// reflections from below the surface, times the environment BRDF.
+		float NoV = clamp(dot(N, V), 1e-4, 1.0);
+		vec3 n_world = normalize(mat3(scene_data.world_from_view) * N);
+		vec3 r_world = normalize(mat3(scene_data.world_from_view) * reflect(-V, N));
+		r_world = normalize(mix(r_world, n_world, roughness * roughness));
+		float horizon = min(1.0 + dot(r_world, n_world), 1.0);
+		float max_lod = float(textureQueryLevels(samplerCube(sky_radiance_texture, sky_radiance_sampler)) - 1);
+		vec3 radiance = textureLod(samplerCube(sky_radiance_texture, sky_radiance_sampler), r_world, sqrt(roughness) * max_lod).rgb;
+		specular_light += radiance * (horizon * horizon) * brdf_env_approx(f0, f90, NoV, roughness);
 	}
 #endif
 	vec3 color = material.emission.rgb + (ambient_light + diffuse_light) * albedo * (1.0 - metallic) + specular_light;

@@ -116,6 +116,12 @@ layout(set = 0, binding = 9, std140) uniform SkyAmbient {
 sky_ambient;
 #endif
 
+#ifdef USE_SKY_REFLECTION
+// Sky reflections (SkyRD): the radiance cubemap, mip i prefiltered for perceptual roughness (i / (mips - 1))^2.
+layout(set = 0, binding = 20) uniform textureCube sky_radiance_texture;
+layout(set = 0, binding = 21) uniform sampler sky_radiance_sampler; // Trilinear, clamp.
+#endif
+
 /*************************************************************************/
 /* Set 1: material                                                       */
 /*************************************************************************/
