@@ -314,7 +314,9 @@ RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVaria
 }
 
 RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods) {
-	uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_area_methods & 0xFFFFu) << 16) | (uint64_t(p_format) << 32);
+	// The whole 32-bit version key: every area and feature bit selects a different shader.
+	ERR_FAIL_COND_V_MSG(p_format < 0 || p_format > 0xFFFF, RID(), vformat("RenderForwardClustered: framebuffer format id %d does not fit the pipeline key.", int(p_format)));
+	const uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_format) << 16) | (uint64_t(p_area_methods) << 32);
 	auto it = pipelines.find(key);
 	if (it != pipelines.end()) {
 		return it->second;

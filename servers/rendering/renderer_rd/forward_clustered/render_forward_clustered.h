@@ -179,7 +179,7 @@ private:
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
 	uint32_t compiled_feature_mask = 0; // Union of the SCENE_VERSION_* feature bits compiled so far.
 	bool compiled_area_shapes = false; // Some compiled area version has AREA_VERSION_SHAPES.
-	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
+	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16 | version key << 32.
 
 	bool force_all_lights = false;
 	bool area_code_disabled = false; // Benchmark baseline (set_debug_disable_area_lights).
@@ -250,8 +250,7 @@ public:
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCSS = 1u << 9;
 	// USE_AREA_SHAPES: some area light of the view is a disk, sphere or tube (area_light_shapes_inc.glsl);
 	// a view of rectangles only compiles no shape code.
-	static constexpr uint32_t AREA_VERSION_SHAPES = 1u << 15; // Below bit 16: the pipeline key keeps 16 bits of the version key.
-	static_assert(AREA_VERSION_SHAPES <= 0xFFFFu, "_get_pipeline() keys pipelines by the low 16 bits of the version key.");
+	static constexpr uint32_t AREA_VERSION_SHAPES = 1u << 16;
 	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
 	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
@@ -270,6 +269,9 @@ public:
 	// USE_SKY_REFLECTION: the view's environment reflects the sky (bindings 20-21, SkyRD's radiance cubemap).
 	static constexpr uint32_t SCENE_VERSION_SKY_REFLECTION = 1u << 15;
 	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY | SCENE_VERSION_DIRECTIONAL_SHADOWS | SCENE_VERSION_SKY_REFLECTION;
+	// Every bit of a version key means one thing (the pipeline cache keys on all 32 of them).
+	static_assert(((AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES) & SCENE_VERSION_FEATURE_BITS) == 0, "Area and scene version bits overlap.");
+	static_assert((AREA_VERSION_METHOD_BITS & (AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES)) == 0, "Area version bits overlap.");
 	// get_area_method_defines() plus the feature defines of p_key.
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
