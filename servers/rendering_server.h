@@ -391,6 +391,11 @@ public:
 	virtual void light_area_set_shadow_mode(RID p_light, LightAreaShadowMode p_mode) = 0;
 	// Sets the sample grid of LIGHT_AREA_SHADOW_FIXED: p_grid x p_grid shadow maps (2..9; others rejected).
 	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
+	// Sets the texture of an area light (upstream Godot 4.7's area_texture): the emitted radiance at
+	// each point of the rectangle is L_e times the texture's linear colour there (texels sRGB-encoded;
+	// u runs along the light's local -X, v along -Y, so the image reads upright from the lit side).
+	// RID() removes it. The renderer copies the texels into its area-light atlas once, on change.
+	virtual void light_area_set_texture(RID p_light, RID p_texture) = 0;
 	// Returns the light type (LIGHT_DIRECTIONAL for an invalid RID, with an error).
 	virtual LightType light_get_type(RID p_light) const = 0;
 	// Returns one scalar parameter (0 for an invalid RID or index).
@@ -410,6 +415,8 @@ public:
 	virtual LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
 	// Returns the shadow sample grid of an area light.
 	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
+	// Returns the texture of an area light (RID() when untextured).
+	virtual RID light_area_get_texture(RID p_light) const = 0;
 
 	/* CAMERA API */
 

@@ -85,6 +85,8 @@ public:
 	// Area-light shadows: mode and FIXED sample grid (RS::LIGHT_AREA_SHADOW_GRID_MIN..MAX).
 	virtual void light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) = 0;
 	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
+	// area_texture: a texture of the material storage, or RID() for none.
+	virtual void light_area_set_texture(RID p_light, RID p_texture) = 0;
 
 	// Returns the type (LIGHT_DIRECTIONAL with an error for an invalid RID).
 	virtual RS::LightType light_get_type(RID p_light) const = 0;
@@ -130,6 +132,7 @@ public:
 	virtual int light_area_get_stochastic_samples(RID p_light) const = 0;
 	virtual RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
 	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
+	virtual RID light_area_get_texture(RID p_light) const = 0;
 	// Returns the local-space bound (see compute_light_aabb).
 	virtual AABB light_get_aabb(RID p_light) const = 0;
 	// Returns a counter bumped whenever culling or shadows are affected (cached shadows compare it).
