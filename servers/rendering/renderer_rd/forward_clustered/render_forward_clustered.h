@@ -173,10 +173,12 @@ private:
 		RID scene_set_directional_buffer; // Directional light buffer scene_set was made with (RID() without).
 		RID scene_set_sky_buffer; // Sky ambient buffer scene_set was made with (RID() without).
 		RID scene_set_directional_shadow_atlas; // Directional shadow atlas scene_set was made with (RID() without).
+		RID scene_set_area_light_atlas; // Area light (texture) atlas scene_set was made with (RID() without).
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
 	uint32_t compiled_feature_mask = 0; // Union of the SCENE_VERSION_* feature bits compiled so far.
+	bool area_texture_compiled = false; // Some compiled version has AREA_VERSION_TEXTURE.
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | area version key << 16 | framebuffer format << 32.
 
 	bool force_all_lights = false;
@@ -246,6 +248,9 @@ public:
 	// HEURISTIC, ADAPTIVE); PCSS: some light has its PCSS_BASELINE map. Neither: no shadow code at all.
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCF = 1u << 8;
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCSS = 1u << 9;
+	// "#define AREA_LIGHT_TEXTURE\n": some area light of the view has an area_texture in the atlas
+	// (area_light_texture_inc.glsl, bindings 4 and 10). Without it no texture code and no atlas.
+	static constexpr uint32_t AREA_VERSION_TEXTURE = 1u << 13;
 	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
 	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
@@ -266,6 +271,8 @@ public:
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
 	uint32_t get_compiled_feature_mask() const { return compiled_feature_mask; }
+	// True once a version with the area-light texture code (AREA_VERSION_TEXTURE) has compiled.
+	bool is_area_texture_compiled() const { return area_texture_compiled; }
 
 	// Directional (sun) shadows: atlas, splits and passes of the last frame (tests, bench).
 	DirectionalShadowRD &get_directional_shadows() { return directional_shadows; }
