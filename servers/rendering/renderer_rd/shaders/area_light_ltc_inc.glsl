@@ -393,7 +393,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	q[3] = local_from_view * (base - hx + hy);
 
 	// Diffuse: the exact Lambert integral, (1/pi) L_e integral cos = L_e FF (albedo applied later).
-	r_diffuse += radiance * ltc_polygon_form_factor(q);
+	r_diffuse += radiance * ltc_polygon_form_factor(q) * area_texture_ltc(p_light, q, true); // Texture: area_light_texture_inc.glsl.
 
 	if (p_specular_enabled) {
 		vec4 t0; // a, b, c, d
@@ -421,19 +421,19 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 		// GLSL matrices are column-major: columns of M^-1.
 		mat3 m_inv = mat3(vec3(s * e, 0.0, -s * d), vec3(0.0, 1.0 / c, 0.0), vec3(-s * b, 0.0, s * a));
 		float spec;
+		vec3 qs[4];
+		for (int i = 0; i < 4; i++) {
+			qs[i] = m_inv * q[i];
+		}
 		if (min(min(q[0].z, q[1].z), min(q[2].z, q[3].z)) < 0.0) {
 			// The light crosses (or is below) the receiver's plane: clip to the surface horizon first.
 			spec = ltc_polygon_form_factor_horizon(q, m_inv);
 		} else {
-			vec3 qs[4];
-			for (int i = 0; i < 4; i++) {
-				qs[i] = m_inv * q[i];
-			}
 			spec = ltc_polygon_form_factor(qs);
 		}
 		// Thesis eq. 5.10.
 		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
-		r_specular += radiance * p_light.specular_amount * spec * F;
+		r_specular += radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
 	}
 }
 
