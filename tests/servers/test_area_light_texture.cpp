@@ -86,14 +86,14 @@ TEST_CASE("[AreaLightAtlas] prefiltered levels keep a constant texture constant,
 	std::vector<Image> half = AreaLightAtlas::build_levels(Image(4, 4, Color(0.5f, 0.5f, 0.5f, 0.5f)), 16);
 	CHECK(half[0].get_pixel(3, 3).r == doctest::Approx(Color::srgb_to_linear_channel(0.5f) * 0.5f).epsilon(1e-4));
 	CHECK(half[0].get_pixel(3, 3).a == doctest::Approx(0.5f));
-	// Slot layout: level 0 at the left, level L >= 1 at (C, C - C / 2^(L-1)).
+	// Slot layout: slice L is level L upsampled to C x C (the 1 x 1 level is constant).
 	std::vector<float> slot = AreaLightAtlas::pack_slot(levels);
-	REQUIRE(slot.size() == size_t(48) * 32 * 4);
-	auto at = [&](int x, int y) { return slot[(size_t(y) * 48 + x) * 4]; };
-	CHECK(at(1, 0) == levels[0].get_pixel(1, 0).r);
-	CHECK(at(32 + 3, 0 + 4) == levels[1].get_pixel(3, 4).r);
-	CHECK(at(32 + 2, 16 + 1) == levels[2].get_pixel(2, 1).r);
-	CHECK(at(32, 30) == levels[5].get_pixel(0, 0).r); // 1 x 1 at y = 32 - 32 / 16.
+	REQUIRE(slot.size() == size_t(32) * 32 * 4 * 6);
+	auto at = [&](int x, int y, int z) { return slot[((size_t(z) * 32 + y) * 32 + x) * 4]; };
+	CHECK(at(1, 0, 0) == levels[0].get_pixel(1, 0).r);
+	CHECK(at(0, 0, 0) == levels[0].get_pixel(0, 0).r);
+	CHECK(at(0, 0, 1) == doctest::Approx(levels[1].get_pixel(0, 0).r)); // Clamped at the edge.
+	CHECK(at(17, 9, 5) == doctest::Approx(levels[5].get_pixel(0, 0).r));
 }
 
 /* Rendering fixture: RD storages shared by the GPU renderer and the reference renderer */
@@ -243,7 +243,7 @@ TEST_CASE("[AreaLight3D][Texture] without a textured light there is no atlas and
 		CHECK(f.light_storage.has_textured_area_lights());
 		CHECK(f.renderer.is_area_texture_compiled());
 		const float *rect = f.light_storage.get_area_light_data()[0].texture_rect;
-		CHECK(rect[2] == doctest::Approx(2.0f / 3.0f)); // Level 0 is 2/3 of the slot's width.
+		CHECK(rect[2] == doctest::Approx(1.0f)); // The slot is the atlas' whole width.
 		CHECK(rect[3] == doctest::Approx(1.0f)); // One slot: the whole height.
 		double diff = 0.0;
 		for (size_t i = 0; i < plain.size(); i++) {

@@ -7,10 +7,11 @@
 /* uv = (0.5 - x / a, 0.5 - y / b) for the point (x, y) metres from the   */
 /* centre along the light's local +X and +Y (a, b = area_size).           */
 /*                                                                        */
-/* The atlas (storage_rd/area_light_atlas.h) holds per texture level 0    */
-/* (C x C texels) and Gaussian-prefiltered levels L (sigma = 2^L level-0  */
-/* texels, i.e. 2^L / C in uv). A footprint of sigma (uv) reads level     */
-/* log2(sigma C), blended linearly between the two nearest levels.        */
+/* The atlas (storage_rd/area_light_atlas.h, a 3D texture) holds per     */
+/* texture level 0 (C x C texels) and Gaussian-prefiltered levels L       */
+/* (sigma = 2^L level-0 texels, i.e. 2^L / C in uv) as depth slices. A    */
+/* footprint of sigma (uv) reads level log2(sigma C): one trilinear fetch */
+/* blends the two nearest levels.                                         */
 /*                                                                        */
 /* LTC (Heitz, Dupuy, Hill and Neubelt 2016, section 6, "Textured         */
 /* polygons"): L_o ~ FF(P) * T(P), FF the form factor of the polygon in   */
@@ -64,25 +65,20 @@
 
 #ifdef AREA_LIGHT_TEXTURE
 
-layout(set = 0, binding = 4) uniform texture2D area_light_atlas; // AreaLightAtlas: RGBA32F linear, premultiplied.
+layout(set = 0, binding = 4) uniform texture3D area_light_atlas; // AreaLightAtlas: RGBA32F linear, premultiplied; depth = level.
 layout(set = 0, binding = 10) uniform sampler area_light_atlas_sampler; // Linear, clamp to edge, no mipmaps.
 
 // k: footprint sigma per unit of plane distance over the light's size (see above).
 #define AREA_TEXTURE_FOOTPRINT 0.5
 
-// Level 0 texels per side (C).
-float area_texture_size(AreaLightData p_light) {
-	return floor(p_light.texture_rect.z * float(textureSize(sampler2D(area_light_atlas, area_light_atlas_sampler), 0).x) + 0.5);
-}
-
-// Bilinear fetch of level p_level (an integer) at p_uv in [0, 1]^2, clamped half a texel inside the
-// level's rect so no neighbouring level bleeds in.
-vec3 area_texture_fetch_level(vec4 p_rect, vec2 p_uv, float p_level, float p_size) {
-	float scale = exp2(-p_level);
-	vec4 r = p_level < 0.5 ? p_rect : vec4(p_rect.x + p_rect.z, p_rect.y + p_rect.w * (1.0 - 2.0 * scale), p_rect.z * scale, p_rect.w * scale);
-	float half_texel = 0.5 / (p_size * scale);
+// Trilinear fetch at p_uv in [0, 1]^2 (clamped half a texel inside the slot, so no other slot bleeds in)
+// and level p_lod in [0, levels - 1]: slices floor(lod) and floor(lod) + 1 blended by fract(lod).
+vec3 area_texture_fetch(vec4 p_rect, vec2 p_uv, float p_lod) {
+	ivec3 size = textureSize(sampler3D(area_light_atlas, area_light_atlas_sampler), 0);
+	float half_texel = 0.5 / (p_rect.w * float(size.y)); // The slot's C texels per side.
 	vec2 uv = clamp(p_uv, vec2(half_texel), vec2(1.0 - half_texel));
-	return textureLod(sampler2D(area_light_atlas, area_light_atlas_sampler), r.xy + uv * r.zw, 0.0).rgb;
+	float z = (clamp(p_lod, 0.0, float(size.z - 1)) + 0.5) / float(size.z);
+	return textureLod(sampler3D(area_light_atlas, area_light_atlas_sampler), vec3(p_rect.xy + uv * p_rect.zw, z), 0.0).rgb;
 }
 
 // The texture at p_uv prefiltered with a Gaussian of p_sigma_uv (uv units): 1 for an untextured light.
@@ -90,16 +86,8 @@ vec3 area_texture_filtered(AreaLightData p_light, vec2 p_uv, float p_sigma_uv) {
 	if (!(p_light.texture_rect.z > 0.0)) {
 		return vec3(1.0);
 	}
-	float size = area_texture_size(p_light);
-	float max_level = log2(size);
-	float lod = clamp(log2(max(p_sigma_uv * size, 1e-6)), 0.0, max_level);
-	float level = floor(lod);
-	float t = lod - level;
-	vec3 c = area_texture_fetch_level(p_light.texture_rect, p_uv, level, size);
-	if (t > 0.0) {
-		c = mix(c, area_texture_fetch_level(p_light.texture_rect, p_uv, min(level + 1.0, max_level), size), t);
-	}
-	return c;
+	float size = p_light.texture_rect.w * float(textureSize(sampler3D(area_light_atlas, area_light_atlas_sampler), 0).y);
+	return area_texture_fetch(p_light.texture_rect, p_uv, log2(max(p_sigma_uv * size, 1e-6)));
 }
 
 // uv of the plane point p_coords (metres from the centre along the light's unit +X, +Y), p_half = a/2, b/2.
@@ -113,7 +101,7 @@ vec3 area_texture_point(AreaLightData p_light, vec3 p_rel, vec3 p_ax, vec3 p_ay,
 		return vec3(1.0);
 	}
 	vec2 uv = area_texture_uv(vec2(dot(p_rel, p_ax), dot(p_rel, p_ay)), p_half);
-	return area_texture_fetch_level(p_light.texture_rect, uv, 0.0, area_texture_size(p_light));
+	return area_texture_fetch(p_light.texture_rect, uv, 0.0);
 }
 
 // MRP: the texture at the representative point p_coords (light-plane metres) for a footprint of

@@ -160,14 +160,29 @@ std::vector<Image> AreaLightAtlas::build_levels(const Image &p_image, uint32_t p
 std::vector<float> AreaLightAtlas::pack_slot(const std::vector<Image> &p_levels) {
 	ERR_FAIL_COND_V(p_levels.empty(), std::vector<float>());
 	const int n = p_levels[0].get_width();
-	const int width = n + n / 2;
-	std::vector<float> out(size_t(width) * n * 4, 0.0f);
+	const size_t slice = size_t(n) * n * 4;
+	std::vector<float> out(slice * p_levels.size(), 0.0f);
+	std::vector<float> rows, column_src, column_dst(size_t(n) * 4);
 	for (size_t l = 0; l < p_levels.size(); l++) {
 		const int ln = p_levels[l].get_width();
-		const int ox = l == 0 ? 0 : n;
-		const int oy = l == 0 ? 0 : n - (n >> (l - 1));
+		float *dst = &out[slice * l];
+		if (ln == n) {
+			memcpy(dst, p_levels[l].ptr(), slice * sizeof(float));
+			continue;
+		}
+		rows.assign(size_t(n) * ln * 4, 0.0f);
 		for (int y = 0; y < ln; y++) {
-			memcpy(&out[(size_t(oy + y) * width + ox) * 4], p_levels[l].ptr() + size_t(y) * ln * 4, size_t(ln) * 4 * sizeof(float));
+			_resample_1d(p_levels[l].ptr() + size_t(y) * ln * 4, ln, &rows[size_t(y) * n * 4], n);
+		}
+		column_src.assign(size_t(ln) * 4, 0.0f);
+		for (int x = 0; x < n; x++) {
+			for (int y = 0; y < ln; y++) {
+				memcpy(&column_src[size_t(y) * 4], &rows[(size_t(y) * n + x) * 4], 4 * sizeof(float));
+			}
+			_resample_1d(column_src.data(), ln, column_dst.data(), n);
+			for (int y = 0; y < n; y++) {
+				memcpy(&dst[(size_t(y) * n + x) * 4], &column_dst[size_t(y) * 4], 4 * sizeof(float));
+			}
 		}
 	}
 	return out;
@@ -234,10 +249,10 @@ bool AreaLightAtlas::get_rect(RID p_texture, float r_rect[4]) const {
 	if (it == slots.end() || !texture.is_valid()) {
 		return false;
 	}
-	const float atlas_w = float(size + size / 2), atlas_h = float(rows * size);
+	const float atlas_h = float(rows * size);
 	r_rect[0] = 0.0f;
 	r_rect[1] = float(it->second.row * size) / atlas_h;
-	r_rect[2] = float(size) / atlas_w;
+	r_rect[2] = 1.0f;
 	r_rect[3] = float(size) / atlas_h;
 	return true;
 }
@@ -245,12 +260,16 @@ bool AreaLightAtlas::get_rect(RID p_texture, float r_rect[4]) const {
 void AreaLightAtlas::_rebuild_texture() {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	ERR_FAIL_NULL(rd);
-	const uint32_t width = size + size / 2, height = rows * size;
+	uint32_t depth = 1;
+	while ((size >> (depth - 1)) > 1) {
+		depth++;
+	}
+	const uint32_t width = size, height = rows * size;
 	RD::TextureFormat current;
 	if (texture.is_valid()) {
 		current = rd->texture_get_format(texture);
 	}
-	if (!texture.is_valid() || current.width != width || current.height != height) {
+	if (!texture.is_valid() || current.width != width || current.height != height || current.depth != depth) {
 		if (texture.is_valid()) {
 			rd->free(texture);
 		}
@@ -258,6 +277,8 @@ void AreaLightAtlas::_rebuild_texture() {
 		tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
 		tf.width = width;
 		tf.height = height;
+		tf.depth = depth;
+		tf.texture_type = RD::TEXTURE_TYPE_3D;
 		tf.usage_bits = RD::TEXTURE_USAGE_SAMPLING_BIT | RD::TEXTURE_USAGE_CAN_UPDATE_BIT;
 		texture = rd->texture_create(tf);
 		ERR_FAIL_COND_MSG(!texture.is_valid(), "AreaLightAtlas: cannot create the area light atlas texture.");
@@ -266,14 +287,19 @@ void AreaLightAtlas::_rebuild_texture() {
 	if (!sampler.is_valid()) {
 		RD::SamplerState ss;
 		ss.mag_filter = RD::SAMPLER_FILTER_LINEAR;
-		ss.min_filter = RD::SAMPLER_FILTER_LINEAR;
+		ss.min_filter = RD::SAMPLER_FILTER_LINEAR; // Along the depth too: two levels blended in one fetch.
 		ss.max_lod = 0.0f;
 		sampler = rd->sampler_create(ss);
 	}
-	const size_t slot_floats = size_t(width) * size * 4;
-	std::vector<uint8_t> bytes(slot_floats * rows * sizeof(float), 0);
+	// Slice z of the atlas holds slice z of every slot, slot `row` at rows [row * C, (row + 1) * C).
+	const size_t slot_slice = size_t(size) * size * 4; // Floats of one slot in one slice.
+	std::vector<uint8_t> bytes(slot_slice * rows * depth * sizeof(float), 0);
+	float *dst = reinterpret_cast<float *>(bytes.data());
 	for (const auto &kv : slots) {
-		memcpy(bytes.data() + size_t(kv.second.row) * slot_floats * sizeof(float), kv.second.texels.data(), slot_floats * sizeof(float));
+		ERR_CONTINUE(kv.second.texels.size() != slot_slice * depth);
+		for (uint32_t z = 0; z < depth; z++) {
+			memcpy(dst + (size_t(z) * rows + kv.second.row) * slot_slice, kv.second.texels.data() + size_t(z) * slot_slice, slot_slice * sizeof(float));
+		}
 	}
 	rd->texture_update(texture, 0, bytes);
 	uploads++;

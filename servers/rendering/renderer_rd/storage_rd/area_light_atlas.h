@@ -5,14 +5,13 @@
 /* upstream Godot 4.7's separate atlas with prefiltered mip levels).      */
 /*                                                                        */
 /* Each texture becomes one SLOT: its linear, alpha-premultiplied colour  */
-/* resampled to C x C texels (C = the project setting SETTING_SIZE), and  */
-/* the prefiltered levels 1..log2(C) packed beside it ("mip strip"):      */
-/*   level 0 at texel (0, row * C), C x C;                                */
-/*   level L >= 1 at (C, row * C + C - C / 2^(L-1)), (C / 2^L)^2.         */
-/* A slot is 1.5 C x C; slots stack vertically (atlas 1.5 C x rows * C,   */
-/* rows a power of two, grown on demand). The levels are packed by hand   */
-/* because RenderingDevice uploads mip 0 only; the shader filters between */
-/* two levels itself (shaders/area_light_texture_inc.glsl).               */
+/* resampled to C x C texels (C = the project setting SETTING_SIZE) and   */
+/* the prefiltered levels 0..log2(C), each upsampled back to C x C        */
+/* (bilinear) and stored as the depth slices of a 3D texture: slice L is  */
+/* level L. Slots stack vertically (atlas C x rows * C x (log2(C) + 1),   */
+/* rows a power of two, grown on demand). A 3D texture instead of a mip   */
+/* chain: RenderingDevice uploads mip 0 only, and linear filtering along  */
+/* the depth blends two levels in ONE fetch (the shader's cost).          */
 /*                                                                        */
 /* Prefilter (Heitz, Dupuy, Hill and Neubelt 2016, section 6: the texture */
 /* is prefiltered with Gaussians so a fetch returns the average under the */
@@ -65,7 +64,8 @@ public:
 	static std::vector<Image> build_levels(const Image &p_image, uint32_t p_size);
 	// The Gaussian sigma of level p_level in level-0 texels (0 for level 0).
 	static float get_level_sigma(uint32_t p_level) { return p_level == 0 ? 0.0f : float(1u << p_level); }
-	// The levels packed as one slot, 1.5 C x C float RGBA texels (top row first), unused texels 0.
+	// The levels packed as one slot: slice L (level L upsampled to C x C, bilinear between texel centres,
+	// clamped at the edges) at floats [L * C * C * 4, (L + 1) * C * C * 4), rows top first.
 	static std::vector<float> pack_slot(const std::vector<Image> &p_levels);
 
 private:
@@ -87,7 +87,7 @@ private:
 	uint32_t uploads = 0; // Atlas uploads so far.
 	uint32_t dropped = 0; // Textures of the last update that found no slot.
 	uint32_t warned_dropped = 0;
-	RID texture; // RGBA32F, 1.5 C x rows * C.
+	RID texture; // RGBA32F 3D, C x rows * C x (log2(C) + 1).
 	RID sampler; // Linear, clamp to edge, no mipmaps.
 
 	bool _find_free_row(uint32_t &r_row) const;
