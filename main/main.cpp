@@ -46,10 +46,11 @@
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
 #include "scene/resources/resource_format_text.h"
-#include "servers/rendering/renderer_rd/area_method_selector.h"
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/area_lights/area_method_selector.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_rd/directional_shadow_rd.h"
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/rendering_device.h"
 #include "servers/rendering/rendering_profiler.h"
@@ -599,6 +600,7 @@ void _register_project_settings() {
 	AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction();
 	RendererRD::LightStorage::get_project_max_lights();
 	DirectionalShadowRD::get_project_atlas_size();
+	AreaShadowRendererRD::get_project_filter();
 	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_size", int(AreaShadowAtlas::DEFAULT_SIZE));
 	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_subdivision", int(AreaShadowAtlas::DEFAULT_SUBDIVISION));
 	set_error_print_silenced(false);

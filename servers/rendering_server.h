@@ -542,6 +542,17 @@ public:
 	// The viewport's atlas size and subdivision (0, 0 while it uses the renderer's default).
 	virtual int area_shadow_atlas_get_size(RID p_viewport) const = 0;
 	virtual int area_shadow_atlas_get_subdivision(RID p_viewport) const = 0;
+	// How each sample map's depth lookup is filtered (Godot's soft_shadow_filter_quality is the same kind
+	// of global choice). The project setting rendering/lights_and_shadows/area_shadow_filter gives the
+	// start value.
+	enum AreaShadowFilter {
+		AREA_SHADOW_FILTER_PCF, // The fixed-size PCF kernel of shadow_blur on every map (thesis 6.1 as written).
+		AREA_SHADOW_FILTER_PENUMBRA, // Default: filtered over the penumbra of the light cell the map's sample
+		// point stands for (shaders/area_light_shadow_inc.glsl, doc/shadows.md "The default").
+		AREA_SHADOW_FILTER_MAX,
+	};
+	virtual void area_shadow_filter_set_mode(AreaShadowFilter p_filter) = 0;
+	virtual AreaShadowFilter area_shadow_filter_get_mode() const = 0;
 	static constexpr int AREA_SHADOW_ATLAS_SIZE_MIN = 256;
 	static constexpr int AREA_SHADOW_ATLAS_SIZE_MAX = 16384;
 	static constexpr int AREA_SHADOW_ATLAS_SUBDIVISION_MIN = 1;

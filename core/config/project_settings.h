@@ -10,7 +10,7 @@
 /* Registered by the engine so far:                                       */
 /*   rendering/lights_and_shadows/area_light_error_budget (float, 0.05):  */
 /*     the largest predicted mean LDR-FLIP an AUTO area light may show    */
-/*     (see servers/rendering/renderer_rd/area_method_selector.h).        */
+/*     (see renderer_rd/area_lights/area_method_selector.h).              */
 /*   rendering/lights_and_shadows/area_light_auto_default_roughness       */
 /*     (float, 0.5): the dominant roughness AUTO assumes when no visible  */
 /*     receiver lies in a light's influence box.                          */

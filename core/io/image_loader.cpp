@@ -4,6 +4,7 @@
 
 #include "core/io/image_loader.h"
 
+#include "core/io/file_io.h"
 #include "drivers/png/png_reader.h"
 #include "modules/openexr/image_loader_exr.h"
 
@@ -18,6 +19,7 @@
 #define STBI_NO_PNM
 #define STBI_NO_GIF
 #include <stb/stb_image.h>
+#include <webp/decode.h>
 
 static String _ext_of(const String &p_path) {
 	size_t dot = p_path.rfind('.');
@@ -30,7 +32,7 @@ static String _ext_of(const String &p_path) {
 }
 
 const std::vector<String> &ImageLoader::get_recognized_extensions() {
-	static const std::vector<String> exts = { "png", "jpg", "jpeg", "bmp", "tga", "hdr", "exr" };
+	static const std::vector<String> exts = { "png", "jpg", "jpeg", "bmp", "tga", "hdr", "webp", "exr" };
 	return exts;
 }
 
@@ -47,6 +49,31 @@ static bool _from_rgba8(const uint8_t *p_data, int p_w, int p_h, Image &r_image)
 	return r_image.set_data(p_w, p_h, f);
 }
 
+// WebP (Godot's default lossy/lossless import format) through libwebp: the file is read with the
+// 256 MiB bound, its header checked against Image::MAX_SIZE before decoding.
+static bool _load_webp(const String &p_path, Image &r_image, String *r_error) {
+	String bytes;
+	if (!file_read_bounded(p_path, bytes, r_error)) {
+		return false;
+	}
+	const uint8_t *data = reinterpret_cast<const uint8_t *>(bytes.data());
+	int w = 0, h = 0;
+	if (!WebPGetInfo(data, bytes.size(), &w, &h)) {
+		*r_error = vformat("%s: not a WebP image (bad RIFF/WEBP header).", p_path.c_str());
+		return false;
+	}
+	if (w <= 0 || h <= 0 || w > Image::MAX_SIZE || h > Image::MAX_SIZE) {
+		*r_error = vformat("%s: the WebP image is %dx%d; sizes must be 1..%d.", p_path.c_str(), w, h, Image::MAX_SIZE);
+		return false;
+	}
+	std::vector<uint8_t> rgba(size_t(w) * h * 4);
+	if (!WebPDecodeRGBAInto(data, bytes.size(), rgba.data(), rgba.size(), w * 4)) {
+		*r_error = vformat("%s: cannot decode the WebP image (truncated or corrupt).", p_path.c_str());
+		return false;
+	}
+	return _from_rgba8(rgba.data(), w, h, r_image);
+}
+
 bool ImageLoader::load_image(const String &p_path, Image &r_image, String *r_error) {
 	r_image.clear();
 	String ext = _ext_of(p_path);
@@ -59,6 +86,8 @@ bool ImageLoader::load_image(const String &p_path, Image &r_image, String *r_err
 		std::vector<uint8_t> rgba;
 		int w = 0, h = 0;
 		ok = PNGReader::load(p_path, rgba, w, h, &err) && _from_rgba8(rgba.data(), w, h, r_image);
+	} else if (ext == "webp") {
+		ok = _load_webp(p_path, r_image, &err);
 	} else if (ext == "exr") {
 		ok = ImageLoaderEXR::load(p_path, r_image, &err);
 	} else if (ext == "hdr") {

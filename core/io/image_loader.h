@@ -3,8 +3,9 @@
 /**************************************************************************/
 /* godot-area: reads image files for textures, by extension, through      */
 /* Debian-packaged libraries: PNG with libpng (drivers/png), JPEG, BMP,   */
-/* TGA and Radiance HDR with stb_image (libstb-dev), OpenEXR with         */
-/* OpenEXR (modules/openexr). 8-bit files give texels/255 as stored       */
+/* TGA and Radiance HDR with stb_image (libstb-dev), WebP (lossy and     */
+/* lossless) with libwebp, OpenEXR with OpenEXR (modules/openexr).        */
+/* 8-bit files give texels/255 as stored                                  */
 /* (colour textures stay sRGB-encoded; the renderer decodes them), HDR    */
 /* and EXR give their linear floats.                                      */
 

@@ -12,7 +12,7 @@ PACKAGES=(
 	# Shader compilation at run time and SPIR-V reflection.
 	glslang-dev glslang-tools spirv-tools
 	# Image output and scene import.
-	libopenexr-dev libpng-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+	libopenexr-dev libpng-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libwebp-dev
 	# CPU reference renderer (ray tracing).
 	libembree-dev
 	# Tests, and the format check (misc/scripts/check_format.sh).

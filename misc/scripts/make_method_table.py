@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # godot-area: reduces the accuracy suite (all methods) and the method sweep to the AUTO prediction
-# table servers/rendering/renderer_rd/area_method_error_table.inc (AreaMethodSelector).
+# table servers/rendering/renderer_rd/area_lights/area_method_error_table.inc (AreaMethodSelector).
 #
 #   misc/scripts/make_method_table.py ACCURACY_CSV SWEEP_CSV [OUT_INC]
 #
@@ -48,7 +48,7 @@ def main():
 		print(__doc__ or "usage: make_method_table.py ACCURACY_CSV SWEEP_CSV [OUT_INC]")
 		return 2
 	acc, sweep = sys.argv[1], sys.argv[2]
-	out = sys.argv[3] if len(sys.argv) > 3 else "servers/rendering/renderer_rd/area_method_error_table.inc"
+	out = sys.argv[3] if len(sys.argv) > 3 else "servers/rendering/renderer_rd/area_lights/area_method_error_table.inc"
 	sums = {}
 	for row in csv.DictReader(open(acc)):
 		m = int(row["method"])

@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from chart_io import save_figure  # noqa: E402
 
 STYLES = {
 	"ADAPTIVE": dict(color="tab:red", marker="o"),
@@ -86,7 +87,7 @@ def main():
 	fig.tight_layout()
 	os.makedirs(args.out, exist_ok=True)
 	out = os.path.join(args.out, "dolly.png")
-	fig.savefig(out, dpi=90)
+	save_figure(fig, out, dpi=90)
 	print("wrote " + out)
 	# Markdown table for doc/shadows.md: one column per position, one row per mode and quantity.
 	print("\n| distance (m) | " + " | ".join("%.2g" % d for d in sorted(distances, reverse=True)) + " |")

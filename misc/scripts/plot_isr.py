@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from chart_io import save_figure  # noqa: E402
 
 
 def main():
@@ -41,7 +42,7 @@ def main():
 		ax.grid(alpha=0.3)
 	axes[0].legend()
 	fig.tight_layout()
-	fig.savefig(os.path.join(out, "isr_quality.png"), dpi=110)
+	save_figure(fig, os.path.join(out, "isr_quality.png"), dpi=110)
 
 	fig, axes = plt.subplots(1, 2, figsize=(11, 4))
 	sizes = sorted({(int(r["width"]), int(r["height"])) for r in timing})
@@ -57,7 +58,7 @@ def main():
 		ax.grid(alpha=0.3)
 		ax.legend()
 	fig.tight_layout()
-	fig.savefig(os.path.join(out, "isr_timing.png"), dpi=110)
+	save_figure(fig, os.path.join(out, "isr_timing.png"), dpi=110)
 
 	print("| scene | frame | improved | mean error DL | mean error ISR | gain | Pearson DL | Pearson ISR |")
 	print("|---|---|---|---|---|---|---|---|")

@@ -17,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+from chart_io import save_figure  # noqa: E402
 
 ORDER = ["LTC", "LTC_POLYNOMIAL", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI"]
 LABEL = {"LTC": "LTC (LUT)", "LTC_POLYNOMIAL": "LTC poly", "MRP": "MRP", "MC1": "MC 1", "MC4": "MC 4", "MC16": "MC 16", "SPOT": "spot", "OMNI": "omni"}
@@ -67,7 +68,7 @@ def main():
 	ax.grid(True, which="both", alpha=0.3)
 	ax.legend(fontsize=8, ncol=2)
 	fig.tight_layout()
-	fig.savefig(os.path.join(a.out, "methods_lights.png"))
+	save_figure(fig, os.path.join(a.out, "methods_lights.png"))
 	plt.close(fig)
 
 	# (a) Pareto: per-light cost vs mean FLIP on the error scenes.
@@ -96,7 +97,7 @@ def main():
 	ax.grid(True, which="both", alpha=0.3)
 	ax.legend(fontsize=8)
 	fig.tight_layout()
-	fig.savefig(os.path.join(a.out, "methods_pareto.png"))
+	save_figure(fig, os.path.join(a.out, "methods_pareto.png"))
 	plt.close(fig)
 
 	# (c) Error maps of the failure scenes: one PNG per scene, one row per method.
@@ -118,7 +119,7 @@ def main():
 				flip = errors.get(c, {}).get(scene)
 				fig.text(0.01, 1.0 - (i + 0.5) * (h / 100.0) / ((h / 100.0) * len(rows) + 0.35) - 0.3 / ((h / 100.0) * len(rows) + 0.35), "%s\nFLIP %.3f" % (LABEL[c], flip) if flip is not None else LABEL[c], fontsize=7, va="center")
 			fig.text(0.5, 0.995, "%s: engine | reference | FLIP" % scene, ha="center", va="top", fontsize=8)
-			fig.savefig(os.path.join(a.out, "methods_failure_%s.png" % scene))
+			save_figure(fig, os.path.join(a.out, "methods_failure_%s.png" % scene))
 			plt.close(fig)
 
 	# Closing numbers.

@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from chart_io import save_figure  # noqa: E402
 
 
 def load(path):
@@ -71,7 +72,7 @@ def main():
 		axes[0][0].set_ylabel("visibility RMSE vs Embree reference")
 		axes[0][-1].legend(fontsize=7)
 		fig.tight_layout()
-		fig.savefig(os.path.join(args.out, "shadows_error.png"), dpi=110)
+		save_figure(fig, os.path.join(args.out, "shadows_error.png"), dpi=110)
 
 		print("| shadow_blur | atlas | " + " | ".join(f"{m} maps" for m in sorted(next(iter(errors[blurs[0]].values())))) + " | PCSS (1 map) | optimum |")
 		print("|---|---|" + "---|" * (len(next(iter(errors[blurs[0]].values()))) + 2))
@@ -114,7 +115,7 @@ def main():
 		ax.grid(alpha=0.3)
 		ax.legend(fontsize=8)
 		fig.tight_layout()
-		fig.savefig(os.path.join(args.out, "shadows_timing.png"), dpi=110)
+		save_figure(fig, os.path.join(args.out, "shadows_timing.png"), dpi=110)
 
 
 if __name__ == "__main__":

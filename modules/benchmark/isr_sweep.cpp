@@ -6,13 +6,8 @@
 
 #include "core/io/image.h"
 #include "modules/metrics/image_metrics.h"
-#include "servers/rendering/dummy/storage/light_storage.h"
-#include "servers/rendering/dummy/storage/material_storage.h"
-#include "servers/rendering/dummy/storage/mesh_storage.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "modules/reference/renderer_compositor_reference.h"
+#include "scene/main/godot_instance.h"
 
 #include <cmath>
 
@@ -33,92 +28,75 @@ ReferenceRenderOptions IsrSweep::truth_options(int p_bounce_samples) {
 	return o;
 }
 
-bool IsrSweep::render_gpu(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ScreenSpaceLightingSettings &p_settings, IsrImages &r_images, String *r_error) {
-	RenderingDevice *rd = RenderingDevice::get_singleton();
-	if (!rd || !rd->is_initialized()) {
-		if (r_error) {
-			*r_error = "IsrSweep: no initialized RenderingDevice (Vulkan) for the Forward+ renderer.";
-		}
-		return false;
-	}
-	bool ok = true;
-	{
-		RendererRD::LightStorage light_storage;
-		RendererRD::MeshStorage mesh_storage;
-		RendererRD::MaterialStorage material_storage;
-		RenderForwardClustered renderer(&light_storage, &mesh_storage, &material_storage);
-		ok = material_storage.initialize_gpu() && light_storage.initialize_gpu(64) && renderer.initialize(64);
-		std::vector<RID> meshes, materials, lights;
-		RID rt;
-		if (ok) {
-			RenderSceneData d = p_scene.make_view(p_frame, p_width, p_height);
-			p_scene.build(mesh_storage, material_storage, light_storage, d, meshes, materials, lights);
-			rt = renderer.render_target_create(p_width, p_height);
-			ok = rt.is_valid();
-			if (ok) {
-				renderer.render_scene(d, rt);
-				r_images.direct = renderer.render_target_get_data(rt);
-				d.environment.ss_lighting = p_settings;
-				renderer.render_scene(d, rt);
-				r_images.isr = renderer.render_target_get_data(rt);
-				ok = r_images.direct.size() == size_t(p_width) * p_height * 4 && r_images.isr.size() == r_images.direct.size();
-				renderer.render_target_free(rt);
+// The RenderingServer to draw with: the running engine's when it has p_backend, else p_own started
+// here (with p_compositor for BACKEND_CUSTOM; owned from here on). Null with r_error otherwise.
+static RenderingServer *_isr_server(GodotInstance &p_own, GodotInstance::Backend p_backend, RendererCompositor *p_compositor, String *r_error) {
+	GodotInstance *running = GodotInstance::get_singleton();
+	if (running && running->is_started()) {
+		delete p_compositor;
+		if (p_backend != GodotInstance::BACKEND_RD || running->get_backend() != p_backend) {
+			if (r_error) {
+				*r_error = "IsrSweep: another engine instance is running with a different renderer; stop it first.";
 			}
+			return nullptr;
 		}
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
+		return running->get_rendering_server();
 	}
-	if (!ok && r_error) {
-		*r_error = "IsrSweep: the Forward+ renderer failed to render the frame.";
+	String error;
+	const bool ok = p_compositor ? p_own.start_with_compositor(p_compositor, &error) : p_own.start(p_backend, &error, 64);
+	if (!ok) {
+		if (r_error) {
+			*r_error = "IsrSweep: " + error;
+		}
+		return nullptr;
 	}
+	return p_own.get_rendering_server();
+}
+
+// Draws frame p_frame of p_scene at p_width x p_height through a RenderingServer of p_backend (see
+// _isr_server); p_draw reads the images off the view and returns whether they are whole. On failure
+// r_error says what failed (p_renderer names the renderer).
+template <class F>
+static bool _isr_render(const IsrScene &p_scene, int p_frame, int p_width, int p_height, GodotInstance::Backend p_backend, RendererCompositor *p_compositor, const char *p_renderer, IsrImages &r_images, String *r_error, F p_draw) {
 	r_images.width = p_width;
 	r_images.height = p_height;
+	GodotInstance own;
+	RenderingServer *rs = _isr_server(own, p_backend, p_compositor, r_error);
+	if (!rs) {
+		return false;
+	}
+	IsrServerScene view;
+	bool ok = view.create(rs, p_scene, p_width, p_height);
+	if (ok) {
+		view.set_frame(p_frame);
+		ok = p_draw(view);
+	}
+	view.free();
+	if (!ok && r_error) {
+		*r_error = vformat("IsrSweep: the %s failed to render the frame.", p_renderer);
+	}
 	return ok;
 }
 
+bool IsrSweep::render_gpu(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ScreenSpaceLightingSettings &p_settings, IsrImages &r_images, String *r_error) {
+	const size_t pixels = size_t(p_width) * p_height * 4;
+	return _isr_render(p_scene, p_frame, p_width, p_height, GodotInstance::BACKEND_RD, nullptr, "Forward+ renderer", r_images, r_error, [&](IsrServerScene &p_view) {
+		ScreenSpaceLightingSettings off = p_settings;
+		off.ssil_enabled = false;
+		p_view.set_screen_space_lighting(off);
+		r_images.direct = p_view.draw().get_data();
+		p_view.set_screen_space_lighting(p_settings);
+		r_images.isr = p_view.draw().get_data();
+		return r_images.direct.size() == pixels && r_images.isr.size() == pixels;
+	});
+}
+
 bool IsrSweep::render_truth(const IsrScene &p_scene, int p_frame, int p_width, int p_height, const ReferenceRenderOptions &p_options, IsrImages &r_images, String *r_error) {
-	RendererDummy::LightStorage light_storage;
-	RendererDummy::MeshStorage mesh_storage;
-	RendererDummy::MaterialStorage material_storage;
-	std::vector<RID> meshes, materials, lights;
-	bool ok = false;
-	{
-		ReferenceRenderer renderer(&light_storage, &mesh_storage, &material_storage, p_options);
-		RenderSceneData d = p_scene.make_view(p_frame, p_width, p_height);
-		p_scene.build(mesh_storage, material_storage, light_storage, d, meshes, materials, lights);
-		RID rt = renderer.render_target_create(p_width, p_height);
-		if (rt.is_valid()) {
-			renderer.render_scene(d, rt);
-			r_images.truth = renderer.render_target_get_data(rt);
-			renderer.render_target_free(rt);
-			ok = r_images.truth.size() == size_t(p_width) * p_height * 4;
-		}
-	}
-	for (RID m : meshes) {
-		mesh_storage.mesh_free(m);
-	}
-	for (RID m : materials) {
-		material_storage.material_free(m);
-	}
-	for (RID l : lights) {
-		light_storage.light_free(l);
-	}
-	if (!ok && r_error) {
-		*r_error = "IsrSweep: the Embree reference failed to render the frame.";
-	}
-	r_images.width = p_width;
-	r_images.height = p_height;
-	return ok;
+	const size_t pixels = size_t(p_width) * p_height * 4;
+	return _isr_render(p_scene, p_frame, p_width, p_height, GodotInstance::BACKEND_CUSTOM, new RendererCompositorReference(p_options), "Embree reference", r_images, r_error, [&](IsrServerScene &p_view) {
+		r_images.truth = p_view.draw().get_data();
+		return r_images.truth.size() == pixels;
+	});
 }
 
 static Image _isr_to_image(const std::vector<float> &p_rgba, int p_w, int p_h) {

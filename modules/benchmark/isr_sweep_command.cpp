@@ -10,16 +10,14 @@
 #include "modules/benchmark/bench_charts.h"
 #include "modules/benchmark/isr_sweep.h"
 #include "scene/main/godot_instance.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
-#include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "servers/rendering_server.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <memory>
 
 namespace {
 
@@ -62,8 +60,8 @@ double median(std::vector<double> p_v) {
 	return p_v[p_v.size() / 2];
 }
 
-double profile_ms(const RenderForwardClustered &p_renderer, const char *p_name) {
-	for (const auto &kv : p_renderer.get_last_frame_profile()) {
+double profile_ms(const RenderingServer *p_rs, const char *p_name) {
+	for (const auto &kv : p_rs->get_frame_profile()) {
 		if (kv.first == p_name) {
 			return kv.second;
 		}
@@ -71,92 +69,73 @@ double profile_ms(const RenderForwardClustered &p_renderer, const char *p_name) 
 	return 0.0;
 }
 
-// The timing part: one renderer, every configuration one frame per round.
+// The timing part: one engine, every configuration a viewport of its own (the room in a scenario of
+// its own, as its SSIL settings live in the scenario's environment), one frame per round each.
 bool run_timing(int p_rounds, bool p_progress, std::vector<TimingRow> &r_rows, String *r_error) {
 	const int sizes[3][2] = { { 160, 120 }, { 320, 240 }, { 640, 480 } };
 	const int samples[4] = { 0, 24, 48, 80 };
 	const IsrScene room = IsrScene::make_room(IsrScene::ROOM_CORNELL);
-	RendererRD::LightStorage light_storage;
-	RendererRD::MeshStorage mesh_storage;
-	RendererRD::MaterialStorage material_storage;
+	GodotInstance engine;
+	if (!engine.start(GodotInstance::BACKEND_RD, r_error, 64)) {
+		return false;
+	}
+	RenderingServer *rs = engine.get_rendering_server();
+	struct Config {
+		IsrServerScene view;
+		ScreenSpaceLightingSettings settings;
+		std::vector<double> opaque, isr;
+		double cpu = 0.0;
+		TimingRow row;
+	};
+	std::vector<std::unique_ptr<Config>> configs;
 	bool ok = true;
-	{
-		RenderForwardClustered renderer(&light_storage, &mesh_storage, &material_storage);
-		ok = material_storage.initialize_gpu() && light_storage.initialize_gpu(64) && renderer.initialize(64);
-		std::vector<RID> meshes, materials, lights;
-		struct Config {
-			RenderSceneData data;
-			RID rt;
-			std::vector<double> opaque, isr;
-			double cpu = 0.0;
-			TimingRow row;
-		};
-		std::vector<Config> configs;
+	for (const auto &s : sizes) {
+		for (int n : samples) {
+			std::unique_ptr<Config> c(new Config);
+			ok = ok && c->view.create(rs, room, s[0], s[1]);
+			c->view.set_active(false);
+			if (n > 0) {
+				c->settings = IsrSweep::default_settings();
+				c->settings.ssil_quality = n == 24 ? RS::ENV_SSIL_QUALITY_LOW : (n == 48 ? RS::ENV_SSIL_QUALITY_MEDIUM : RS::ENV_SSIL_QUALITY_HIGH);
+			}
+			c->view.set_screen_space_lighting(c->settings);
+			c->row.width = s[0];
+			c->row.height = s[1];
+			c->row.samples = n;
+			configs.push_back(std::move(c));
+		}
+	}
+	for (int round = -1; ok && round < p_rounds; round++) { // Round -1 warms up (shader compiles, first uploads).
+		for (std::unique_ptr<Config> &c : configs) {
+			c->view.set_active(true);
+			c->view.set_screen_space_lighting(c->settings); // The quality is global: set it per draw.
+			const clock_t t0 = clock();
+			rs->draw();
+			const clock_t t1 = clock();
+			c->view.set_active(false);
+			if (round >= 0) {
+				c->cpu += double(t1 - t0) * 1000.0 / CLOCKS_PER_SEC;
+				c->opaque.push_back(profile_ms(rs, "opaque"));
+				c->isr.push_back(profile_ms(rs, "ss_radiosity"));
+			}
+		}
+		if (p_progress) {
+			printf("[timing] round %d/%d\n", round + 1, p_rounds);
+			fflush(stdout);
+		}
+	}
+	for (std::unique_ptr<Config> &c : configs) {
 		if (ok) {
-			RenderSceneData base = room.make_view(0, 16, 16);
-			room.build(mesh_storage, material_storage, light_storage, base, meshes, materials, lights);
-			for (const auto &s : sizes) {
-				for (int n : samples) {
-					Config c;
-					c.data = room.make_view(0, s[0], s[1]);
-					c.data.geometry = base.geometry;
-					c.data.lights = base.lights;
-					if (n > 0) {
-						c.data.environment.ss_lighting = IsrSweep::default_settings();
-						c.data.environment.ss_lighting.ssil_quality = n == 24 ? RS::ENV_SSIL_QUALITY_LOW : (n == 48 ? RS::ENV_SSIL_QUALITY_MEDIUM : RS::ENV_SSIL_QUALITY_HIGH);
-					}
-					c.rt = renderer.render_target_create(s[0], s[1]);
-					c.row.width = s[0];
-					c.row.height = s[1];
-					c.row.samples = n;
-					ok = ok && c.rt.is_valid();
-					configs.push_back(c);
-				}
-			}
+			c->row.opaque_ms = median(c->opaque);
+			c->row.isr_ms = median(c->isr);
+			c->row.cpu_ms = c->cpu / std::max(p_rounds, 1);
+			c->row.ratio = c->row.opaque_ms > 0.0 ? c->row.isr_ms / c->row.opaque_ms : 0.0;
+			r_rows.push_back(c->row);
 		}
-		for (int round = -1; ok && round < p_rounds; round++) { // Round -1 warms up (shader compiles, first uploads).
-			for (Config &c : configs) {
-				const clock_t t0 = clock();
-				renderer.render_scene(c.data, c.rt);
-				const clock_t t1 = clock();
-				if (round >= 0) {
-					c.cpu += double(t1 - t0) * 1000.0 / CLOCKS_PER_SEC;
-					c.opaque.push_back(profile_ms(renderer, "opaque"));
-					c.isr.push_back(profile_ms(renderer, "ss_radiosity"));
-				}
-			}
-			if (p_progress) {
-				printf("[timing] round %d/%d\n", round + 1, p_rounds);
-				fflush(stdout);
-			}
-		}
-		for (Config &c : configs) {
-			if (ok) {
-				c.row.opaque_ms = median(c.opaque);
-				c.row.isr_ms = median(c.isr);
-				c.row.cpu_ms = c.cpu / std::max(p_rounds, 1);
-				c.row.ratio = c.row.opaque_ms > 0.0 ? c.row.isr_ms / c.row.opaque_ms : 0.0;
-				r_rows.push_back(c.row);
-			}
-			if (c.rt.is_valid()) {
-				renderer.render_target_free(c.rt);
-			}
-		}
-		for (RID m : meshes) {
-			mesh_storage.mesh_free(m);
-		}
-		for (RID m : materials) {
-			material_storage.material_free(m);
-		}
-		for (RID l : lights) {
-			light_storage.light_free(l);
-		}
-		renderer.finalize();
-		light_storage.finalize_gpu();
-		material_storage.finalize_gpu();
+		c->view.free();
 	}
 	if (!ok && r_error) {
-		*r_error = "the timing renderer could not be set up.";
+		*r_error = "the timing scenes could not be created.";
 	}
 	return ok;
 }
@@ -243,11 +222,6 @@ int isr_sweep_command(const std::vector<String> &p_args) {
 	if (charts && !BenchCharts::check("plot_isr.py", &error)) {
 		WARN_PRINT("godot-area bench --sweep isr: no charts: " + error);
 		charts = false;
-	}
-	GodotInstance engine;
-	if (!engine.start(GodotInstance::BACKEND_RD, &error, 64)) {
-		fprintf(stderr, "godot-area bench --sweep isr: %s\n", error.c_str());
-		return 1;
 	}
 	const String timing_csv = BenchCharts::directory_of(csv) + "/isr_timing.csv";
 	if (quality) {

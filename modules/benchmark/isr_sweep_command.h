@@ -14,7 +14,7 @@
 /* mean-error gain, pixels improved -> F (default                         */
 /* doc/results/isr_quality.csv). Timing: the room at 160x120, 320x240 and */
 /* 640x480 with SSIL off and with 24, 48 and 80 samples, configurations   */
-/* interleaved frame by frame in one renderer for --frames rounds         */
+/* interleaved frame by frame in one engine for --frames rounds           */
 /* (default 6): median "opaque" and "ss_radiosity" pass ms (GPU           */
 /* timestamps; wall clock on lavapipe) and process CPU ms per frame ->    */
 /* isr_timing.csv beside F. Charts: misc/scripts/plot_isr.py.             */

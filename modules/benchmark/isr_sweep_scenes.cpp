@@ -5,6 +5,8 @@
 #include "modules/benchmark/isr_sweep_scenes.h"
 
 #include "core/math/math_funcs.h"
+#include "scene/resources/primitive_meshes.h"
+#include "servers/rendering_server.h"
 
 // Appends a quad centred at p_center with half axes p_u, p_v; its front (normal p_u x p_v) is clockwise
 // as seen from the front (Godot's winding).
@@ -22,16 +24,13 @@ static void _isr_add_quad(RS::SurfaceData &r_s, const Vector3 &p_center, const V
 	}
 }
 
-// A closed box (outward faces) of half extents p_half centred at p_center.
+// A closed box (outward faces) of half extents p_half centred at p_center (BoxMesh's arrays, moved).
 static RS::SurfaceData _isr_box(const Vector3 &p_center, const Vector3 &p_half) {
 	RS::SurfaceData s;
-	const Vector3 x(p_half.x, 0, 0), y(0, p_half.y, 0), z(0, 0, p_half.z);
-	_isr_add_quad(s, p_center + y, z, x); // +Y.
-	_isr_add_quad(s, p_center - y, x, z); // -Y.
-	_isr_add_quad(s, p_center + x, y, z); // +X.
-	_isr_add_quad(s, p_center - x, z, y); // -X.
-	_isr_add_quad(s, p_center + z, x, y); // +Z.
-	_isr_add_quad(s, p_center - z, y, x); // -Z.
+	BoxMesh::create_box_arrays(s, p_half * 2, 0, 0, 0);
+	for (Vector3 &v : s.vertices) {
+		v += p_center;
+	}
 	return s;
 }
 
@@ -155,4 +154,96 @@ RenderSceneData IsrScene::make_view(int p_frame, int p_width, int p_height) cons
 	d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_DISABLED;
 	d.environment.ambient_energy = 0.0f;
 	return d;
+}
+
+bool IsrServerScene::create(RenderingServer *p_rs, const IsrScene &p_scene, int p_width, int p_height) {
+	free();
+	if (!p_rs || p_scene.camera_path.empty() || p_width <= 0 || p_height <= 0) {
+		return false;
+	}
+	rs = p_rs;
+	scene = &p_scene;
+	environment = rs->environment_create();
+	rids.push_back(environment);
+	rs->environment_set_background(environment, RS::ENV_BG_COLOR);
+	rs->environment_set_bg_color(environment, Color(0, 0, 0, 1));
+	rs->environment_set_ambient_light(environment, Color(0, 0, 0, 1), RS::ENV_AMBIENT_SOURCE_DISABLED, 0.0f);
+	const RID scenario = rs->scenario_create();
+	rids.push_back(scenario);
+	rs->scenario_set_environment(scenario, environment);
+	for (const IsrScene::Object &o : p_scene.objects) {
+		const RID mesh = rs->mesh_create();
+		rids.push_back(mesh);
+		rs->mesh_add_surface(mesh, o.surface);
+		const RID material = rs->material_create();
+		rids.push_back(material);
+		rs->material_set_params(material, o.material);
+		rs->mesh_surface_set_material(mesh, 0, material);
+		const RID instance = rs->instance_create();
+		rids.push_back(instance);
+		rs->instance_set_base(instance, mesh);
+		rs->instance_set_scenario(instance, scenario);
+		rs->instance_set_transform(instance, o.transform);
+	}
+	for (const IsrScene::AreaLightDesc &l : p_scene.lights) {
+		const RID light = rs->area_light_create();
+		rids.push_back(light);
+		rs->light_area_set_size(light, l.size);
+		rs->light_set_param(light, RS::LIGHT_PARAM_ENERGY, l.energy);
+		rs->light_set_param(light, RS::LIGHT_PARAM_RANGE, l.range);
+		rs->light_set_color(light, l.color);
+		const RID instance = rs->instance_create();
+		rids.push_back(instance);
+		rs->instance_set_base(instance, light);
+		rs->instance_set_scenario(instance, scenario);
+		rs->instance_set_transform(instance, l.transform);
+	}
+	camera = rs->camera_create();
+	rids.push_back(camera);
+	rs->camera_set_perspective(camera, p_scene.fovy_degrees, 0.05f, 50.0f);
+	viewport = rs->viewport_create();
+	rids.push_back(viewport);
+	rs->viewport_set_size(viewport, p_width, p_height);
+	rs->viewport_attach_camera(viewport, camera);
+	rs->viewport_set_scenario(viewport, scenario);
+	set_frame(0);
+	return true;
+}
+
+void IsrServerScene::set_frame(int p_frame) {
+	if (rs && scene) {
+		rs->camera_set_transform(camera, scene->camera_path[size_t(p_frame) % scene->camera_path.size()]);
+	}
+}
+
+void IsrServerScene::set_screen_space_lighting(const ScreenSpaceLightingSettings &p_settings) {
+	if (!rs) {
+		return;
+	}
+	rs->environment_set_ssil(environment, p_settings.ssil_enabled, p_settings.ssil_radius, p_settings.ssil_intensity, p_settings.ssil_sharpness, p_settings.ssil_normal_rejection);
+	rs->environment_set_ssil_quality(RS::EnvironmentSSILQuality(p_settings.ssil_quality), p_settings.ssil_half_size, p_settings.ssil_blur_passes);
+}
+
+void IsrServerScene::set_active(bool p_active) {
+	if (rs) {
+		rs->viewport_set_active(viewport, p_active);
+	}
+}
+
+Image IsrServerScene::draw() {
+	if (!rs) {
+		return Image();
+	}
+	rs->draw();
+	return rs->viewport_get_texture_data(viewport);
+}
+
+void IsrServerScene::free() {
+	for (size_t i = rids.size(); i > 0; i--) {
+		rs->free(rids[i - 1]);
+	}
+	rids.clear();
+	rs = nullptr;
+	scene = nullptr;
+	environment = camera = viewport = RID();
 }

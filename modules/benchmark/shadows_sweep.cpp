@@ -9,8 +9,6 @@
 #include "core/math/math_funcs.h"
 #include "drivers/png/png_writer.h"
 #include "modules/benchmark/penumbra_scene.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "modules/reference/renderer_compositor_reference.h"
 #include "scene/main/godot_instance.h"
 #include "servers/rendering_server.h"
@@ -63,8 +61,7 @@ static bool write_visibility_png(const std::vector<float> &p_visibility, int p_r
 
 bool ShadowsSweep::_write_images(const Options &p_options, RenderingServer *p_rs, PenumbraScene &p_objects, GodotInstance &p_engine, const std::vector<float> &p_ref_open, const std::vector<float> &p_ref_shadowed, String &r_error) {
 	const int res = p_options.resolution;
-	RendererCompositorRD *compositor = dynamic_cast<RendererCompositorRD *>(p_engine.get_compositor());
-	if (!compositor || !compositor->get_render_forward_clustered()) {
+	if (p_engine.get_backend() != GodotInstance::BACKEND_RD) {
 		r_error = "the images need the Forward+ renderer.";
 		return false;
 	}
@@ -72,7 +69,6 @@ bool ShadowsSweep::_write_images(const Options &p_options, RenderingServer *p_rs
 		r_error = "--images needs the reference (drop --no-errors).";
 		return false;
 	}
-	AreaShadowRendererRD &shadows = compositor->get_render_forward_clustered()->get_area_shadow_renderer();
 	const RID light = p_objects.get_light();
 	p_rs->area_shadow_atlas_set_size(p_objects.get_viewport(), 0, 0); // The renderer's default atlas.
 	p_rs->light_set_param(light, RS::LIGHT_PARAM_SHADOW_BLUR, 1.0f); // The default.
@@ -99,7 +95,7 @@ bool ShadowsSweep::_write_images(const Options &p_options, RenderingServer *p_rs
 	for (const Shot &shot : shots) {
 		p_rs->light_area_set_shadow_mode(light, shot.mode);
 		p_rs->light_area_set_shadow_grid(light, shot.grid);
-		shadows.set_sample_penumbra_filter(shot.filter);
+		p_rs->area_shadow_filter_set_mode(shot.filter ? RS::AREA_SHADOW_FILTER_PENUMBRA : RS::AREA_SHADOW_FILTER_PCF);
 		std::vector<float> shadowed = p_objects.render();
 		std::vector<float> v = PenumbraScene::visibility_image(open, shadowed);
 		PenumbraScene::ShadowError e = PenumbraScene::shadow_error(open, shadowed, res, p_ref_open, p_ref_shadowed, res, res, 1);
@@ -107,11 +103,11 @@ bool ShadowsSweep::_write_images(const Options &p_options, RenderingServer *p_rs
 		int banded = PenumbraScene::count_banded_pixels(v, res, res, &penumbra);
 		printf("%s: visibility rel-RMSE %.4f, p99 relative error %.3f (%d shadow pixels), banded %d of %d penumbra pixels\n", shot.file, e.rel_rmse, e.p99, e.pixels, banded, penumbra);
 		if (!write_visibility_png(v, res, 2, dir + shot.file, r_error)) {
-			shadows.set_sample_penumbra_filter(true);
+			p_rs->area_shadow_filter_set_mode(RS::AREA_SHADOW_FILTER_PENUMBRA);
 			return false;
 		}
 	}
-	shadows.set_sample_penumbra_filter(true);
+	p_rs->area_shadow_filter_set_mode(RS::AREA_SHADOW_FILTER_PENUMBRA);
 	return true;
 }
 

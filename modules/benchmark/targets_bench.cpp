@@ -10,8 +10,7 @@
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
 #include "scene/resources/primitive_meshes.h"
-#include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
-#include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
+#include "servers/rendering_server.h"
 
 #include <algorithm>
 #include <cmath>
@@ -249,9 +248,6 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		return fail(error);
 	}
 	RenderingServer *rs = engine.get_rendering_server();
-	// The S2 rows with the fixed PCF switch the per-sample penumbra filter off (a renderer knob, not an RS call).
-	RendererCompositorRD *compositor = dynamic_cast<RendererCompositorRD *>(engine.get_compositor());
-	AreaShadowRendererRD *shadows = compositor && compositor->get_render_forward_clustered() ? &compositor->get_render_forward_clustered()->get_area_shadow_renderer() : nullptr;
 	bool ok = true;
 	{
 		Scenes scenes(rs);
@@ -381,9 +377,8 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			for (Config &c : configs) {
 				rs->viewport_set_active(c.viewport, true);
 				rs->set_debug_disable_area_lights(c.area_code_disabled);
-				if (shadows) {
-					shadows->set_sample_penumbra_filter(!c.sample_filter_off);
-				}
+				// The S2 rows with the fixed PCF switch the per-sample penumbra filter off.
+				rs->area_shadow_filter_set_mode(c.sample_filter_off ? RS::AREA_SHADOW_FILTER_PCF : RS::AREA_SHADOW_FILTER_PENUMBRA);
 				rs->draw(); // Discarded.
 				const double cpu0 = process_cpu_ms();
 				rs->draw();
@@ -395,9 +390,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 					opaque += pass.first == "opaque" ? pass.second : 0.0;
 				}
 				rs->set_debug_disable_area_lights(false);
-				if (shadows) {
-					shadows->set_sample_penumbra_filter(true);
-				}
+				rs->area_shadow_filter_set_mode(RS::AREA_SHADOW_FILTER_PENUMBRA);
 				rs->viewport_set_active(c.viewport, false);
 				c.gpu.push_back(gpu);
 				c.cpu.push_back(cpu);

@@ -7,6 +7,7 @@
 #include "modules/ltc_fit/ltc_polynomial.h"
 
 #include "core/error/error_macros.h"
+#include "core/io/file_io.h"
 #include "modules/ltc_fit/ltc_fitter.h"
 
 #include "servers/rendering/renderer_rd/ltc_poly_data.inc"
@@ -15,7 +16,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 static_assert(sizeof(LTC_POLY_COEFFS) / sizeof(LTC_POLY_COEFFS[0]) == LTCPolynomial::COEFFS, "ltc_poly_data.inc has the wrong size (regenerate it with `godot-area ltc-fit --polynomial`).");
@@ -467,10 +467,7 @@ bool LTCPolynomial::parse_inc(const String &p_text, std::vector<double> *r_coeff
 
 bool LTCPolynomial::save_text(const String &p_path, const String &p_text) {
 	ERR_FAIL_COND_V_MSG(p_text.empty(), false, "Refusing to write an empty LTC polynomial file.");
-	std::ofstream f(p_path, std::ios::binary);
-	ERR_FAIL_COND_V_MSG(!f, false, vformat("Cannot open '%s' for writing.", p_path.c_str()));
-	f << p_text;
-	f.close();
-	ERR_FAIL_COND_V_MSG(!f, false, vformat("Writing '%s' failed.", p_path.c_str()));
+	String error; // Atomic and checked through close (core/io/file_io.h): no partial table on failure.
+	ERR_FAIL_COND_V_MSG(!file_write_atomic(p_path, p_text, &error), false, error);
 	return true;
 }

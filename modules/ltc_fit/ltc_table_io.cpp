@@ -6,6 +6,7 @@
 #include "modules/ltc_fit/ltc_table_io.h"
 
 #include "core/error/error_macros.h"
+#include "core/io/file_io.h"
 #include "modules/ltc_fit/ltc_fitter.h"
 
 #include "servers/rendering/renderer_rd/ltc_lut_data.inc"
@@ -121,11 +122,8 @@ String LTCTableIO::format_inc(int p_size, const std::vector<float> &p_engine, co
 
 bool LTCTableIO::save_inc(const String &p_path, const String &p_text) {
 	ERR_FAIL_COND_V_MSG(p_text.empty(), false, "Refusing to write an empty LTC table include.");
-	std::ofstream f(p_path, std::ios::binary);
-	ERR_FAIL_COND_V_MSG(!f, false, vformat("Cannot open '%s' for writing.", p_path.c_str()));
-	f << p_text;
-	f.close();
-	ERR_FAIL_COND_V_MSG(!f, false, vformat("Writing '%s' failed.", p_path.c_str()));
+	String error; // Atomic and checked through close (core/io/file_io.h): no partial table on failure.
+	ERR_FAIL_COND_V_MSG(!file_write_atomic(p_path, p_text, &error), false, error);
 	return true;
 }
 

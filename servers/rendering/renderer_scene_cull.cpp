@@ -112,7 +112,7 @@ void RendererSceneCull::scenario_set_environment(RID p_scenario, RID p_env) {
 int RendererSceneCull::scenario_get_instance_count(RID p_scenario) const {
 	const Scenario *scenario = scenario_owner.get_or_null(p_scenario);
 	ERR_FAIL_NULL_V_MSG(scenario, 0, "Invalid scenario RID.");
-	return (int)scenario->instances.size();
+	return (int)(scenario->instances.size() - scenario->null_slots);
 }
 
 void RendererSceneCull::_scenario_remove_instance(RID p_scenario, RID p_instance) {
@@ -120,8 +120,48 @@ void RendererSceneCull::_scenario_remove_instance(RID p_scenario, RID p_instance
 	if (!scenario) {
 		return;
 	}
-	std::vector<RID> &list = scenario->instances;
-	list.erase(std::remove(list.begin(), list.end(), p_instance), list.end());
+	auto it = scenario->slot.find(p_instance);
+	if (it == scenario->slot.end()) {
+		return;
+	}
+	scenario->instances[it->second] = RID();
+	scenario->slot.erase(it);
+	scenario->null_slots++;
+	if (scenario->null_slots * 2 > scenario->instances.size()) {
+		std::vector<RID> live;
+		live.reserve(scenario->slot.size());
+		for (const RID &rid : scenario->instances) {
+			if (rid.is_valid()) {
+				scenario->slot[rid] = live.size();
+				live.push_back(rid);
+			}
+		}
+		scenario->instances.swap(live);
+		scenario->null_slots = 0;
+	}
+}
+
+void RendererSceneCull::_scenario_add_instance(Scenario &r_scenario, RID p_instance) {
+	r_scenario.slot[p_instance] = r_scenario.instances.size();
+	r_scenario.instances.push_back(p_instance);
+}
+
+void RendererSceneCull::_dependency_set(RID p_instance, RID p_old, RID p_new) {
+	if (p_old == p_new) {
+		return;
+	}
+	if (p_old.is_valid()) {
+		auto it = dependents.find(p_old);
+		if (it != dependents.end()) {
+			it->second.erase(p_instance);
+			if (it->second.empty()) {
+				dependents.erase(it);
+			}
+		}
+	}
+	if (p_new.is_valid()) {
+		dependents[p_new].insert(p_instance);
+	}
 }
 
 /* INSTANCE */
@@ -134,6 +174,7 @@ void RendererSceneCull::instance_set_base(RID p_instance, RID p_base) {
 	Instance *instance = instance_owner.get_or_null(p_instance);
 	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
 	if (p_base.is_null()) {
+		_dependency_set(p_instance, instance->base, RID());
 		instance->base = RID();
 		instance->base_type = RS::INSTANCE_NONE;
 		return;
@@ -145,6 +186,7 @@ void RendererSceneCull::instance_set_base(RID p_instance, RID p_base) {
 	} else {
 		ERR_FAIL_MSG("Instance base must be a mesh or a light RID; the base is unchanged.");
 	}
+	_dependency_set(p_instance, instance->base, p_base);
 	instance->base = p_base;
 }
 
@@ -158,7 +200,7 @@ void RendererSceneCull::instance_set_scenario(RID p_instance, RID p_scenario) {
 		Scenario *scenario = scenario_owner.get_or_null(p_scenario);
 		ERR_FAIL_NULL_MSG(scenario, "Invalid scenario RID.");
 		_scenario_remove_instance(instance->scenario, p_instance);
-		scenario->instances.push_back(p_instance);
+		_scenario_add_instance(*scenario, p_instance);
 	} else {
 		_scenario_remove_instance(instance->scenario, p_instance);
 	}
@@ -188,6 +230,7 @@ void RendererSceneCull::instance_geometry_set_material_override(RID p_instance, 
 	Instance *instance = instance_owner.get_or_null(p_instance);
 	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
 	ERR_FAIL_COND_MSG(p_material.is_valid() && !(RSG::material_storage && RSG::material_storage->owns_material(p_material)), "Invalid material RID for the material override.");
+	_dependency_set(p_instance, instance->material_override, p_material);
 	instance->material_override = p_material;
 }
 
@@ -226,6 +269,8 @@ RS::InstanceType RendererSceneCull::instance_get_base_type(RID p_instance) const
 bool RendererSceneCull::free(RID p_rid) {
 	if (Instance *instance = instance_owner.get_or_null(p_rid)) {
 		_scenario_remove_instance(instance->scenario, p_rid);
+		_dependency_set(p_rid, instance->base, RID());
+		_dependency_set(p_rid, instance->material_override, RID());
 		instance_owner.free(p_rid);
 		return true;
 	}
@@ -246,7 +291,11 @@ bool RendererSceneCull::free(RID p_rid) {
 }
 
 void RendererSceneCull::notify_base_freed(RID p_base) {
-	for (const RID &rid : instance_owner.get_owned_list()) {
+	auto it = dependents.find(p_base);
+	if (it == dependents.end()) {
+		return;
+	}
+	for (const RID &rid : it->second) {
 		Instance *instance = instance_owner.get_or_null(rid);
 		if (instance && instance->base == p_base) {
 			instance->base = RID();
@@ -256,6 +305,7 @@ void RendererSceneCull::notify_base_freed(RID p_base) {
 			instance->material_override = RID();
 		}
 	}
+	dependents.erase(it);
 }
 
 void RendererSceneCull::notify_environment_freed(RID p_env) {

@@ -19,6 +19,9 @@
 #include "core/templates/rid_owner.h"
 #include "servers/rendering/renderer_scene_render.h"
 
+#include <unordered_map>
+#include <unordered_set>
+
 class RendererSceneCull {
 public:
 	struct Camera {
@@ -32,7 +35,12 @@ public:
 
 	struct Scenario {
 		RID environment;
-		std::vector<RID> instances; // Insertion order (kept deterministic for tests and rendering).
+		// Insertion order (kept deterministic for tests and rendering). A removed instance leaves a null
+		// slot that every loop skips; the list is compacted once half of it is null, so adding and
+		// removing are amortised O(1) and freeing a whole scene is linear.
+		std::vector<RID> instances;
+		std::unordered_map<RID, size_t> slot; // Instance -> its index in instances.
+		size_t null_slots = 0;
 	};
 
 	struct Instance {
@@ -60,9 +68,14 @@ private:
 	RID_Owner<Camera, true> camera_owner{ "Camera" };
 	RID_Owner<Scenario, true> scenario_owner{ "Scenario" };
 	RID_Owner<Instance, true> instance_owner{ "Instance" };
+	// Base (mesh, light) or override material -> the instances that reference it, so freeing a base
+	// touches only its users (notify_base_freed) instead of every instance.
+	std::unordered_map<RID, std::unordered_set<RID>> dependents;
+	void _dependency_set(RID p_instance, RID p_old, RID p_new);
 	CullStats last_stats;
 
 	void _scenario_remove_instance(RID p_scenario, RID p_instance);
+	void _scenario_add_instance(Scenario &r_scenario, RID p_instance);
 	AABB _instance_get_world_aabb(const Instance &p_instance) const;
 	void _fill_area_shadow_casters(const Scenario &p_scenario, RenderSceneData &r_data);
 	void _resolve_environment(RID p_camera_env, RID p_scenario_env, const Color &p_default_clear, RenderSceneData::EnvironmentData &r_env) const;

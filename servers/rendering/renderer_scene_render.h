@@ -102,6 +102,9 @@ public:
 	virtual uint64_t get_last_frame_rendering_info(RS::RenderingInfo p_info) const { return 0; }
 	// When true, shade every light for every pixel instead of using clusters (test reference).
 	virtual void set_debug_force_all_lights(bool p_enable) = 0;
+	// RS::area_shadow_filter_set_mode() (renderers without area shadows ignore it).
+	virtual void area_shadow_filter_set_mode(RS::AreaShadowFilter p_filter) {}
+	virtual RS::AreaShadowFilter area_shadow_filter_get_mode() const { return RS::AREA_SHADOW_FILTER_PENUMBRA; }
 	// RS::set_debug_disable_area_lights().
 	virtual void set_debug_disable_area_lights(bool p_disable) {}
 	// RS::get_debug_scene_shader_sources().

@@ -555,6 +555,15 @@ std::vector<std::pair<String, double>> RenderingServerDefault::get_frame_profile
 	return RSG::scene_render->get_last_frame_profile();
 }
 
+void RenderingServerDefault::area_shadow_filter_set_mode(AreaShadowFilter p_filter) {
+	ERR_FAIL_COND_MSG(p_filter < 0 || p_filter >= AREA_SHADOW_FILTER_MAX, vformat("area_shadow_filter_set_mode: the filter must be 0 (PCF) or 1 (PENUMBRA); got %d. The old one is kept.", int(p_filter)));
+	RSG::scene_render->area_shadow_filter_set_mode(p_filter);
+}
+
+RS::AreaShadowFilter RenderingServerDefault::area_shadow_filter_get_mode() const {
+	return RSG::scene_render->area_shadow_filter_get_mode();
+}
+
 void RenderingServerDefault::set_debug_disable_area_lights(bool p_disable) {
 	RSG::scene_render->set_debug_disable_area_lights(p_disable);
 }

@@ -154,6 +154,8 @@ public:
 	}
 	void set_debug_force_all_lights(bool p_enable) override;
 	void set_debug_disable_area_lights(bool p_disable) override;
+	void area_shadow_filter_set_mode(AreaShadowFilter p_filter) override;
+	AreaShadowFilter area_shadow_filter_get_mode() const override;
 	std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const override;
 
 	// The scene cull of this server (tests read its counters).

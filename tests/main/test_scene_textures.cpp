@@ -2,9 +2,10 @@
 /*  test_scene_textures.cpp                                               */
 /**************************************************************************/
 /* Issue 15: a scene's image textures load (PNG through libpng, JPEG      */
-/* through stb_image) and draw: an unshaded textured quad's pixels equal  */
-/* the image decoded sRGB -> linear within 1/255, on the GPU and in the   */
-/* Embree reference. The PNG is written by the test (no binary asset).    */
+/* through stb_image, WebP through libwebp) and draw: an unshaded         */
+/* textured quad's pixels equal the image decoded sRGB -> linear within   */
+/* 1/255, on the GPU and in the Embree reference. The PNG and WebP files  */
+/* are written by the test (no binary asset).                             */
 
 #include "core/io/image.h"
 #include "core/io/image_loader.h"
@@ -21,6 +22,7 @@
 #include <fstream>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <webp/encode.h>
 
 namespace TestSceneTextures {
 
@@ -63,6 +65,45 @@ TEST_CASE("[ImageLoader] PNG texels load as stored (8-bit / 255)") {
 	std::ofstream(dir / "bad.jpg") << "not a jpeg";
 	CHECK_FALSE(ImageLoader::load_image((dir / "bad.jpg").string(), image, &error));
 	CHECK(error.find("bad.jpg") != String::npos);
+	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[ImageLoader] WebP loads: lossless exactly, lossy close; bad files name the file") {
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ga_webp_" + itos((long long)getpid()));
+	std::filesystem::create_directories(dir);
+	const std::vector<uint8_t> texels = quadrant_texels(16);
+	// Written by libwebp's own encoder (no binary asset in the tree).
+	auto write = [&](const String &p_name, bool p_lossless) {
+		uint8_t *out = nullptr;
+		const size_t size = p_lossless ? WebPEncodeLosslessRGBA(texels.data(), 16, 16, 16 * 4, &out) : WebPEncodeRGBA(texels.data(), 16, 16, 16 * 4, 95.0f, &out);
+		REQUIRE(size > 0);
+		std::ofstream((dir / p_name.c_str()).string(), std::ios::binary).write(reinterpret_cast<const char *>(out), std::streamsize(size));
+		WebPFree(out);
+		return (dir / p_name.c_str()).string();
+	};
+	Image image;
+	String error;
+	REQUIRE_MESSAGE(ImageLoader::load_image(write("lossless.webp", true), image, &error), error);
+	REQUIRE(image.get_width() == 16);
+	REQUIRE(image.get_height() == 16);
+	float worst = 0.0f;
+	for (int y = 0; y < 16; y++) {
+		for (int x = 0; x < 16; x++) {
+			const uint8_t *t = &texels[(size_t(y) * 16 + x) * 4];
+			const Color c = image.get_pixel(x, y);
+			worst = std::max({ worst, std::fabs(c.r - t[0] / 255.0f), std::fabs(c.g - t[1] / 255.0f), std::fabs(c.b - t[2] / 255.0f), std::fabs(c.a - 1.0f) });
+		}
+	}
+	CHECK(worst == 0.0f); // Lossless: every texel as stored.
+	REQUIRE_MESSAGE(ImageLoader::load_image(write("lossy.webp", false), image, &error), error);
+	const Color centre = image.get_pixel(12, 12); // Inside the bottom-right quadrant (200, 120, 40).
+	CHECK(centre.r == doctest::Approx(200 / 255.0f).epsilon(0.05));
+	CHECK(centre.g == doctest::Approx(120 / 255.0f).epsilon(0.05));
+	CHECK(centre.b == doctest::Approx(40 / 255.0f).epsilon(0.15));
+	std::ofstream(dir / "bad.webp") << "RIFF not really";
+	CHECK_FALSE(ImageLoader::load_image((dir / "bad.webp").string(), image, &error));
+	CHECK(error.find("bad.webp") != String::npos);
+	CHECK(image.is_empty());
 	std::filesystem::remove_all(dir);
 }
 

@@ -1,6 +1,7 @@
 # godot-area: pytest tests of rendering through the Python module `godot_area`: a frame to NumPy,
 # the same scene through the CLI (bit-identical), frames with a per-frame callback, EXR files.
 import math
+import os
 import subprocess
 
 import numpy as np
@@ -80,6 +81,20 @@ def test_run_frames_with_callback(tree):
 		ga.run_frames(2, lambda frame, t: 1 / 0)
 
 
+@pytest.mark.parametrize("width, height", [(20000, 20000), (0, 16), (16, 0), (-4, 16), (16, 16385)])
+def test_run_frames_rejects_sizes_out_of_range(tree, width, height):
+	tree.root.add_child(build_scene())
+	with pytest.raises(ValueError, match="out of range"):
+		ga.run_frames(1, None, width, height)
+
+
+def test_run_frames_draws_at_the_size_it_is_given(tree):
+	tree.root.add_child(build_scene())
+	profiles = ga.run_frames(1, None, 24, 16)
+	assert len(profiles) == 1 and "opaque" in profiles[0], profiles
+	assert ga.render().shape[:2] == (16, 24)  # The tree keeps the size of the last draw.
+
+
 def test_exr_round_trip(tree, tmp_path):
 	tree.root.add_child(build_scene())
 	image = ga.render(WIDTH, HEIGHT)
@@ -97,6 +112,20 @@ def test_exr_round_trip(tree, tmp_path):
 		ga.save_exr(np.zeros((4, 5, 2), np.float32), str(tmp_path / "bad.exr"))
 	with pytest.raises(OSError):
 		ga.load_exr(str(tmp_path / "missing.exr"))
+
+
+def test_save_exr_reports_failed_writes_and_leaves_no_file(tmp_path):
+	image = np.full((4, 5, 4), 0.5, np.float32)
+	if os.path.exists("/dev/full"):
+		with pytest.raises(OSError, match="/dev/full"):
+			ga.save_exr(image, "/dev/full")  # Every write fails with ENOSPC.
+	missing = tmp_path / "no_such_folder" / "frame.exr"
+	with pytest.raises(OSError, match="no_such_folder"):
+		ga.save_exr(image, str(missing))
+	assert not missing.parent.exists()
+	target = tmp_path / "kept.exr"
+	ga.save_exr(image, str(target))
+	assert sorted(os.listdir(tmp_path)) == ["kept.exr"]  # No temporary left beside it.
 
 
 def _saved(array, tmp_path):

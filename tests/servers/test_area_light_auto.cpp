@@ -10,7 +10,7 @@
 #include "core/config/project_settings.h"
 #include "scene/3d/light_3d.h"
 #include "scene/resources/resource_format_text.h"
-#include "servers/rendering/renderer_rd/area_method_selector.h"
+#include "servers/rendering/renderer_rd/area_lights/area_method_selector.h"
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"

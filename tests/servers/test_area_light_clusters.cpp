@@ -348,10 +348,9 @@ TEST_CASE("[AreaLight3D][Cluster] the cluster debug view writes per-pixel area-l
 		const int W = 64, H = 64;
 		RenderSceneData d = build_mixed_scene(f, W, H);
 		RID rt = f.renderer.render_target_create(W, H);
-		f.renderer.set_debug_cluster_element_type(ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT);
+		d.debug_draw = RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS;
 		f.renderer.render_scene(d, rt);
 		std::vector<float> img = f.renderer.render_target_get_data(rt);
-		f.renderer.set_debug_cluster_element_type(-1);
 		ClusterBuilderRD *cb = f.renderer.get_cluster_builder();
 		std::vector<uint8_t> raw = rd->buffer_get_data(cb->get_cluster_buffer());
 		std::vector<uint32_t> words(raw.size() / 4);

@@ -7,7 +7,7 @@
 /* ADAPTIVE light: no shader), and the over-frames loop through the       */
 /* readback ring (results of older frames only), validation clean.        */
 
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 
 #include "core/config/project_settings.h"
 #include "scene/3d/light_3d.h"

@@ -270,6 +270,50 @@ TEST_CASE("[AreaShadowAdaptive][Render] fair sharing: trees take free tiles only
 	}
 }
 
+TEST_CASE("[AreaShadowAdaptive][Render] fair sharing between trees: two and four ADAPTIVE lights all get trees, growth follows importance") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	for (int lights : { 2, 4 }) {
+		CAPTURE(lights);
+		AdaptiveScene s;
+		// Close over the penumbra, so every tree wants to grow past its share.
+		REQUIRE(s.init(Vector3(0.3f, 1.4f, 0.2f), 48, RS::LIGHT_AREA_SHADOW_ADAPTIVE));
+		REQUIRE(s.f.renderer.area_shadow_atlas_set_size(512, 8)); // 64 tiles.
+		REQUIRE(s.shadows().set_adaptive_reprojection_divisor(1));
+		std::vector<RID> all = { s.light };
+		for (int i = 1; i < lights; i++) {
+			RID l = s.f.area_light(LIGHT_SIZE, 2.0f, 20.0f, 2.0f);
+			s.f.light_storage.light_set_param(l, RS::LIGHT_PARAM_SHADOW_BLUR, 0.5f);
+			s.f.light_storage.light_set_shadow(l, true);
+			s.f.light_storage.light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_ADAPTIVE);
+			// The same light at the same place: the same importance and the same penumbra.
+			RenderTest::add_light(s.scene, l, RS::LIGHT_AREA, light_transform());
+			all.push_back(l);
+		}
+		const AreaShadowAtlas &atlas = s.shadows().get_atlas();
+		uint32_t most = 0;
+		for (int frame = 0; frame < 40; frame++) {
+			s.frame();
+			for (RID l : all) {
+				// No light waits while the atlas has the four tiles a first tree needs.
+				CHECK((s.shadows().light_get_shadow_map_count(l) >= 4 || atlas.get_free_tile_count() < 4));
+				const AreaShadowQuadtree *t = s.shadows().get_adaptive()->light_get_tree_or_null(l.get_id());
+				most = std::max(most, t ? t->get_point_count() : 0u);
+			}
+		}
+		const uint32_t share = 64 / uint32_t(lights);
+		uint32_t least = UINT32_MAX;
+		for (RID l : all) {
+			least = std::min(least, s.shadows().light_get_shadow_map_count(l));
+		}
+		MESSAGE(lights, " lights on 64 tiles: least ", least, " maps, most ", most, " points, share ", share);
+		CHECK(least >= 4); // Every light is shadowed.
+		CHECK(most <= share); // No tree grows past its share ...
+		CHECK(least * 2 >= share); // ... and equal lights grow to similar sizes, not one first.
+		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+	}
+}
+
 TEST_CASE("[AreaShadowAdaptive][Render] a static view converges within a bounded number of frames, then stays unchanged for 300 frames, and never stalls") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");

@@ -5,7 +5,7 @@
 /* scattered tiles, release and reuse, exhaustion, dirty tracking and the */
 /* fair sharing between lights (thesis sections 6.1 and 6.5).             */
 
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 
 #include "core/error/error_macros.h"
 

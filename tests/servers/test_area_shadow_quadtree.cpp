@@ -6,7 +6,7 @@
 /* points, tile accounting, over-frames convergence with a fake banding   */
 /* oracle behind the no-stall readback ring, and the 6.5 heuristic.       */
 
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_quadtree.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_quadtree.h"
 #include "servers/rendering/renderer_rd/storage_rd/area_shadow_readback_ring.h"
 
 #include "core/error/error_macros.h"

@@ -13,8 +13,8 @@
 
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
-#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/effects/sky_rd.h"
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
@@ -24,9 +24,7 @@
 #include <doctest/doctest.h>
 
 #include <cstddef>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace TestLightDataLayout {
 
@@ -104,13 +102,6 @@ static SPIRVStructLayout spirv_struct_layout(const std::vector<uint32_t> &p_spir
 		}
 	}
 	return layout;
-}
-
-static String read_text(const String &p_path) {
-	std::ifstream f(p_path);
-	std::stringstream ss;
-	ss << f.rdbuf();
-	return ss.str();
 }
 
 // Compiles a compute shader that declares one std430 runtime array per struct (the way the scene

@@ -501,6 +501,49 @@ TEST_CASE("[SceneCull] RenderSceneData for a simple setup") {
 	}
 }
 
+TEST_CASE("[SceneCull] removing instances keeps the scenario's order and count; freeing a base touches its users only") {
+	CullFixture f;
+	// 64 quads in a row in front of the camera (x = index), each its own depth so order is visible.
+	std::vector<RID> instances;
+	for (int i = 0; i < 64; i++) {
+		instances.push_back(f.add_instance(f.mesh, at(Vector3(0.01f * i, 0, -5))));
+	}
+	CHECK(f.cull->scenario_get_instance_count(f.scenario) == 64);
+	// Remove every third one (more than half of the slots are compacted away along the way).
+	std::vector<RID> kept;
+	for (int i = 0; i < 64; i++) {
+		if (i % 3 == 0 || i > 40) {
+			f.rs->instance_set_scenario(instances[i], RID());
+		} else {
+			kept.push_back(instances[i]);
+		}
+	}
+	CHECK(f.cull->scenario_get_instance_count(f.scenario) == int(kept.size()));
+	RenderSceneData data = f.cull_scene();
+	REQUIRE(data.geometry.size() == kept.size());
+	for (size_t i = 0; i < kept.size(); i++) {
+		CAPTURE(i);
+		CHECK(data.geometry[i].transform.origin.x == doctest::Approx(0.01f * float(i / 2 * 3 + 1 + i % 2))); // Insertion order.
+	}
+	// Back in: appended at the end.
+	f.rs->instance_set_scenario(instances[0], f.scenario);
+	data = f.cull_scene();
+	REQUIRE(data.geometry.size() == kept.size() + 1);
+	CHECK(data.geometry.back().transform.origin.x == doctest::Approx(0.0f));
+
+	// Two meshes; freeing one drops exactly its instances, also after a base change.
+	RID other = f.rs->mesh_create();
+	f.rs->mesh_add_surface(other, make_quad(0.5f));
+	f.rs->instance_set_base(kept[0], other);
+	f.rs->instance_set_base(kept[1], other);
+	f.rs->instance_set_base(kept[1], f.mesh); // Moved back: no longer a user of 'other'.
+	f.rs->free(other);
+	CHECK(f.cull->instance_get_base_type(kept[0]) == RS::INSTANCE_NONE);
+	CHECK(f.cull->instance_get_base_type(kept[1]) == RS::INSTANCE_MESH);
+	data = f.cull_scene();
+	CHECK(data.geometry.size() == kept.size()); // kept[0] has no base now; instances[0] came back.
+}
+
 TEST_CASE("[RenderingServer] draw renders active viewports through the scene renderer") {
 	CullFixture f;
 	RasterizerSceneDummy *scene = f.server.rasterizer->get_scene_dummy();

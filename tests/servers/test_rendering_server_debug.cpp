@@ -4,8 +4,11 @@
 /* godot-area: the RenderingServer's debug entries that benchmarks use   */
 /* instead of reaching into the renderer: the per-method fragment        */
 /* sources (bench --sweep methods --spirv-sources) and the area-light    */
-/* baseline switch (bench --targets, P4).                                 */
+/* baseline switch (bench --targets, P4); and the area shadow filter     */
+/* (RS::area_shadow_filter_set_mode), which the shadow sweeps switch.     */
 
+#include "core/config/project_settings.h"
+#include "core/error/error_macros.h"
 #include "scene/main/godot_instance.h"
 #include "scene/resources/primitive_meshes.h"
 #include "servers/rendering/rendering_device.h"
@@ -20,7 +23,8 @@ namespace TestRenderingServerDebug {
 
 // A floor lit by one omni light and, when p_area, one shadowed area light above it; returns one
 // frame and, in r_labels, the debug labels the frame's passes recorded.
-static Image render_floor(RenderingServer *p_rs, bool p_area, std::vector<String> *r_labels = nullptr) {
+// p_occluder adds a 0.6 m box between the area light and the floor (a penumbra for the shadow filter).
+static Image render_floor(RenderingServer *p_rs, bool p_area, std::vector<String> *r_labels = nullptr, bool p_occluder = false) {
 	std::vector<RID> owned;
 	RS::SurfaceData surface;
 	PlaneMesh::create_plane_arrays(surface, Vector2(8, 8), 0, 0, Vector3(), PlaneMesh::FACE_Y);
@@ -46,6 +50,17 @@ static Image render_floor(RenderingServer *p_rs, bool p_area, std::vector<String
 		owned.insert(owned.end(), { p_light, inst });
 	};
 	add_light(p_rs->omni_light_create(), Transform3D(Basis(), Vector3(-1, 1.5f, 0)));
+	if (p_occluder) {
+		RS::SurfaceData box;
+		BoxMesh::create_box_arrays(box, Vector3(0.6f, 0.1f, 0.6f), 0, 0, 0);
+		RID box_mesh = p_rs->mesh_create();
+		p_rs->mesh_add_surface(box_mesh, box);
+		RID box_inst = p_rs->instance_create();
+		p_rs->instance_set_base(box_inst, box_mesh);
+		p_rs->instance_set_scenario(box_inst, scenario);
+		p_rs->instance_set_transform(box_inst, Transform3D(Basis(), Vector3(1, 0.7f, 0)));
+		owned.insert(owned.end(), { box_mesh, box_inst });
+	}
 	if (p_area) {
 		RID area = p_rs->area_light_create();
 		p_rs->light_area_set_size(area, Vector2(1, 1));
@@ -143,6 +158,43 @@ TEST_CASE("[RenderForwardClustered] each pass of a frame records a debug label")
 	render_floor(engine.get_rendering_server(), true, &labels);
 	CHECK(labels == std::vector<String>{ "Render Area Shadow Maps", "Render Depth Pre-Pass", "Area Shadow Adaptive Refinement", "Build Clusters", "Render Opaque Pass" });
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[RenderingServer] area_shadow_filter_set_mode() switches the sample maps' filter; the project setting starts it") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	const char *setting = "rendering/lights_and_shadows/area_shadow_filter";
+	Image penumbra, pcf, pcf_again;
+	{
+		GodotInstance engine;
+		String error;
+		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 8), error.c_str());
+		RenderingServer *rs = engine.get_rendering_server();
+		CHECK(rs->area_shadow_filter_get_mode() == RS::AREA_SHADOW_FILTER_PENUMBRA); // Godot-style default.
+		penumbra = render_floor(rs, true, nullptr, true);
+		rs->area_shadow_filter_set_mode(RS::AREA_SHADOW_FILTER_PCF);
+		CHECK(rs->area_shadow_filter_get_mode() == RS::AREA_SHADOW_FILTER_PCF);
+		pcf = render_floor(rs, true, nullptr, true);
+		set_error_print_silenced(true);
+		rs->area_shadow_filter_set_mode(RS::AreaShadowFilter(7)); // Rejected with an error: PCF is kept.
+		set_error_print_silenced(false);
+		CHECK(rs->area_shadow_filter_get_mode() == RS::AREA_SHADOW_FILTER_PCF);
+		rs->area_shadow_filter_set_mode(RS::AREA_SHADOW_FILTER_PENUMBRA);
+		CHECK(difference(render_floor(rs, true, nullptr, true), penumbra) == 0.0);
+		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+	}
+	REQUIRE(penumbra.get_width() == 48);
+	CHECK(difference(penumbra, pcf) > 0.01); // The box's penumbra is filtered differently.
+	ProjectSettings::get_singleton()->set_setting(setting, int(RS::AREA_SHADOW_FILTER_PCF));
+	{
+		GodotInstance engine;
+		String error;
+		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 8), error.c_str());
+		CHECK(engine.get_rendering_server()->area_shadow_filter_get_mode() == RS::AREA_SHADOW_FILTER_PCF);
+		pcf_again = render_floor(engine.get_rendering_server(), true, nullptr, true);
+	}
+	ProjectSettings::get_singleton()->clear_override(setting);
+	CHECK(difference(pcf_again, pcf) == 0.0);
 }
 
 } // namespace TestRenderingServerDebug

@@ -487,12 +487,12 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
 	ubo.area_light_count = area_code ? light_storage->get_area_light_count() : 0u;
 	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
-	int cluster_debug = debug_cluster_type;
-	if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS) {
+	int cluster_debug = -1;
+	if (p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS) {
 		cluster_debug = ClusterBuilderRD::ELEMENT_TYPE_OMNI_LIGHT;
-	} else if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_SPOT_LIGHTS) {
+	} else if (p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_SPOT_LIGHTS) {
 		cluster_debug = ClusterBuilderRD::ELEMENT_TYPE_SPOT_LIGHT;
-	} else if (cluster_debug < 0 && p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS) {
+	} else if (p_data.debug_draw == RS::VIEWPORT_DEBUG_DRAW_CLUSTER_AREA_LIGHTS) {
 		cluster_debug = ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT;
 	}
 	if (cluster_debug >= 0 && cluster_debug < ClusterBuilderRD::ELEMENT_TYPE_MAX) {

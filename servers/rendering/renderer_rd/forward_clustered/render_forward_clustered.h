@@ -39,9 +39,8 @@
 /* llvmpipe would otherwise run for every pixel (it predicates branches). */
 /*                                                                        */
 /* Debug view: RS::VIEWPORT_DEBUG_DRAW_CLUSTER_OMNI_LIGHTS / _SPOT_LIGHTS */
-/* (and set_debug_cluster_element_type() for area lights until the RS     */
-/* enum has a CLUSTER_AREA_LIGHTS value) write the per-pixel cluster      */
-/* element count of that type into every colour channel.                  */
+/* / _AREA_LIGHTS write the per-pixel cluster element count of that type  */
+/* into every colour channel.                                             */
 /*                                                                        */
 /* Shaders: shaders/forward_clustered/scene_forward_clustered.glsl and    */
 /* its includes; GPU struct mirrors below are static_asserted.            */
@@ -49,7 +48,7 @@
 #pragma once
 
 #include "core/templates/rid_owner.h"
-#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/directional_shadow_rd.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
@@ -184,7 +183,6 @@ private:
 	bool force_all_lights = false;
 	bool area_code_disabled = false; // Benchmark baseline (set_debug_disable_area_lights).
 	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
-	int debug_cluster_type = -1; // ClusterBuilderRD::ElementType to show, -1 = off.
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
 	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
@@ -226,13 +224,12 @@ public:
 	// Test/debug: off compiles the scene shader with AREA_LTC_NO_PRECISION_FIX (Heitz's original acos
 	// edge integral without the thesis 5.4.4 split, area_light_ltc_inc.glsl). Call before initialize().
 	void set_area_ltc_precision_fix(bool p_enable) { area_ltc_precision_fix = p_enable; }
-	// Debug view: output the per-pixel cluster element count of p_type (a ClusterBuilderRD::ElementType)
-	// instead of shading; -1 turns it off. Overrides RenderSceneData::debug_draw.
-	void set_debug_cluster_element_type(int p_type) { debug_cluster_type = p_type; }
 	// Benchmark baseline (bench --targets, P4): true skips every area-light step of a frame (area shadow
 	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
 	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.
 	void set_debug_disable_area_lights(bool p_disable) override { area_code_disabled = p_disable; }
+	void area_shadow_filter_set_mode(RS::AreaShadowFilter p_filter) override { area_shadows.set_sample_penumbra_filter(p_filter == RS::AREA_SHADOW_FILTER_PENUMBRA); }
+	RS::AreaShadowFilter area_shadow_filter_get_mode() const override { return area_shadows.is_sample_penumbra_filter_enabled() ? RS::AREA_SHADOW_FILTER_PENUMBRA : RS::AREA_SHADOW_FILTER_PCF; }
 	std::vector<std::pair<String, String>> get_debug_scene_shader_sources() const override;
 	// The scene shader (tests check which variants were compiled).
 	const ShaderRD &get_scene_shader() const { return scene_shader; }

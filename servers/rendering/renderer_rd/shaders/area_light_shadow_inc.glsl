@@ -10,8 +10,8 @@
 /* Bindings (set 0, area-light colour variant only): 12 AreaShadowLights  */
 /* (one entry per GPU area light, same index as area_lights.data),        */
 /* 13 the atlas (distance * depth_scale per texel), 14 a nearest sampler. */
-/* C++ mirror of AreaShadowData: AreaShadowRendererRD::AreaShadowData      */
-/* (servers/rendering/renderer_rd/area_shadow_renderer.h), 448 bytes.     */
+/* C++ mirror of AreaShadowData: AreaShadowRendererRD::AreaShadowData     */
+/* (renderer_rd/effects/area_shadow_renderer.h), 448 bytes.               */
 /* A light with map_count 0 is unshadowed (visibility 1); maps listed are */
 /* always drawn (never garbage).                                          */
 

@@ -4,7 +4,7 @@
 /* Shared structures of the adaptive area-shadow passes                   */
 /* (area_shadow_reprojection.glsl, area_shadow_banding.glsl). C++         */
 /* mirrors: AreaShadowAdaptiveRD::GridData / AdaptiveLightData /          */
-/* PointData / QueryData (renderer_rd/area_shadow_adaptive.h).            */
+/* PointData / QueryData (renderer_rd/effects/area_shadow_adaptive.h).    */
 
 #define AREA_SHADOW_ADAPTIVE_MAX_WORDS 3 // 95 points per light: a 9 x 9 tree has 81.
 

@@ -16,7 +16,7 @@
 /* its four corners' bits (0, 1/4, ..., 1). Compiled only when a light    */
 /* uses ADAPTIVE (AreaShadowAdaptiveRD creates it on demand).             */
 /* C++ mirrors: AreaShadowAdaptiveRD::AdaptiveLightData / PointData /     */
-/* ReprojectionPushConstant (renderer_rd/area_shadow_adaptive.h).         */
+/* ReprojectionPushConstant (renderer_rd/effects/area_shadow_adaptive.h). */
 
 #[compute]
 

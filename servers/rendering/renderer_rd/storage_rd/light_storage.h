@@ -214,7 +214,7 @@ public:
 	// For GPU area light i of the last update, its index in the p_lights given (area shadows use it).
 	const std::vector<uint32_t> &get_area_light_source_indices() const { return area_source_indices; }
 
-	// AUTO area shading (servers/rendering/renderer_rd/area_method_selector.h). The renderer gives the
+	// AUTO area shading (servers/rendering/renderer_rd/area_lights/area_method_selector.h). The renderer gives the
 	// visible geometry of the view before update_light_buffers(), which uses it (receiver distance and
 	// dominant roughness per AUTO light) and then forgets it; without it AUTO falls back to the camera
 	// distance and the default-roughness setting. Pointers must stay valid until that call.

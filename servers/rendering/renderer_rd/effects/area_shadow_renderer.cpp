@@ -2,15 +2,16 @@
 /*  area_shadow_renderer.cpp                                              */
 /**************************************************************************/
 
-#include "servers/rendering/renderer_rd/area_shadow_renderer.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 
 #include "core/config/project_settings.h"
 
 #include "core/error/error_macros.h"
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -37,6 +38,15 @@ uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, ui
 	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20) | (w << 24);
 }
 
+RS::AreaShadowFilter AreaShadowRendererRD::get_project_filter() {
+	const int v = int(GLOBAL_DEF(SETTING_FILTER, int(RS::AREA_SHADOW_FILTER_PENUMBRA)).to_int());
+	if (v < 0 || v >= int(RS::AREA_SHADOW_FILTER_MAX)) {
+		ERR_PRINT(vformat("%s must be 0 (PCF) or 1 (PENUMBRA); got %d. Using 1.", SETTING_FILTER, v));
+		return RS::AREA_SHADOW_FILTER_PENUMBRA;
+	}
+	return RS::AreaShadowFilter(v);
+}
+
 bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, uint32_t p_max_lights) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "AreaShadowRendererRD::initialize() needs an initialized RenderingDevice.");
@@ -47,6 +57,7 @@ bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage,
 	light_storage = p_light_storage;
 	mesh_storage = p_mesh_storage;
 	max_lights = std::max(p_max_lights, 1u);
+	sample_filter = get_project_filter() == RS::AREA_SHADOW_FILTER_PENUMBRA;
 	// Project settings for the default atlas (per-viewport sizes come from RS::area_shadow_atlas_set_size).
 	// Invalid values are reported by set_atlas_size() and the built-in defaults stay.
 	{
@@ -352,6 +363,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		uint32_t index = 0;
 		uint64_t key = 0;
 		uint64_t hash = 0;
+		float importance = 0.0f; // AreaShadowAtlas::compute_importance(), as the grid lights'.
 		std::vector<AreaShadowAtlas::Map> maps;
 		std::vector<float> weights;
 	};
@@ -400,6 +412,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			al.index = i;
 			al.key = lf.key;
 			al.hash = hash;
+			al.importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
 			adaptive_lights.push_back(al);
 		} else {
 			uint32_t grid = mode == RS::LIGHT_AREA_SHADOW_PCSS_BASELINE ? 1 : uint32_t(light_storage->light_area_get_shadow_grid(li.light));
@@ -453,8 +466,26 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			_hash_bytes(view_hash, ids, sizeof(ids));
 			_hash_transform(view_hash, gi.transform);
 		}
+		// Fair sharing between the trees (thesis 6.5, as the grid lights share the atlas): lights without
+		// a tree are served first, and each tree holds at most its importance share of the tiles the
+		// trees may use (their own plus the free ones; at least the four of a root quad); while a light
+		// still waits, the others keep four free tiles for it.
+		uint32_t waiting = 0;
+		float importance_sum = 0.0f;
+		for (AdaptiveLight &al : adaptive_lights) {
+			waiting += inst.adaptive->light_get_tree_or_null(al.key) ? 0 : 1;
+			importance_sum += std::max(al.importance, 0.0f);
+		}
+		std::stable_sort(adaptive_lights.begin(), adaptive_lights.end(), [&](const AdaptiveLight &p_a, const AdaptiveLight &p_b) {
+			const bool a_new = !inst.adaptive->light_get_tree_or_null(p_a.key), b_new = !inst.adaptive->light_get_tree_or_null(p_b.key);
+			return a_new != b_new ? a_new : p_a.importance > p_b.importance;
+		});
+		const uint32_t pool = atlas.get_free_tile_count() + atlas.get_external_tile_count();
 		uint32_t cap = atlas.get_max_draws_per_frame();
 		for (AdaptiveLight &al : adaptive_lights) {
+			waiting -= inst.adaptive->light_get_tree_or_null(al.key) ? 0 : 1;
+			const float share = importance_sum > 0.0f ? std::max(al.importance, 0.0f) / importance_sum : 1.0f / float(adaptive_lights.size());
+			inst.adaptive->light_set_tile_cap(al.key, uint32_t(float(pool) * share));
 			uint32_t used = uint32_t(atlas.get_draws().size() + inst.adaptive_draws.size());
 			uint32_t budget = used < cap ? cap - used : 0;
 			if (!inst.adaptive->light_prepare(al.key, inst.adaptive_tiles.get(), al.hash, budget, inst.adaptive_draws, al.maps, &al.weights)) {
@@ -473,7 +504,8 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			in.size = lf.size;
 			in.depth_scale = 1.0f / (lf.range + lf.size.length());
 			in.bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BIAS);
-			in.can_grow = atlas.get_free_tile_count() >= 5; // A split needs up to five new points.
+			// A split needs up to five new points (within the light's cap, which light_prepare() applied).
+			in.can_grow = atlas.get_free_tile_count() >= 5 + 4 * waiting;
 			in.box = light_storage->light_get_aabb(li.light); // Its tests cover the box's screen rectangle.
 			uint64_t state = view_hash;
 			_hash_bytes(state, &al.hash, sizeof(al.hash));

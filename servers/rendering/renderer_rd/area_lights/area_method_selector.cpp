@@ -3,7 +3,7 @@
 /**************************************************************************/
 /* godot-area: AUTO area shading resolution (see area_method_selector.h). */
 
-#include "servers/rendering/renderer_rd/area_method_selector.h"
+#include "servers/rendering/renderer_rd/area_lights/area_method_selector.h"
 
 #include "core/config/project_settings.h"
 #include "core/error/error_macros.h"
@@ -16,7 +16,7 @@
 #include <limits>
 
 namespace {
-#include "servers/rendering/renderer_rd/area_method_error_table.inc"
+#include "servers/rendering/renderer_rd/area_lights/area_method_error_table.inc"
 
 float median_of(std::vector<float> &r_values) {
 	std::sort(r_values.begin(), r_values.end());

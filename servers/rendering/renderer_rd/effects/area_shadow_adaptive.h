@@ -38,8 +38,8 @@
 #include "core/math/aabb.h"
 #include "core/math/projection.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_quadtree.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_quadtree.h"
 #include "servers/rendering/renderer_rd/storage_rd/area_shadow_readback_ring.h"
 #include "servers/rendering/renderer_scene_render.h"
 
@@ -191,6 +191,22 @@ private:
 	std::vector<uint64_t> slot_tokens; // Bumped per write: a late delivery for a reused slot is ignored.
 	std::shared_ptr<bool> alive; // false after finalize(): deliveries still in flight are dropped.
 	AreaShadowReadbackRing ring;
+	// Each tree's tiles go through a capped source (fair sharing between trees, light_set_tile_cap()).
+	// Declared before the trees, so they outlive them (a tree gives its tiles back when destroyed).
+	class CappedTiles : public AreaShadowQuadtree::TileSource {
+		AreaShadowQuadtree::TileSource *source = nullptr;
+		uint32_t held = 0;
+
+	public:
+		uint32_t cap = UINT32_MAX;
+		bool acquire_tile(uint32_t &r_tile) override;
+		void release_tile(uint32_t p_tile) override;
+		uint32_t get_held() const { return held; }
+		explicit CappedTiles(AreaShadowQuadtree::TileSource *p_source) :
+				source(p_source) {}
+	};
+	std::map<uint64_t, std::unique_ptr<CappedTiles>> tree_tiles;
+	std::map<uint64_t, uint32_t> tile_caps; // Light -> the most tiles its tree may hold.
 	std::map<uint64_t, std::unique_ptr<AreaShadowQuadtree>> trees;
 	std::map<uint64_t, uint64_t> content_hashes;
 	std::map<uint64_t, uint64_t> settled; // Light -> state hash its last complete round of tests left unchanged.
@@ -252,6 +268,10 @@ public:
 	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights = nullptr);
 	const AreaShadowQuadtree *light_get_tree_or_null(uint64_t p_light) const;
 	uint32_t get_light_count() const { return uint32_t(trees.size()); }
+	// The most tiles p_light's tree may hold from now on (the renderer's share of the atlas for it; at
+	// least the four of a root quad). Splits that would exceed it fail as if the atlas were full; a tree
+	// already larger keeps its tiles until it prunes.
+	void light_set_tile_cap(uint64_t p_light, uint32_t p_cap);
 	// Frees a light's tree (tiles back to its source).
 	void light_release(uint64_t p_light);
 	// Releases every light not in p_seen (culled, freed, no longer ADAPTIVE).

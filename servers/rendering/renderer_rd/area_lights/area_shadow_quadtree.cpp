@@ -2,7 +2,7 @@
 /*  area_shadow_quadtree.cpp                                              */
 /**************************************************************************/
 
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_quadtree.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_quadtree.h"
 
 #include "core/error/error_macros.h"
 

@@ -9,7 +9,7 @@
 /* shaders/area_light_shadow_inc.glsl where each light's maps are.        */
 /*                                                                        */
 /* Tile sharing, dirty tracking and the per-frame draw cap live in the    */
-/* GPU-free AreaShadowAtlas (storage_rd/area_shadow_atlas.h).             */
+/* GPU-free AreaShadowAtlas (area_lights/area_shadow_atlas.h).             */
 /* Mapping of one map: four perspective octant views in the four          */
 /* quadrants of a tile (shaders/area_shadow_octant_inc.glsl; the choice   */
 /* is measured in doc/shadows.md).                                        */
@@ -26,9 +26,9 @@
 
 #pragma once
 
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/storage_rd/area_shadow_atlas.h"
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_scene_render.h"
 
 #include <map>
@@ -212,7 +212,11 @@ public:
 	// Per-sample penumbra filter (default on): each map's lookup is filtered over the penumbra of the light
 	// cell its sample point stands for (shaders/area_light_shadow_inc.glsl, area_shadow_sample_filtered()).
 	// Off: the fixed-size PCF of shadow_blur (thesis 6.1 as written), for comparisons.
+	// RS::area_shadow_filter_set_mode(); initialize() starts from the project setting SETTING_FILTER.
 	void set_sample_penumbra_filter(bool p_enable) { sample_filter = p_enable; }
+	static constexpr const char *SETTING_FILTER = "rendering/lights_and_shadows/area_shadow_filter";
+	// SETTING_FILTER as an RS::AreaShadowFilter (default PENUMBRA; bad values print an error and use it).
+	static RS::AreaShadowFilter get_project_filter();
 	bool is_sample_penumbra_filter_enabled() const { return sample_filter; }
 
 	RID get_data_buffer() const { return data_buffer; }

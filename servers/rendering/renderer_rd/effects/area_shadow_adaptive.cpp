@@ -2,7 +2,7 @@
 /*  area_shadow_adaptive.cpp                                              */
 /**************************************************************************/
 
-#include "servers/rendering/renderer_rd/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 
 #include "core/config/project_settings.h"
 #include "core/error/error_macros.h"
@@ -117,6 +117,8 @@ void AreaShadowAdaptiveRD::finalize() {
 		alive.reset();
 	}
 	trees.clear(); // Tiles back to their sources.
+	tree_tiles.clear();
+	tile_caps.clear();
 	content_hashes.clear();
 	settled.clear();
 	RenderingDevice *rd = RenderingDevice::get_singleton();
@@ -185,16 +187,44 @@ bool AreaShadowAdaptiveRD::_ensure_pipelines() {
 
 /* Lights */
 
+bool AreaShadowAdaptiveRD::CappedTiles::acquire_tile(uint32_t &r_tile) {
+	if (held >= cap || !source || !source->acquire_tile(r_tile)) {
+		return false;
+	}
+	held++;
+	return true;
+}
+
+void AreaShadowAdaptiveRD::CappedTiles::release_tile(uint32_t p_tile) {
+	if (source) {
+		source->release_tile(p_tile);
+	}
+	held -= held > 0 ? 1 : 0;
+}
+
+void AreaShadowAdaptiveRD::light_set_tile_cap(uint64_t p_light, uint32_t p_cap) {
+	p_cap = std::max(p_cap, 4u);
+	tile_caps[p_light] = p_cap;
+	auto it = tree_tiles.find(p_light);
+	if (it != tree_tiles.end()) {
+		it->second->cap = p_cap;
+	}
+}
+
 AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles) {
 	auto it = trees.find(p_light);
 	if (it != trees.end()) {
 		return it->second.get();
 	}
+	std::unique_ptr<CappedTiles> tiles(new CappedTiles(p_tiles));
+	auto cap = tile_caps.find(p_light);
+	tiles->cap = cap != tile_caps.end() ? cap->second : UINT32_MAX;
 	std::unique_ptr<AreaShadowQuadtree> tree(new AreaShadowQuadtree);
 	tree->set_max_depth(max_depth);
-	if (!tree->reset(p_tiles)) {
+	if (!tree->reset(tiles.get())) {
 		return nullptr;
 	}
+	tree_tiles[p_light] = std::move(tiles);
 	AreaShadowQuadtree *ptr = tree.get();
 	trees[p_light] = std::move(tree);
 	return ptr;
@@ -248,7 +278,9 @@ const AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree_or_null(uint64_t 
 }
 
 void AreaShadowAdaptiveRD::light_release(uint64_t p_light) {
-	trees.erase(p_light);
+	trees.erase(p_light); // First: the tree gives its tiles back through its source.
+	tree_tiles.erase(p_light);
+	tile_caps.erase(p_light);
 	content_hashes.erase(p_light);
 	settled.erase(p_light);
 }
@@ -258,10 +290,16 @@ void AreaShadowAdaptiveRD::release_lights_except(const std::vector<uint64_t> &p_
 		if (std::find(p_seen.begin(), p_seen.end(), it->first) == p_seen.end()) {
 			content_hashes.erase(it->first);
 			settled.erase(it->first);
-			it = trees.erase(it);
+			const uint64_t key = it->first;
+			it = trees.erase(it); // First: the tree gives its tiles back through its source.
+			tree_tiles.erase(key);
+			tile_caps.erase(key);
 		} else {
 			++it;
 		}
+	}
+	for (auto it = tile_caps.begin(); it != tile_caps.end();) { // Caps of lights that never got a tree.
+		it = std::find(p_seen.begin(), p_seen.end(), it->first) == p_seen.end() ? tile_caps.erase(it) : std::next(it);
 	}
 }
 
