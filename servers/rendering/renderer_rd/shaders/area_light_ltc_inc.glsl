@@ -67,6 +67,9 @@
 #ifndef AREA_LIGHT_LTC_INC_GLSL
 #define AREA_LIGHT_LTC_INC_GLSL
 
+// area_texture fetches (vec3(1.0) unless AREA_LIGHT_TEXTURE): included here so every includer has them.
+#include "area_light_texture_inc.glsl"
+
 #if defined(AREA_METHOD_LTC_POLYNOMIAL)
 #define AREA_LTC_HAS_POLYNOMIAL
 #endif
