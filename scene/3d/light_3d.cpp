@@ -647,10 +647,8 @@ void AreaLight3D::set_area_shadow_grid(int p_grid) {
 
 void AreaLight3D::set_area_texture(const Ref<Texture2D> &p_texture) {
 	area_texture = p_texture;
+	// A texture without texels (an empty ImageTexture) has no RID: the light is drawn untextured, as upstream.
 	RID rid = area_texture.is_valid() ? area_texture->get_rid() : RID();
-	if (area_texture.is_valid() && !rid.is_valid()) {
-		WARN_PRINT(vformat("AreaLight3D \"%s\": area_texture (%s) has no texels; the light is drawn untextured.", get_name().c_str(), area_texture->get_class().c_str()));
-	}
 	if (get_light().is_valid()) {
 		RS::get_singleton()->light_area_set_texture(get_light(), rid);
 	}
