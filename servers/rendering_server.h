@@ -404,6 +404,11 @@ public:
 	// Sets the emitting shape of an area light (what its size means: see LightAreaShape; other values are
 	// rejected with an error, the old shape kept).
 	virtual void light_area_set_shape(RID p_light, LightAreaShape p_shape) = 0;
+	// Sets the texture of an area light (upstream Godot 4.7's area_texture): the emitted radiance at
+	// each point of the rectangle is L_e times the texture's linear colour there (texels sRGB-encoded;
+	// u runs along the light's local -X, v along -Y, so the image reads upright from the lit side).
+	// RID() removes it. The renderer copies the texels into its area-light atlas once, on change.
+	virtual void light_area_set_texture(RID p_light, RID p_texture) = 0;
 	// Returns the light type (LIGHT_DIRECTIONAL for an invalid RID, with an error).
 	virtual LightType light_get_type(RID p_light) const = 0;
 	// Returns one scalar parameter (0 for an invalid RID or index).
@@ -425,6 +430,8 @@ public:
 	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
 	// Returns the emitting shape of an area light (RECTANGLE with an error for an invalid RID).
 	virtual LightAreaShape light_area_get_shape(RID p_light) const = 0;
+	// Returns the texture of an area light (RID() when untextured).
+	virtual RID light_area_get_texture(RID p_light) const = 0;
 
 	/* CAMERA API */
 

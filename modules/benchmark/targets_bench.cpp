@@ -129,7 +129,8 @@ public:
 	}
 
 	// p_method < 0: footprint-matched spots; else area lights with that RS::LightAreaShadingMethod.
-	bool add_light_grid(RID p_scenario, int p_method, int p_lights) {
+	// p_texture: the area_texture of every area light (RID() for none).
+	bool add_light_grid(RID p_scenario, int p_method, int p_lights, RID p_texture = RID()) {
 		const int k = int(std::ceil(std::sqrt(double(p_lights))));
 		const Basis down = Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f);
 		float spot_angle = 0.0f, spot_range = 0.0f;
@@ -144,6 +145,9 @@ public:
 					return false;
 				}
 				rs->light_set_param(l, RS::LIGHT_PARAM_RANGE, LIGHT_RANGE);
+				if (p_texture.is_valid()) {
+					rs->light_area_set_texture(l, p_texture);
+				}
 			} else {
 				l = keep(rs->spot_light_create());
 				rs->light_set_param(l, RS::LIGHT_PARAM_SPOT_ANGLE, spot_angle);
@@ -173,6 +177,18 @@ public:
 		rs->instance_set_scenario(inst, p_scenario);
 		rs->instance_set_transform(inst, Transform3D(Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f), Vector3(0, 2.5f, 0)));
 		return l;
+	}
+
+	// T1's area_texture: 256 x 256 texels, colour quadrants under a fine checker (every atlas level differs).
+	RID pattern_texture() {
+		Image image(256, 256);
+		for (int y = 0; y < 256; y++) {
+			for (int x = 0; x < 256; x++) {
+				const float c = ((x / 8 + y / 8) & 1) ? 1.0f : 0.6f;
+				image.set_pixel(x, y, Color(x < 128 ? c : 0.2f * c, y < 128 ? c : 0.5f * c, (x >= 128) == (y >= 128) ? c : 0.1f, 1.0f));
+			}
+		}
+		return keep(rs->texture_2d_create(image));
 	}
 
 	RID viewport(RID p_scenario, int p_width, int p_height) {
@@ -260,8 +276,22 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 		}
 		std::vector<std::pair<int, RID>> ltc_scenarios;
-		if (p_options.shadows_only) {
+		if (p_options.shadows_only || p_options.texture_only) {
 			counts.clear();
+		}
+		// T1: the same LTC grid with and without an area_texture (in one process, interleaved below).
+		if (!p_options.shadows_only) {
+			RID texture = scenes.pattern_texture();
+			for (int n : p_options.t1_lights) {
+				if (std::find(counts.begin(), counts.end(), n) == counts.end()) {
+					RID ltc = scenes.scenario_with_floor();
+					scenes.add_light_grid(ltc, RS::LIGHT_AREA_SHADING_LTC, n);
+					add(vformat("LTC_%d", n), scenes.viewport(ltc, w, h));
+				}
+				RID tex = scenes.scenario_with_floor();
+				scenes.add_light_grid(tex, RS::LIGHT_AREA_SHADING_LTC, n, texture);
+				add(vformat("LTC_TEX_%d", n), scenes.viewport(tex, w, h));
+			}
 		}
 		for (int n : counts) {
 			if (n < 1 || n > int(CLI_MAX_LIGHTS_PER_TYPE)) {
@@ -288,7 +318,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			error = "an area light rejected its shading method.";
 		}
 		// P4: a scene without area lights (16 spots and a box), with and without the area code.
-		if (!p_options.shadows_only) {
+		if (!p_options.shadows_only && !p_options.texture_only) {
 			RID no_area = scenes.scenario_with_floor();
 			scenes.add_light_grid(no_area, -1, 16);
 			scenes.add_box(no_area, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
@@ -298,6 +328,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		}
 		// S1: one 25-map area light above a box, shadows on / off.
 		for (bool shadow : { true, false }) {
+			if (p_options.texture_only) {
+				break;
+			}
 			RID s = scenes.scenario_with_floor();
 			scenes.add_box(s, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
 			scenes.add_shadow_light(s, shadow);
@@ -305,7 +338,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		}
 		// S2: the same light with the PCSS baseline, and 4 / 9 maps with and without the per-sample
 		// penumbra filter (issue 19's default: frame <= 1.5 x PCSS's).
-		{
+		if (!p_options.texture_only) {
 			RID s = scenes.scenario_with_floor();
 			scenes.add_box(s, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
 			scenes.add_shadow_light(s, true, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
@@ -325,8 +358,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			add("SHADOW_81", scenes.viewport(g, w, h));
 		}
 		// C1: the embedded demo scene (the CLI's default scene) in a scene tree.
-		Node *demo = p_options.shadows_only ? nullptr : GodotInstance::load_scene(String(), &error);
-		if (!demo && !p_options.shadows_only) {
+		const bool no_demo = p_options.shadows_only || p_options.texture_only;
+		Node *demo = no_demo ? nullptr : GodotInstance::load_scene(String(), &error);
+		if (!demo && !no_demo) {
 			ok = false;
 			error = "cannot load the embedded demo scene: " + error;
 		} else if (demo) {
@@ -416,6 +450,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 				ratio("P2", vformat("LTC / MRP, %d lights", n), vformat("LTC_%d", n), vformat("MRP_%d", n), 1.2, true);
 			}
 			ratio("P4", "no-area scene / same frame with the area code off", "NO_AREA", "NO_AREA_CODE_OFF", 1.01, true);
+			for (int n : p_options.t1_lights) {
+				ratio("T1", vformat("textured LTC / untextured LTC, %d lights", n), vformat("LTC_TEX_%d", n), vformat("LTC_%d", n), 1.15, true);
+			}
 			ratio("S1", "one 25-map shadowed area light / unshadowed", "SHADOW_25", "SHADOW_OFF", 1.25, true);
 			for (const char *name : { "SHADOW_4", "SHADOW_9", "SHADOW_25", "SHADOW_81", "SHADOW_4_PCF", "SHADOW_9_PCF", "SHADOW_25_PCF" }) {
 				ratio("S2", vformat("%s / the PCSS baseline", name), name, "SHADOW_PCSS", 1.5, String(name) == "SHADOW_4");
@@ -513,6 +550,8 @@ int targets_bench_command(const std::vector<String> &p_args) {
 			options.progress = true;
 		} else if (a == "--shadows-only") {
 			options.shadows_only = true;
+		} else if (a == "--texture-only") {
+			options.texture_only = true;
 		} else if (a == "--rounds" && has_value) {
 			if (!parse_int(p_args[++i], 1, 1000, options.rounds)) {
 				fprintf(stderr, "godot-area bench --targets: --rounds must be an integer in 1..1000, got '%s'\n", p_args[i].c_str());
@@ -526,7 +565,7 @@ int targets_bench_command(const std::vector<String> &p_args) {
 				return 2;
 			}
 		} else {
-			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only)\n", a.c_str());
+			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only, --texture-only)\n", a.c_str());
 			return 2;
 		}
 	}

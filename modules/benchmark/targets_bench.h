@@ -46,6 +46,9 @@ public:
 		std::vector<int> p2_lights = { 16, 64 };
 		bool progress = false;
 		bool shadows_only = false; // Only the S1 / S2 shadow configurations (--shadows-only).
+		// T1: LTC lights with an area_texture (a 256 x 256 pattern) / the same lights untextured.
+		std::vector<int> t1_lights = { 16 };
+		bool texture_only = false; // Only the T1 configurations (--texture-only).
 	};
 
 	struct Result {

@@ -18,6 +18,7 @@
 
 #pragma once
 
+#include "core/io/image.h"
 #include "core/math/color.h"
 #include "core/math/math_funcs.h"
 #include "core/math/transform_3d.h"
@@ -69,6 +70,9 @@ struct AreaLightData {
 	float specular_amount = 1.0f; // "light_specular".
 	uint32_t cull_mask = 0xFFFFFFFF;
 	AreaLightShape shape = AREA_LIGHT_SHAPE_RECTANGLE;
+	// area_texture texels (float RGBA, sRGB-encoded; owned by the material storage), null when untextured:
+	// the emitted radiance at a point is radiance times area_light_texture_at() (area_light_texture.h).
+	const Image *texture = nullptr;
 
 	float get_area() const { return area_light_shape_area(shape, size_x, size_y); }
 };

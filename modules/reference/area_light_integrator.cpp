@@ -6,6 +6,7 @@
 #include "modules/reference/area_light_integrator.h"
 
 #include "core/error/error_macros.h"
+#include "modules/reference/area_light_texture.h"
 #include "modules/reference/forward_lights.h"
 
 #include <algorithm>
@@ -431,7 +432,9 @@ AreaLightIntegral area_light_integrate(const AreaLightData &p_light, const AreaL
 			return;
 		}
 		Vector3 diffuse, specular;
-		light_compute(p_point.N, L, p_point.V, p_light.radiance, p_light.specular_amount, p_point.diffuse_mode, p_point.roughness, p_point.f0, p_point.f90, p_point.specular_enabled, diffuse, specular);
+		// area_texture: the exact emitted radiance at this point of the light (area_light_texture.h).
+		const Vector3 emitted = p_light.texture ? p_light.radiance * area_light_texture_at(p_light.texture, float(u), float(w), p_light.size_x, p_light.size_y) : p_light.radiance;
+		light_compute(p_point.N, L, p_point.V, emitted, p_light.specular_amount, p_point.diffuse_mode, p_point.roughness, p_point.f0, p_point.f90, p_point.specular_enabled, diffuse, specular);
 		const Vector3 d = diffuse_here ? diffuse * p_point.diffuse_weight : Vector3();
 		r_value[0] += (diffuse_weight * double(d.x) + spec_weight * double(specular.x)) / own;
 		r_value[1] += (diffuse_weight * double(d.y) + spec_weight * double(specular.y)) / own;

@@ -299,6 +299,10 @@ bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_inst
 		a.attenuation = std::fmax(light_storage->light_get_param(rid, RS::LIGHT_PARAM_ATTENUATION), 0.0f);
 		a.specular_amount = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR);
 		a.cull_mask = light_storage->light_get_cull_mask(rid);
+		const RID texture = light_storage->light_area_get_texture(rid);
+		if (texture.is_valid() && material_storage && material_storage->owns_texture(texture)) {
+			a.texture = material_storage->texture_get_image(texture);
+		}
 		return true;
 	}
 	// RendererRD::LightStorage::fill_light_data, in world instead of view space.

@@ -662,6 +662,15 @@ void AreaLight3D::set_area_shadow_grid(int p_grid) {
 	}
 }
 
+void AreaLight3D::set_area_texture(const Ref<Texture2D> &p_texture) {
+	area_texture = p_texture;
+	// A texture without texels (an empty ImageTexture) has no RID: the light is drawn untextured, as upstream.
+	RID rid = area_texture.is_valid() ? area_texture->get_rid() : RID();
+	if (get_light().is_valid()) {
+		RS::get_singleton()->light_area_set_texture(get_light(), rid);
+	}
+}
+
 void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
 	const String &n = p_property.name;
 	// Godot style: shadow settings are saved but not shown while shadows are off (Light3D hides shadow_*).
@@ -716,10 +725,13 @@ void AreaLight3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_area_shadow_mode"), &AreaLight3D::get_area_shadow_mode);
 	ClassDB::bind_method(D_METHOD("set_area_shadow_grid", "grid"), &AreaLight3D::set_area_shadow_grid);
 	ClassDB::bind_method(D_METHOD("get_area_shadow_grid"), &AreaLight3D::get_area_shadow_grid);
+	ClassDB::bind_method(D_METHOD("set_area_texture", "texture"), &AreaLight3D::set_area_texture);
+	ClassDB::bind_method(D_METHOD("get_area_texture"), &AreaLight3D::get_area_texture);
 
 	ADD_GROUP("Area", "area_");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shape", PROPERTY_HINT_ENUM, "Rectangle,Disk,Sphere,Tube"), "set_area_shape", "get_area_shape");
 	ADD_PROPERTY(PropertyInfo(Variant::VECTOR2, "area_size", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,suffix:m"), "set_area_size", "get_area_size");
+	ADD_PROPERTY(PropertyInfo(Variant::OBJECT, "area_texture", PROPERTY_HINT_RESOURCE_TYPE, "Texture2D"), "set_area_texture", "get_area_texture");
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_range", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,exp,suffix:m"), "set_param", "get_param", PARAM_RANGE);
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_attenuation", PROPERTY_HINT_RANGE, "0,10,0.001,or_greater"), "set_param", "get_param", PARAM_ATTENUATION);
 	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "area_normalize_energy"), "set_area_normalize_energy", "is_area_normalizing_energy");

@@ -260,6 +260,7 @@ private:
 	int area_stochastic_samples = RS::LIGHT_AREA_STOCHASTIC_SAMPLES_DEFAULT;
 	AreaShadowMode area_shadow_mode = AREA_SHADOW_FIXED;
 	int area_shadow_grid = RS::LIGHT_AREA_SHADOW_GRID_DEFAULT;
+	Ref<Texture2D> area_texture;
 
 protected:
 	static void _bind_methods();
@@ -285,6 +286,11 @@ public:
 	// AREA_SHADOW_FIXED: area_shadow_grid x area_shadow_grid shadow maps over the light (2..9, else rejected).
 	void set_area_shadow_grid(int p_grid);
 	int get_area_shadow_grid() const { return area_shadow_grid; }
+	// Upstream Godot 4.7's area_texture (default null): the light's emitted colour over the rectangle, the
+	// image upright as seen from the lit side (u along local -X, v along local -Y). The radiance at a point
+	// is L_e times the texture's linear colour there; a white texture equals no texture.
+	void set_area_texture(const Ref<Texture2D> &p_texture);
+	Ref<Texture2D> get_area_texture() const { return area_texture; }
 
 	// Thesis Listing A.1: the shape grown by the range r (RendererLightStorage::compute_area_light_aabb):
 	// rectangle and disk sideways and in front, AABB(-(a/2 + r, b/2 + r, r), (a + 2r, b + 2r, r)); sphere

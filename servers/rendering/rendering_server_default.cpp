@@ -609,3 +609,12 @@ int RenderingServerDefault::light_area_get_shadow_grid(RID p_light) const {
 RS::LightAreaShape RenderingServerDefault::light_area_get_shape(RID p_light) const {
 	return RSG::light_storage->light_area_get_shape(p_light);
 }
+
+void RenderingServerDefault::light_area_set_texture(RID p_light, RID p_texture) {
+	ERR_FAIL_COND_MSG(p_texture.is_valid() && !RSG::material_storage->owns_texture(p_texture), "light_area_set_texture: the texture RID is not a texture of this renderer (freed, or another kind of RID); the old texture is kept.");
+	RSG::light_storage->light_area_set_texture(p_light, p_texture);
+}
+
+RID RenderingServerDefault::light_area_get_texture(RID p_light) const {
+	return RSG::light_storage->light_area_get_texture(p_light);
+}

@@ -85,6 +85,7 @@ public:
 	void light_area_set_shadow_mode(RID p_light, LightAreaShadowMode p_mode) override;
 	void light_area_set_shadow_grid(RID p_light, int p_grid) override;
 	void light_area_set_shape(RID p_light, LightAreaShape p_shape) override;
+	void light_area_set_texture(RID p_light, RID p_texture) override;
 	LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, LightParam p_param) const override;
 	AABB light_get_aabb(RID p_light) const override;
@@ -95,6 +96,7 @@ public:
 	LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const override;
 	int light_area_get_shadow_grid(RID p_light) const override;
 	LightAreaShape light_area_get_shape(RID p_light) const override;
+	RID light_area_get_texture(RID p_light) const override;
 
 	RID camera_create() override;
 	void camera_set_perspective(RID p_camera, float p_fovy_degrees, float p_z_near, float p_z_far) override;

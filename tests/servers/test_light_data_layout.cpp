@@ -153,7 +153,7 @@ TEST_CASE("[LightStorage] LightData, AreaLightData and ClusterElementData match 
 	using AD = RendererRD::LightStorage::AreaLightData;
 	check_layout(spirv_struct_layout(spirv, "AreaLightData"), "AreaLightData",
 			{ MEMBER(AD, position), MEMBER(AD, inv_radius), MEMBER(AD, half_axis_x), MEMBER(AD, attenuation), MEMBER(AD, half_axis_y),
-					MEMBER(AD, specular_amount), MEMBER(AD, normal), MEMBER(AD, shading_method), MEMBER(AD, color), MEMBER(AD, cull_mask) },
+					MEMBER(AD, specular_amount), MEMBER(AD, normal), MEMBER(AD, shading_method), MEMBER(AD, color), MEMBER(AD, cull_mask), MEMBER(AD, texture_rect) },
 			sizeof(AD));
 
 	using ED = ClusterBuilderRD::ElementData;

@@ -96,6 +96,8 @@ public:
 	virtual void light_area_set_shadow_grid(RID p_light, int p_grid) = 0;
 	// Sets an area light's shape (bump the version: the bound changes).
 	virtual void light_area_set_shape(RID p_light, RS::LightAreaShape p_shape) = 0;
+	// area_texture: a texture of the material storage, or RID() for none.
+	virtual void light_area_set_texture(RID p_light, RID p_texture) = 0;
 
 	// Returns the type (LIGHT_DIRECTIONAL with an error for an invalid RID).
 	virtual RS::LightType light_get_type(RID p_light) const = 0;
@@ -142,6 +144,7 @@ public:
 	virtual RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const = 0;
 	virtual int light_area_get_shadow_grid(RID p_light) const = 0;
 	virtual RS::LightAreaShape light_area_get_shape(RID p_light) const = 0;
+	virtual RID light_area_get_texture(RID p_light) const = 0;
 	// Returns the local-space bound (see compute_light_aabb).
 	virtual AABB light_get_aabb(RID p_light) const = 0;
 	// Returns a counter bumped whenever culling or shadows are affected (cached shadows compare it).

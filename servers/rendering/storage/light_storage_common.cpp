@@ -377,3 +377,15 @@ int LightStorageCommon::light_area_get_shadow_grid(RID p_light) const {
 	GET_LIGHT_OR_FAIL_V(light, RS::LIGHT_AREA_SHADOW_GRID_DEFAULT);
 	return light->area_shadow_grid;
 }
+
+void LightStorageCommon::light_area_set_texture(RID p_light, RID p_texture) {
+	GET_LIGHT_OR_FAIL(light);
+	ERR_FAIL_COND_MSG(light->type != RS::LIGHT_AREA, "light_area_set_texture: the light is not an area light.");
+	// No version bump: the texture changes neither the culling bounds nor the shadows.
+	light->area_texture = p_texture;
+}
+
+RID LightStorageCommon::light_area_get_texture(RID p_light) const {
+	GET_LIGHT_OR_FAIL_V(light, RID());
+	return light->area_texture;
+}

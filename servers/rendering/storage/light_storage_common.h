@@ -38,6 +38,7 @@ protected:
 		RS::LightAreaShadowMode area_shadow_mode = RS::LIGHT_AREA_SHADOW_FIXED;
 		int area_shadow_grid = RS::LIGHT_AREA_SHADOW_GRID_DEFAULT;
 		RS::LightAreaShape area_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE;
+		RID area_texture; // area_texture (a material storage texture), RID() for none.
 		uint64_t version = 0;
 	};
 
@@ -77,6 +78,7 @@ public:
 	void light_area_set_shadow_mode(RID p_light, RS::LightAreaShadowMode p_mode) override;
 	void light_area_set_shadow_grid(RID p_light, int p_grid) override;
 	void light_area_set_shape(RID p_light, RS::LightAreaShape p_shape) override;
+	void light_area_set_texture(RID p_light, RID p_texture) override;
 
 	RS::LightType light_get_type(RID p_light) const override;
 	float light_get_param(RID p_light, RS::LightParam p_param) const override;
@@ -102,6 +104,7 @@ public:
 	RS::LightAreaShadowMode light_area_get_shadow_mode(RID p_light) const override;
 	int light_area_get_shadow_grid(RID p_light) const override;
 	RS::LightAreaShape light_area_get_shape(RID p_light) const override;
+	RID light_area_get_texture(RID p_light) const override;
 	AABB light_get_aabb(RID p_light) const override;
 	uint64_t light_get_version(RID p_light) const override;
 };

@@ -81,6 +81,7 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	if (!material_storage->get_sampler().is_valid()) {
 		ERR_FAIL_COND_V_MSG(!material_storage->initialize_gpu(), false, "RenderForwardClustered: material storage GPU setup failed.");
 	}
+	light_storage->set_area_texture_source(material_storage); // area_texture texels (the atlas copies them on change).
 	ERR_FAIL_COND_V_MSG(!area_shadows.initialize(light_storage, mesh_storage, light_storage->get_max_lights()), false, "RenderForwardClustered: area shadows failed to initialize.");
 	directional_shadows.initialize(light_storage, mesh_storage); // GPU resources on the first shadowed sun.
 	scene_ubo = rd->uniform_buffer_create(sizeof(SceneDataUBO));
@@ -216,6 +217,9 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 	if (p_area_methods & AREA_VERSION_SHAPES) {
 		defines += "#define USE_AREA_SHAPES\n";
 	}
+	if (p_area_methods & AREA_VERSION_TEXTURE) {
+		defines += "#define AREA_LIGHT_TEXTURE\n";
+	}
 	return defines;
 }
 
@@ -289,7 +293,7 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 }
 
 RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVariant p_variant) {
-	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES;
+	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE;
 	const uint32_t valid_bits = area_bits | SCENE_VERSION_FEATURE_BITS;
 	const bool has_area = (p_key & AREA_VERSION_METHOD_BITS) != 0;
 	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0), RID(),
@@ -309,6 +313,7 @@ RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVaria
 			compiled_area_shapes = compiled_area_shapes || (p_key & AREA_VERSION_SHAPES) != 0;
 		}
 		compiled_feature_mask |= p_key & SCENE_VERSION_FEATURE_BITS;
+		area_texture_compiled = area_texture_compiled || (p_key & AREA_VERSION_TEXTURE) != 0;
 	}
 	return shader;
 }
@@ -363,7 +368,8 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		const RID sky_buffer = (p_area_methods & SCENE_VERSION_SKY_AMBIENT) ? sky.get_ambient_buffer() : RID();
 		const RID sun_atlas = (p_area_methods & SCENE_VERSION_DIRECTIONAL_SHADOWS) ? directional_shadows.get_atlas_texture() : RID();
 		const RID sky_radiance = (p_area_methods & SCENE_VERSION_SKY_REFLECTION) ? sky.get_radiance_texture() : RID();
-		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer && av.scene_set_directional_shadow_atlas == sun_atlas && av.scene_set_sky_radiance == sky_radiance;
+		const RID texture_atlas = (p_area_methods & AREA_VERSION_TEXTURE) ? light_storage->get_area_light_atlas().get_texture() : RID();
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer && av.scene_set_directional_shadow_atlas == sun_atlas && av.scene_set_sky_radiance == sky_radiance && av.scene_set_area_light_atlas == texture_atlas;
 		if (!area_ok) {
 			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
 				rd->free(av.scene_set);
@@ -382,6 +388,11 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 13, area_shadows.get_atlas_texture()));
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 14, area_shadows.get_sampler()));
 				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 15, area_shadows.get_compare_sampler()));
+			}
+			if (p_area_methods & AREA_VERSION_TEXTURE) {
+				ERR_FAIL_COND_V_MSG(!texture_atlas.is_valid(), false, "RenderForwardClustered: a textured area light version without the area light atlas.");
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_TEXTURE, 4, texture_atlas));
+				u.push_back(RD::Uniform(RD::UNIFORM_TYPE_SAMPLER, 10, light_storage->get_area_light_atlas().get_sampler()));
 			}
 			if (p_area_methods & SCENE_VERSION_DIRECTIONAL) {
 				ERR_FAIL_COND_V_MSG(!directional_buffer.is_valid(), false, "RenderForwardClustered: a directional version without the directional light buffer.");
@@ -410,6 +421,7 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 			av.scene_set_sky_buffer = sky_buffer;
 			av.scene_set_directional_shadow_atlas = sun_atlas;
 			av.scene_set_sky_radiance = sky_radiance;
+			av.scene_set_area_light_atlas = texture_atlas;
 		}
 		if (!av.scene_set.is_valid()) {
 			return false;
@@ -521,6 +533,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	uint32_t area_methods = use_area ? (light_storage->get_area_shading_method_mask() | _get_area_shadow_version_bits()) : 0u;
 	if (use_area && (light_storage->get_area_shape_mask() & ~(1u << RS::LIGHT_AREA_SHAPE_RECTANGLE)) != 0) {
 		area_methods |= AREA_VERSION_SHAPES;
+	}
+	if (use_area && light_storage->has_textured_area_lights()) {
+		area_methods |= AREA_VERSION_TEXTURE; // area_texture: the atlas and its fetch code, only now.
 	}
 	if (light_storage->get_directional_light_count() > 0) {
 		area_methods |= SCENE_VERSION_DIRECTIONAL;

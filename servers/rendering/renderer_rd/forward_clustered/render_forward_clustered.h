@@ -174,11 +174,13 @@ private:
 		RID scene_set_sky_buffer; // Sky ambient buffer scene_set was made with (RID() without).
 		RID scene_set_directional_shadow_atlas; // Directional shadow atlas scene_set was made with (RID() without).
 		RID scene_set_sky_radiance; // Sky radiance cubemap scene_set was made with (RID() without).
+		RID scene_set_area_light_atlas; // Area light (texture) atlas scene_set was made with (RID() without).
 	};
 	std::map<uint32_t, AreaVersion> area_versions;
 	uint32_t compiled_area_method_mask = 0; // Union of the keys of the area versions compiled so far.
 	uint32_t compiled_feature_mask = 0; // Union of the SCENE_VERSION_* feature bits compiled so far.
 	bool compiled_area_shapes = false; // Some compiled area version has AREA_VERSION_SHAPES.
+	bool area_texture_compiled = false; // Some compiled version has AREA_VERSION_TEXTURE.
 	std::map<uint64_t, RID> pipelines; // Key: variant | cull mode << 8 | framebuffer format << 16 | version key << 32.
 
 	bool force_all_lights = false;
@@ -251,6 +253,9 @@ public:
 	// USE_AREA_SHAPES: some area light of the view is a disk, sphere or tube (area_light_shapes_inc.glsl);
 	// a view of rectangles only compiles no shape code.
 	static constexpr uint32_t AREA_VERSION_SHAPES = 1u << 16;
+	// "#define AREA_LIGHT_TEXTURE\n": some area light of the view has an area_texture in the atlas
+	// (area_light_texture_inc.glsl, bindings 4 and 10). Without it no texture code and no atlas.
+	static constexpr uint32_t AREA_VERSION_TEXTURE = 1u << 13;
 	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
 	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
@@ -270,12 +275,14 @@ public:
 	static constexpr uint32_t SCENE_VERSION_SKY_REFLECTION = 1u << 15;
 	static constexpr uint32_t SCENE_VERSION_FEATURE_BITS = SCENE_VERSION_DIRECTIONAL | SCENE_VERSION_SKY_AMBIENT | SCENE_VERSION_SS_RADIOSITY | SCENE_VERSION_DIRECTIONAL_SHADOWS | SCENE_VERSION_SKY_REFLECTION;
 	// Every bit of a version key means one thing (the pipeline cache keys on all 32 of them).
-	static_assert(((AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES) & SCENE_VERSION_FEATURE_BITS) == 0, "Area and scene version bits overlap.");
-	static_assert((AREA_VERSION_METHOD_BITS & (AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES)) == 0, "Area version bits overlap.");
+	static_assert(((AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE) & SCENE_VERSION_FEATURE_BITS) == 0, "Area and scene version bits overlap.");
+	static_assert((AREA_VERSION_METHOD_BITS & (AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE)) == 0 && (AREA_VERSION_SHAPES & AREA_VERSION_TEXTURE) == 0, "Area version bits overlap.");
 	// get_area_method_defines() plus the feature defines of p_key.
 	static String get_scene_version_defines(uint32_t p_key);
 	// SCENE_VERSION_* bits of every version compiled so far (tests: a scene without a sun compiles none).
 	uint32_t get_compiled_feature_mask() const { return compiled_feature_mask; }
+	// True once a version with the area-light texture code (AREA_VERSION_TEXTURE) has compiled.
+	bool is_area_texture_compiled() const { return area_texture_compiled; }
 
 	// Directional (sun) shadows: atlas, splits and passes of the last frame (tests, bench).
 	DirectionalShadowRD &get_directional_shadows() { return directional_shadows; }

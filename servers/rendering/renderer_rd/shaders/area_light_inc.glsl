@@ -171,6 +171,8 @@ float area_light_solid_angle(AreaLightData p_light, vec3 p_vertex, vec3 p_x, vec
 #endif // AREA_LIGHT_INC_GLSL
 
 // Method implementations (outside the guard's helper block so each keeps its own include guard).
+// area_texture fetches (no-ops returning 1 unless AREA_LIGHT_TEXTURE), used by every method below.
+#include "area_light_texture_inc.glsl"
 #include "area_light_ltc_inc.glsl"
 #ifdef AREA_METHOD_MRP
 #include "area_light_mrp_inc.glsl"

@@ -69,6 +69,9 @@
 #ifndef AREA_LIGHT_LTC_INC_GLSL
 #define AREA_LIGHT_LTC_INC_GLSL
 
+// area_texture fetches (vec3(1.0) unless AREA_LIGHT_TEXTURE): included here so every includer has them.
+#include "area_light_texture_inc.glsl"
+
 #if defined(AREA_METHOD_LTC_POLYNOMIAL)
 #define AREA_LTC_HAS_POLYNOMIAL
 #endif
@@ -405,11 +408,19 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	float diffuse;
 	float spec;
 	ltc_rect_form_factors(q, p_specular_enabled, m_inv, diffuse, spec);
-	r_diffuse += radiance * diffuse;
+	r_diffuse += radiance * diffuse * area_texture_ltc(p_light, q, true); // Texture: area_light_texture_inc.glsl.
 	if (p_specular_enabled) {
+		// The texture is fetched where the lobe's vector form factor meets the light in LTC space
+		// (the unclipped corners mapped by M^-1); vec3(1.0) and no work without AREA_LIGHT_TEXTURE.
+		vec3 qs[4];
+#ifdef AREA_LIGHT_TEXTURE
+		for (int i = 0; i < 4; i++) {
+			qs[i] = m_inv * q[i];
+		}
+#endif
 		// Thesis eq. 5.10.
 		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
-		r_specular += radiance * p_light.specular_amount * spec * F;
+		r_specular += radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
 	}
 }
 

@@ -139,7 +139,8 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 		vec2 u = area_mc_random2(diffuse_seed, i);
 		vec3 q = area_spherical_rect_sample(rect, u.x, u.y);
 		vec3 l = normalize(q - p_vertex);
-		light_compute(N, l, V, radiance * (omega * inv_n), 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
+		vec3 tex = area_texture_point(p_light, q - p_light.position, ax, ay, half_size); // area_texture, exact.
+		light_compute(N, l, V, radiance * (omega * inv_n) * tex, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
 	}
 	r_diffuse += diffuse;
 
@@ -158,8 +159,9 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 	for (uint i = 0u; i < n; i++) {
 		// Light strategy.
 		vec2 u = area_mc_random2(specular_seed, 2u * i);
-		vec3 l = normalize(area_spherical_rect_sample(rect, u.x, u.y) - p_vertex);
-		vec3 lobe = area_mc_specular_lobe(N, V, l, p_roughness, p_f0, p_f90);
+		vec3 q = area_spherical_rect_sample(rect, u.x, u.y);
+		vec3 l = normalize(q - p_vertex);
+		vec3 lobe = area_mc_specular_lobe(N, V, l, p_roughness, p_f0, p_f90) * area_texture_point(p_light, q - p_light.position, ax, ay, half_size);
 		if (lobe != vec3(0.0)) {
 			float pdf_brdf = brdf_sampling ? area_mc_vndf_pdf(N, V, l, nov, alpha) : 0.0;
 			sum += lobe / (pdf_light + pdf_brdf);
@@ -179,7 +181,7 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 		if (abs(dot(hit, ax)) > half_size.x || abs(dot(hit, ay)) > half_size.y) {
 			continue;
 		}
-		vec3 lobe_b = area_mc_specular_lobe(N, V, lb, p_roughness, p_f0, p_f90);
+		vec3 lobe_b = area_mc_specular_lobe(N, V, lb, p_roughness, p_f0, p_f90) * area_texture_point(p_light, hit, ax, ay, half_size);
 		float pdf_b = area_mc_vndf_pdf(N, V, lb, nov, alpha);
 		sum += lobe_b / (pdf_light + pdf_b);
 	}

@@ -128,7 +128,9 @@ void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	// Drobot eq. 1.16 with the exact solid angle; Burley or Lambert as for punctual lights.
 	vec3 diffuse = vec3(0.0);
 	vec3 unused_specular = vec3(0.0);
-	light_compute(N, l_d, V, radiance * omega, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
+	// area_texture: Drobot eq. 1.24's lookup at p_d, footprint from the plane distance (area_light_texture_inc).
+	vec3 tex_d = area_texture_mrp(p_light, uv_d, half_size, AREA_TEXTURE_MRP_DIFFUSE_SIGMA * plane_dist);
+	light_compute(N, l_d, V, radiance * omega * tex_d, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
 	r_diffuse += diffuse;
 
 	if (!p_specular_enabled) {
@@ -183,7 +185,9 @@ void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	// Point-light value times the light's solid angle, scaled by the ratio Omega_S / Omega (thesis 5.3);
 	// D V cos over any part of the sphere integrates to at most 1 (energy conservation).
 	float integral = min(lobe * omega * (omega_s / omega), 1.0);
-	r_specular += radiance * p_light.specular_amount * integral * F_Schlick(p_f0, p_f90, LoH);
+	// area_texture: Drobot eq. 1.28's lookup at p_s, footprint from the projected importance cone (rho).
+	vec3 tex_s = area_texture_mrp(p_light, area_light_clamp_uv(centre, half_size), half_size, 0.5 * rho);
+	r_specular += radiance * p_light.specular_amount * integral * F_Schlick(p_f0, p_f90, LoH) * tex_s;
 }
 
 #endif // AREA_LIGHT_MRP_INC_GLSL

@@ -163,6 +163,7 @@ void area_shape_basis(vec3 p_n, out vec3 r_t1, out vec3 r_t2) {
 // attenuation 2: W = 1 inside the rectangle code). False when the point is on the axis line.
 bool area_tube_facing_rectangle(AreaLightData p_light, vec3 p_to_vertex, vec3 p_radiance, out AreaLightData r_rect) {
 	r_rect = p_light;
+	r_rect.texture_rect = vec4(0.0); // area_texture applies to rectangles only: the ribbon is untextured.
 	float hx2 = dot(p_light.half_axis_x, p_light.half_axis_x);
 	if (!(hx2 > 0.0)) {
 		return false; // A zero-length tube is a sphere: the caps cover it.

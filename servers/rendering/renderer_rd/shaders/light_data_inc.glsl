@@ -13,7 +13,7 @@
 /* a separate buffer, binding 5 of the scene shader): a rectangle needs   */
 /* two axes and a normal, which would bloat every omni/spot entry if the  */
 /* two shared one struct. Mirror: RendererRD::LightStorage::              */
-/* AreaLightData; 80 bytes, same field names.                             */
+/* AreaLightData; 96 bytes, same field names.                             */
 
 #ifndef LIGHT_DATA_INC_GLSL
 #define LIGHT_DATA_INC_GLSL
@@ -47,7 +47,7 @@ struct LightData { // Byte offsets (std430).
 #define AREA_SHAPE_SPHERE 2u
 #define AREA_SHAPE_TUBE 3u
 
-struct AreaLightData { // Byte offsets (std430), 80 bytes.
+struct AreaLightData { // Byte offsets (std430), 96 bytes.
 	vec3 position; // 0: view space centre of the rectangle, metres.
 	float inv_radius; // 12: 1 / area_range (1/m); range = max distance from any point of the rectangle.
 	vec3 half_axis_x; // 16: view space, local +X scaled by area_size.x / 2 (metres); disk: semi-axis; tube: half the segment; sphere: local +X * radius.
@@ -58,6 +58,7 @@ struct AreaLightData { // Byte offsets (std430), 80 bytes.
 	uint shading_method; // 60: bits 0-7 AREA_SHADING_*, bits 8-23 stochastic samples, bits 24-31 AREA_SHAPE_* (area_light_get_method()).
 	vec3 color; // 64: emitted radiance L_e = linear colour * energy * pi / A_n (A_n = the shape's emitting area when energy is normalised, else 1); 0 for a zero-size light.
 	uint cull_mask; // 76: "light_cull_mask" render layers.
+	vec4 texture_rect; // 80: area_texture: uv rect (x, y, w, h) of its level 0 in the area light atlas (area_light_atlas.h); w = 0: untextured.
 };
 
 // One directional light (std140 array element of the DirectionalLights block), 48 bytes.

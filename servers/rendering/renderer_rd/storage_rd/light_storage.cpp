@@ -9,6 +9,7 @@
 #include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/area_lights/area_method_selector.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
+#include "servers/rendering/storage/material_storage.h"
 #include "servers/rendering/rendering_device.h"
 
 #include <algorithm>
@@ -62,6 +63,8 @@ void LightStorage::finalize_gpu() {
 			rd->free(directional_light_buffer);
 		}
 	}
+	area_atlas.finalize();
+	area_textured = false;
 	directional_light_buffer = RID();
 	directional_block = {};
 	omni_light_buffer = RID();
@@ -296,6 +299,33 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	auto_geometry = nullptr; // Consumed: valid for this update only.
 	auto_mesh_storage = nullptr;
 	auto_material_storage = nullptr;
+	// area_texture: slots for the textures of the kept lights (built on first use), then their rects. A
+	// scene without textured lights never touches the atlas.
+	area_textured = false;
+	bool any_texture = false;
+	for (const SortedArea &s : areas) {
+		const Light *light = light_owner.get_or_null(p_lights[s.index].light);
+		if (light && light->area_texture.is_valid()) {
+			if (!any_texture) {
+				area_atlas.begin_update();
+				any_texture = true;
+			}
+			const Image *image = texture_source && texture_source->owns_texture(light->area_texture) ? texture_source->texture_get_image(light->area_texture) : nullptr;
+			area_atlas.request(light->area_texture, image);
+		}
+	}
+	if (any_texture || area_atlas.get_slot_count() > 0) {
+		if (!any_texture) {
+			area_atlas.begin_update(); // Ages the slots of lights that lost their texture or left the view.
+		}
+		area_atlas.end_update();
+	}
+	for (SortedArea &s : areas) {
+		const Light *light = light_owner.get_or_null(p_lights[s.index].light);
+		if (light && light->area_texture.is_valid() && area_atlas.get_rect(light->area_texture, s.data.texture_rect)) {
+			area_textured = true;
+		}
+	}
 	for (const SortedArea &s : areas) {
 		area_data.push_back(s.data);
 		area_source_indices.push_back(s.index);

@@ -23,6 +23,7 @@
 #pragma once
 
 #include "core/math/vector2.h"
+#include "servers/rendering/renderer_rd/storage_rd/area_light_atlas.h"
 #include "servers/rendering/renderer_scene_render.h"
 #include "servers/rendering/storage/light_storage_common.h"
 
@@ -62,7 +63,7 @@ public:
 	static_assert(sizeof(LightData) % 16 == 0, "LightData must stay a multiple of 16 bytes (std430 array stride).");
 
 	// One area light as the scene shader reads it (std430). Mirror of struct AreaLightData in
-	// shaders/light_data_inc.glsl: same names, same order, 80 bytes. Units: see the GLSL side.
+	// shaders/light_data_inc.glsl: same names, same order, 96 bytes. Units: see the GLSL side.
 	struct AreaLightData {
 		float position[3]; // View space centre, metres.
 		float inv_radius; // 1 / area_range.
@@ -74,12 +75,13 @@ public:
 		uint32_t shading_method; // Bits 0-7: RS::LightAreaShadingMethod; bits 8-23: stochastic samples; bits 24-31: RS::LightAreaShape.
 		float color[3]; // L_e = srgb_to_linear(color) * energy * pi / A_n, negated for negative lights; 0 when the emitting area is 0.
 		uint32_t cull_mask; // light_cull_mask.
+		float texture_rect[4]; // area_texture: uv rect (x, y, w, h) of its level 0 in the area light atlas; w = 0: untextured.
 	};
-	static_assert(sizeof(AreaLightData) == 80, "AreaLightData must match shaders/light_data_inc.glsl (80 bytes).");
+	static_assert(sizeof(AreaLightData) == 96, "AreaLightData must match shaders/light_data_inc.glsl (96 bytes).");
 	static_assert(sizeof(AreaLightData) % 16 == 0, "AreaLightData must stay a multiple of 16 bytes (std430 array stride).");
 
 	// AreaLightData::shading_method packs the method (low 8 bits), the stochastic sample count (bits 8-23)
-	// and the shape (bits 24-31), so the 80-byte layout stays as it is. Must match area_light_get_method(),
+	// and the shape (bits 24-31), so the 96-byte layout stays as it is. Must match area_light_get_method(),
 	// _stochastic_samples() and _shape() in shaders/area_light_inc.glsl.
 	static constexpr uint32_t AREA_METHOD_MASK = 0xFFu;
 	static constexpr uint32_t AREA_METHOD_SAMPLES_SHIFT = 8;
@@ -145,6 +147,11 @@ private:
 	uint32_t directional_dropped = 0; // Directional lights beyond MAX_DIRECTIONAL_LIGHTS in the last update.
 	std::vector<uint32_t> directional_source_indices; // GPU directional light i came from p_lights[i'].
 	std::vector<uint32_t> area_source_indices; // GPU area light i came from p_lights[area_source_indices[i]].
+	// area_texture: the atlas (nothing allocated until a visible area light has a texture) and where the
+	// texels come from (the renderer's material storage, set once by the renderer).
+	AreaLightAtlas area_atlas;
+	const RendererMaterialStorage *texture_source = nullptr;
+	bool area_textured = false; // Some area light of the last update is textured.
 	// AUTO shading (AreaMethodSelector): receivers of the next update_light_buffers() only (then cleared).
 	const std::vector<RenderSceneData::GeometryInstance> *auto_geometry = nullptr;
 	const RendererMeshStorage *auto_mesh_storage = nullptr;
@@ -198,6 +205,12 @@ public:
 	// Bit s is set when an area light of the last update_light_buffers() has RS::LightAreaShape s (the
 	// renderer compiles the shape code only when some bit other than RECTANGLE's is set). 0 without area lights.
 	uint32_t get_area_shape_mask() const { return area_shape_mask; }
+	// area_texture: the material storage whose textures lights refer to (the renderer sets it once).
+	void set_area_texture_source(const RendererMaterialStorage *p_material_storage) { texture_source = p_material_storage; }
+	// True when some area light of the last update_light_buffers() has its texture in the atlas (the renderer
+	// then compiles the texture code and binds the atlas); false for a scene without textured lights.
+	bool has_textured_area_lights() const { return area_textured; }
+	const AreaLightAtlas &get_area_light_atlas() const { return area_atlas; }
 	uint32_t get_max_lights() const { return max_lights; }
 	// Visible lights (all types) of the last update_light_buffers() beyond the capacity, so not drawn.
 	uint32_t get_dropped_light_count() const { return dropped_light_count; }

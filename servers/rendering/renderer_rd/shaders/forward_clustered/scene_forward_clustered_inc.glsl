@@ -81,7 +81,8 @@ layout(set = 0, binding = 3, std430) restrict readonly buffer ClusterBuffer {
 }
 cluster_buffer;
 
-// Set 0 binding 4 is free: material textures are sampled with their material's sampler (set 1, binding 5).
+// Set 0 binding 4 (and sampler binding 10): the area light atlas, declared in area_light_texture_inc.glsl and
+// only in versions with AREA_LIGHT_TEXTURE. Material textures use their material's sampler (set 1, binding 5).
 
 #ifdef USE_AREA_LIGHTS
 // Thesis Listing A.2: area lights in their own buffer.
