@@ -37,6 +37,16 @@ inline void fill_shadow_casters(RenderSceneData &r_d) {
 	}
 }
 
+// One frame of p_data from p_renderer (Forward+ or the Embree reference) into a render target of the
+// view's size, read back as RGBA floats (top row first); the target is freed again.
+inline std::vector<float> render_frame(RendererSceneRender &p_renderer, const RenderSceneData &p_data) {
+	RID rt = p_renderer.render_target_create(p_data.viewport_width, p_data.viewport_height);
+	p_renderer.render_scene(p_data, rt);
+	std::vector<float> img = p_renderer.render_target_get_data(rt);
+	p_renderer.render_target_free(rt);
+	return img;
+}
+
 // The Forward+ renderer for hand-built scenes: the caster lists are filled (fill_shadow_casters())
 // when the scene has none.
 struct SceneRenderer : public RenderForwardClustered {

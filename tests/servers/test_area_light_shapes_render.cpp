@@ -56,20 +56,8 @@ struct ShapesFixture : RenderTest::RenderFixture {
 		light_storage.light_area_set_stochastic_samples(l, p_samples);
 		return l;
 	}
-	std::vector<float> render_gpu(const RenderSceneData &p_data) {
-		RID rt = renderer.render_target_create(p_data.viewport_width, p_data.viewport_height);
-		renderer.render_scene(p_data, rt);
-		std::vector<float> img = renderer.render_target_get_data(rt);
-		renderer.render_target_free(rt);
-		return img;
-	}
-	std::vector<float> render_reference(const RenderSceneData &p_data) {
-		RID rt = reference.render_target_create(p_data.viewport_width, p_data.viewport_height);
-		reference.render_scene(p_data, rt);
-		std::vector<float> img = reference.render_target_get_data(rt);
-		reference.render_target_free(rt);
-		return img;
-	}
+	std::vector<float> render_gpu(const RenderSceneData &p_data) { return RenderTest::render_frame(renderer, p_data); }
+	std::vector<float> render_reference(const RenderSceneData &p_data) { return RenderTest::render_frame(reference, p_data); }
 	RID lambert() {
 		RS::MaterialParams mp;
 		mp.albedo = Color(0.8f, 0.7f, 0.6f, 1.0f);

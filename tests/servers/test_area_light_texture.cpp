@@ -137,20 +137,8 @@ struct TextureFixture : RenderTest::RenderFixture {
 		light_storage.light_area_set_stochastic_samples(l, p_samples);
 		return l;
 	}
-	std::vector<float> render_gpu(const RenderSceneData &p_data) {
-		RID rt = renderer.render_target_create(p_data.viewport_width, p_data.viewport_height);
-		renderer.render_scene(p_data, rt);
-		std::vector<float> img = renderer.render_target_get_data(rt);
-		renderer.render_target_free(rt);
-		return img;
-	}
-	std::vector<float> render_reference(const RenderSceneData &p_data) {
-		RID rt = reference.render_target_create(p_data.viewport_width, p_data.viewport_height);
-		reference.render_scene(p_data, rt);
-		std::vector<float> img = reference.render_target_get_data(rt);
-		reference.render_target_free(rt);
-		return img;
-	}
+	std::vector<float> render_gpu(const RenderSceneData &p_data) { return RenderTest::render_frame(renderer, p_data); }
+	std::vector<float> render_reference(const RenderSceneData &p_data) { return RenderTest::render_frame(reference, p_data); }
 };
 
 // A 1.2 x 0.8 m light 1 m above a ground plane (slightly rotated), an oblique camera that sees the
