@@ -192,7 +192,7 @@ TEST_CASE("[LightStorage] the GLSL area shape and method values equal RS's, and 
 	CHECK(RendererRD::LightStorage::AREA_METHOD_SHAPE_SHIFT == 24u);
 	CHECK(int(RS::LIGHT_AREA_SHAPE_MAX) <= 256);
 	// The shader reads the shape as shading_method >> 24u (area_light_get_shape).
-	const char *dispatch = ShaderRD::get_embedded_source("area_light_inc.glsl");
+	const char *dispatch = ShaderRD::get_embedded_source("area_light_common_inc.glsl");
 	REQUIRE(dispatch != nullptr);
 	CHECK(String(dispatch).find("p_light.shading_method >> 24u") != String::npos);
 }

@@ -16,9 +16,9 @@
 /* use the same Lambert integral (there is no closed form for Burley's    */
 /* view/light-dependent retro-reflection over a polygon; the difference   */
 /* is a few % at grazing angles and roughness 1, as Godot's own Burley vs */
-/* Lambert).                                                               */
+/* Lambert).                                                              */
 /*                                                                        */
-/* Horizon: the polygon is CLIPPED (Sutherland-Hodgman against one plane */
+/* Horizon: the polygon is CLIPPED (Sutherland-Hodgman against one plane  */
 /* at a time), exact, unlike the sphere form-factor approximation of      */
 /* Heitz 2017. ONE clip in the shading frame to the receiver's plane      */
 /* z >= 0 serves both lobes (ltc_rect_form_factors): it is the diffuse    */
@@ -28,7 +28,7 @@
 /* too bright on a floor seen at 10 degrees). The clipped polygon mapped  */
 /* by M^-1 is clipped again to the cosine space's z >= 0 only where a     */
 /* mapped vertex is below it. A rectangle wholly above the receiver's     */
-/* plane is not clipped at all (the fast path: 4 corners, 2 integrals;   */
+/* plane is not clipped at all (the fast path: 4 corners, 2 integrals;    */
 /* a real branch on GPUs. llvmpipe runs every side of an if under a lane  */
 /* mask and a loop only while a lane is in it, so there the savings come  */
 /* from running each integral once, looped to the vertex count).          */
@@ -68,6 +68,8 @@
 
 #ifndef AREA_LIGHT_LTC_INC_GLSL
 #define AREA_LIGHT_LTC_INC_GLSL
+
+#include "area_light_common_inc.glsl"
 
 // area_texture fetches (vec3(1.0) unless AREA_LIGHT_TEXTURE): included here so every includer has them.
 #include "area_light_texture_inc.glsl"
@@ -237,30 +239,6 @@ void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, o
 	r_specular = m < 3 ? 0.0 : ltc_polygon_integral(m, d0, d1, d2, d3, d4, d5);
 }
 
-// Distance attenuation of upstream Godot 4.7's area light (its class reference and shader):
-// d = distance from the shading point to the closest point of the rectangle, r = area_range,
-// a = area_attenuation (a distance exponent, as omni_attenuation):
-//   W(d) = max(1 - (d/r)^4, 0)^2 * max(d, 1e-4)^(2 - a).
-// The integral over the rectangle already falls off as the inverse square, so a = 2 leaves it
-// physical and only the range window applies; W is exactly 0 for d >= r.
-float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
-	float ax2 = dot(p_light.half_axis_x, p_light.half_axis_x);
-	float ay2 = dot(p_light.half_axis_y, p_light.half_axis_y);
-	float u = ax2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_x) / ax2, -1.0, 1.0) : 0.0;
-	float v = ay2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_y) / ay2, -1.0, 1.0) : 0.0;
-	float d = length(p_to_vertex - p_light.half_axis_x * u - p_light.half_axis_y * v);
-	float nd = d * p_light.inv_radius;
-	if (nd >= 1.0) {
-		return 0.0;
-	}
-	nd *= nd;
-	nd *= nd;
-	float window = 1.0 - nd;
-	window *= window;
-	// pow(x, 0) = 1: a = 2 costs nothing but the window.
-	return window * pow(max(d, 1e-4), 2.0 - p_light.attenuation);
-}
-
 #ifdef AREA_LTC_HAS_LUT
 
 // LUT lookup, exact formula of the ltc_lut_data.inc header: u = (roughness, sqrt(1 - NoV)) mapped to
@@ -340,20 +318,12 @@ void ltc_fetch_polynomial(float p_roughness, float p_NoV, out vec4 r_t0, out vec
 // r_specular reflected specular radiance. p_polynomial: take the LTC matrix from the polynomials
 // instead of the LUT (only where both are compiled; otherwise the compiled one is used).
 void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, bool p_polynomial, inout vec3 r_diffuse, inout vec3 r_specular) {
-	vec3 to_vertex = p_vertex - p_light.position;
-	// One-sided: only the half-space in front of the emitting side is lit (exactly 0 behind).
-	if (dot(to_vertex, p_light.normal) <= 0.0) {
+	vec3 to_vertex;
+	float plane_dist;
+	vec3 radiance;
+	if (!area_light_rect_begin(p_light, p_vertex, to_vertex, plane_dist, radiance)) {
 		return;
 	}
-	// Zero size (colour 0, set by LightStorage) or black: exactly 0, no polygon maths on degenerate input.
-	if (p_light.color == vec3(0.0) || dot(p_light.half_axis_x, p_light.half_axis_x) == 0.0 || dot(p_light.half_axis_y, p_light.half_axis_y) == 0.0) {
-		return;
-	}
-	float window = area_light_range_window(p_light, to_vertex);
-	if (window <= 0.0) {
-		return;
-	}
-	vec3 radiance = p_light.color * window;
 
 	// Frame of the LUT fit (ltc_lut_data.inc): z = N, x = normalize(V - N NoV), y = z cross x.
 	float NoV = dot(N, V);

@@ -24,12 +24,15 @@
 /* metres (stable while the camera moves). Plain (unstratified) random    */
 /* numbers from a PCG hash, so the RMSE slope is exactly -1/2.            */
 /*                                                                        */
-/* Needs area_light_inc.glsl's helpers, area_light_range_window          */
-/* (area_light_ltc_inc.glsl), brdf_inc.glsl, light_compute, and in the    */
-/* fragment stage gl_FragCoord and scene_data.world_from_view.            */
+/* Includes area_light_common_inc.glsl (the contract's gate               */
+/* area_light_rect_begin and the rectangle helpers). Needs, declared      */
+/* before: brdf_inc.glsl, light_compute, and in the fragment stage        */
+/* gl_FragCoord and scene_data.world_from_view.                           */
 
 #ifndef AREA_LIGHT_MC_INC_GLSL
 #define AREA_LIGHT_MC_INC_GLSL
+
+#include "area_light_common_inc.glsl"
 
 // World-space cell (metres) that shares one diffuse seed (thesis 5.2: about a pixel's footprint).
 #define AREA_MC_DIFFUSE_SEED_STEP 0.005
@@ -97,23 +100,17 @@ vec3 area_mc_specular_lobe(vec3 N, vec3 V, vec3 p_l, float p_roughness, vec3 p_f
 }
 
 void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, uint p_diffuse_mode, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
-	vec3 to_vertex = p_vertex - p_light.position;
-	vec3 nl = p_light.normal;
-	float plane_dist = dot(to_vertex, nl);
-	// One-sided: only the half-space in front of the emitting side is lit (exactly 0 behind).
-	if (!(plane_dist > 0.0) || p_light.color == vec3(0.0)) {
+	vec3 to_vertex;
+	float plane_dist;
+	vec3 radiance;
+	if (!area_light_rect_begin(p_light, p_vertex, to_vertex, plane_dist, radiance)) {
 		return;
 	}
+	vec3 nl = p_light.normal;
 	vec3 ax;
 	vec3 ay;
 	vec2 half_size;
-	if (!area_light_get_frame(p_light, ax, ay, half_size)) {
-		return; // Zero size: exactly 0.
-	}
-	float window = area_light_range_window(p_light, to_vertex);
-	if (window <= 0.0) {
-		return;
-	}
+	area_light_get_frame(p_light, ax, ay, half_size);
 	AreaSphericalRect rect;
 	vec3 corner = p_light.position - ax * half_size.x - ay * half_size.y;
 	if (!area_spherical_rect_init(p_vertex, corner, ax, ay, half_size * 2.0, rect)) {
@@ -122,7 +119,6 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 	float omega = rect.solid_angle;
 	uint n = area_light_get_stochastic_samples(p_light);
 	float inv_n = 1.0 / float(n);
-	vec3 radiance = p_light.color * window;
 
 	// Seeds: a per-light stream (camera-independent light data), then thesis 5.2's stable seeds.
 	uint light_seed = area_mc_hash(floatBitsToUint(p_light.color.r) ^ area_mc_hash(floatBitsToUint(p_light.color.g) ^ area_mc_hash(floatBitsToUint(p_light.color.b) ^ area_mc_hash(floatBitsToUint(p_light.inv_radius)))));

@@ -41,11 +41,14 @@
 /* farthest along r's in-plane direction (the limit of the hit point);    */
 /* no division can reach 0 (every t has its denominator bounded).         */
 /*                                                                        */
-/* Needs area_light_inc.glsl's helpers, area_light_range_window          */
-/* (area_light_ltc_inc.glsl) and brdf_inc.glsl.                           */
+/* Includes area_light_common_inc.glsl (the contract's gate               */
+/* area_light_rect_begin and the rectangle helpers). Needs, declared      */
+/* before: brdf_inc.glsl.                                                 */
 
 #ifndef AREA_LIGHT_MRP_INC_GLSL
 #define AREA_LIGHT_MRP_INC_GLSL
+
+#include "area_light_common_inc.glsl"
 
 // Thesis eq. 5.5: the specular cone's apex (full opening) angle in radians from perceptual roughness.
 float area_mrp_cone_angle(float p_roughness) {
@@ -79,28 +82,21 @@ vec2 area_mrp_plane_hit(AreaLightData p_light, vec3 p_ax, vec3 p_ay, vec3 p_vert
 }
 
 void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, uint p_diffuse_mode, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
-	vec3 to_vertex = p_vertex - p_light.position;
-	vec3 nl = p_light.normal;
-	float plane_dist = dot(to_vertex, nl);
-	// One-sided: only the half-space in front of the emitting side is lit (exactly 0 behind).
-	if (!(plane_dist > 0.0) || p_light.color == vec3(0.0)) {
+	vec3 to_vertex;
+	float plane_dist;
+	vec3 radiance;
+	if (!area_light_rect_begin(p_light, p_vertex, to_vertex, plane_dist, radiance)) {
 		return;
 	}
+	vec3 nl = p_light.normal;
 	vec3 ax;
 	vec3 ay;
 	vec2 half_size;
-	if (!area_light_get_frame(p_light, ax, ay, half_size)) {
-		return; // Zero size: exactly 0.
-	}
-	float window = area_light_range_window(p_light, to_vertex);
-	if (window <= 0.0) {
-		return;
-	}
+	area_light_get_frame(p_light, ax, ay, half_size);
 	float omega = area_light_solid_angle(p_light, p_vertex, ax, ay, half_size);
 	if (!(omega > 0.0)) {
 		return;
 	}
-	vec3 radiance = p_light.color * window;
 	// Far enough that clamping a point this far away gives the rectangle's limit point.
 	float far = 1e3 * (half_size.x + half_size.y + plane_dist + length(to_vertex));
 
