@@ -5,13 +5,15 @@
 /* as a stress test. A long thin area light just above a glossy metal    */
 /* plane projects, for the points under it, to nearly antipodal corners  */
 /* (more so after the LTC's M^-1, which stretches the tangent plane by    */
-/* about 1 / alpha). The same scene is rendered by the Forward+ renderer  */
-/* with the fix (default) and without it (AREA_LTC_NO_PRECISION_FIX:     */
-/* Heitz et al.'s acos edge integral, no split), and by the CPU reference */
-/* renderer (modules/reference, adaptive integration of the exact GGX).   */
-/* The max (and mean) pixel error against the reference must drop at     */
-/* least 10x with the fix; against the same LTC integral evaluated in     */
-/* double precision the fixed image must agree to the RGBA16F rounding.   */
+/* about 1 / alpha). The scene is rendered by the Forward+ renderer (the */
+/* production shader, with the fix) and by the CPU reference renderer    */
+/* (modules/reference, adaptive integration of the exact GGX); the        */
+/* shader's LTC integral is also evaluated on the CPU in double precision */
+/* (well conditioned) and in float32 with Heitz et al.'s original acos   */
+/* edge integral (no split: the shader before the fix). The GPU image     */
+/* must agree with the double evaluation to the RGBA16F rounding, and its */
+/* max (and mean) error against the reference must be at least 10x below */
+/* the unfixed float32 integral's.                                        */
 
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
 
@@ -25,6 +27,7 @@
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_scene_helpers.h"
 
 #include <doctest/doctest.h>
 
@@ -51,11 +54,7 @@ struct StressScene {
 // Adds the scene's plane, material and light to any set of storages (RD or dummy) and fills r_data.
 template <class TLight, class TMesh, class TMaterial>
 static void build_scene(const StressScene &p_s, TLight &r_lights, TMesh &r_meshes, TMaterial &r_materials, std::vector<RID> &r_owned, RenderSceneData &r_data) {
-	RS::SurfaceData ground;
-	const float h = 40.0f;
-	ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
-	ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-	ground.indices = { 0, 1, 2, 0, 2, 3 };
+	const RS::SurfaceData ground = RenderTest::make_plane(40.0f); // Normal +Y.
 	RID mesh = r_meshes.mesh_create();
 	r_meshes.mesh_add_surface(mesh, ground);
 	RS::MaterialParams params;
@@ -99,13 +98,12 @@ static void build_scene(const StressScene &p_s, TLight &r_lights, TMesh &r_meshe
 	r_data.lights.push_back(li);
 }
 
-// Forward+ on the RD device, with or without the precision fix. Empty on failure.
-static std::vector<float> render_gpu(const StressScene &p_s, bool p_fix) {
+// Forward+ on the RD device (the production shader, with the precision fix). Empty on failure.
+static std::vector<float> render_gpu(const StressScene &p_s) {
 	RendererRD::LightStorage light_storage;
 	RendererRD::MeshStorage mesh_storage;
 	RendererRD::MaterialStorage material_storage;
 	RenderForwardClustered renderer{ &light_storage, &mesh_storage, &material_storage };
-	renderer.set_area_ltc_precision_fix(p_fix);
 	std::vector<float> image;
 	if (material_storage.initialize_gpu() && light_storage.initialize_gpu(8) && renderer.initialize(8)) {
 		std::vector<RID> owned;
@@ -161,98 +159,115 @@ static void ground_point(const StressScene &p_s, int p_x, int p_y, double r_p[3]
 	r_p[2] = dir[2] * k;
 }
 
-// Edge integral theta * normalize(a x b).z of unit vectors, well conditioned in double (atan2).
-static double exact_edge(const double *p_a, const double *p_b) {
-	const double c[3] = { p_a[1] * p_b[2] - p_a[2] * p_b[1], p_a[2] * p_b[0] - p_a[0] * p_b[2], p_a[0] * p_b[1] - p_a[1] * p_b[0] };
-	const double s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-	if (s == 0.0) {
-		return 0.0;
+// Edge integral theta * normalize(a x b).z of unit vectors, well conditioned (atan2).
+template <class T>
+static T edge_atan2(const T *p_a, const T *p_b) {
+	const T c[3] = { p_a[1] * p_b[2] - p_a[2] * p_b[1], p_a[2] * p_b[0] - p_a[0] * p_b[2], p_a[0] * p_b[1] - p_a[1] * p_b[0] };
+	const T s = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+	if (s == T(0)) {
+		return T(0);
 	}
 	return std::atan2(s, p_a[0] * p_b[0] + p_a[1] * p_b[1] + p_a[2] * p_b[2]) * c[2] / s;
 }
 
-// Cosine form factor of the quad p_q (clipped to z >= 0), in double, as ltc_polygon_form_factor.
-static double exact_form_factor(const double p_q[4][3]) {
-	double c[5][3];
+// Heitz et al. 2016's original edge integral (the thesis before section 5.4.4, the shader before the
+// fix): theta from acos, the direction from the raw cross product, no split. Ill-conditioned for
+// near-antipodal ends.
+template <class T>
+static T edge_acos(const T *p_a, const T *p_b) {
+	const T cos_theta = std::min(std::max(p_a[0] * p_b[0] + p_a[1] * p_b[1] + p_a[2] * p_b[2], T(-1)), T(1));
+	const T theta = std::acos(cos_theta);
+	const T cz = p_a[0] * p_b[1] - p_a[1] * p_b[0];
+	return cz * (theta > T(0.001) ? theta / std::sin(theta) : T(1));
+}
+
+// Cosine form factor of the quad p_q (clipped to z >= 0) in precision T, as ltc_polygon_form_factor,
+// with the edge integral p_edge.
+template <class T>
+static T form_factor(const T p_q[4][3], T (*p_edge)(const T *, const T *)) {
+	T c[5][3];
 	int n = 0;
 	for (int i = 0; i < 4; i++) {
-		const double *a = p_q[i];
-		const double *b = p_q[(i + 1) & 3];
-		if (a[2] > 0.0) {
+		const T *a = p_q[i];
+		const T *b = p_q[(i + 1) & 3];
+		if (a[2] > T(0)) {
 			c[n][0] = a[0], c[n][1] = a[1], c[n][2] = a[2];
 			n++;
 		}
-		if ((a[2] > 0.0) != (b[2] > 0.0)) {
-			const double t = a[2] / (a[2] - b[2]);
-			c[n][0] = a[0] + (b[0] - a[0]) * t, c[n][1] = a[1] + (b[1] - a[1]) * t, c[n][2] = 0.0;
+		if ((a[2] > T(0)) != (b[2] > T(0))) {
+			const T t = a[2] / (a[2] - b[2]);
+			c[n][0] = a[0] + (b[0] - a[0]) * t, c[n][1] = a[1] + (b[1] - a[1]) * t, c[n][2] = T(0);
 			n++;
 		}
 	}
 	if (n < 3) {
-		return 0.0;
+		return T(0);
 	}
 	for (int i = 0; i < n; i++) {
-		const double l = std::sqrt(c[i][0] * c[i][0] + c[i][1] * c[i][1] + c[i][2] * c[i][2]);
+		const T l = std::sqrt(c[i][0] * c[i][0] + c[i][1] * c[i][1] + c[i][2] * c[i][2]);
 		c[i][0] /= l, c[i][1] /= l, c[i][2] /= l;
 	}
-	double sum = 0.0;
+	T sum = T(0);
 	for (int i = 0; i < n; i++) {
-		sum += exact_edge(c[i], c[(i + 1) % n]);
+		sum += p_edge(c[i], c[(i + 1) % n]);
 	}
-	return std::fabs(sum) * 0.5 / Math::PI;
+	return std::fabs(sum) * T(0.5) / T(Math::PI);
 }
 
-// The shader's LTC specular (same LUT, bilinear as the sampler, same matrix and Fresnel) evaluated in
-// double with a well-conditioned edge integral: what the GPU would output without float rounding.
-// Red channel of the stress scene (metal, f0 = f90 = 1, so F = fn + 0 * fg).
-static std::vector<double> render_exact_ltc(const StressScene &p_s) {
+// The shader's LTC specular (same LUT, bilinear as the sampler, same matrix and Fresnel) evaluated on
+// the CPU in precision T with the edge integral p_edge; the stress scene's metal has f0 = f90 = 1, so
+// F = fn + 0 * fg and the image is grey. Double with edge_atan2: what the GPU would output without float
+// rounding. Float with edge_acos: the unfixed shader's arithmetic.
+template <class T>
+static std::vector<double> render_cpu_ltc(const StressScene &p_s, T (*p_edge)(const T *, const T *)) {
 	const float *lut = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX);
 	const int n_lut = LTCTableIO::get_builtin_size();
-	const double le = p_s.energy * Math::PI / ((double)p_s.light_size.x * p_s.light_size.y);
-	const double hx = 0.5 * p_s.light_size.x, hz = 0.5 * p_s.light_size.y; // Local Y maps to world -Z.
+	const T le = T(p_s.energy * Math::PI / ((double)p_s.light_size.x * p_s.light_size.y));
+	const T hx = T(0.5) * T(p_s.light_size.x), hz = T(0.5) * T(p_s.light_size.y); // Local Y maps to world -Z.
 	std::vector<double> image((size_t)p_s.size * p_s.size);
 	for (int py = 0; py < p_s.size; py++) {
 		for (int px = 0; px < p_s.size; px++) {
-			double p[3];
-			ground_point(p_s, px, py, p);
-			double v[3] = { -p[0], p_s.camera_height - p[1], -p[2] };
-			const double vl = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+			double pd[3];
+			ground_point(p_s, px, py, pd);
+			const T p[3] = { T(pd[0]), T(pd[1]), T(pd[2]) };
+			T v[3] = { -p[0], T(p_s.camera_height) - p[1], -p[2] };
+			const T vl = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 			v[0] /= vl, v[1] /= vl, v[2] /= vl;
-			const double nov = v[1]; // N = +Y.
+			const T nov = v[1]; // N = +Y.
 			// Frame: z = N, x = normalize(V - N NoV), y = z x x.
-			double tx[3] = { v[0], 0.0, v[2] };
-			double tl = std::sqrt(tx[0] * tx[0] + tx[2] * tx[2]);
-			if (tl < 1e-12) {
-				tx[0] = 1.0, tx[2] = 0.0, tl = 1.0;
+			T tx[3] = { v[0], T(0), v[2] };
+			T tl = std::sqrt(tx[0] * tx[0] + tx[2] * tx[2]);
+			if (tl < T(1e-12)) {
+				tx[0] = T(1), tx[2] = T(0), tl = T(1);
 			}
 			tx[0] /= tl, tx[2] /= tl;
-			const double ty[3] = { tx[2], 0.0, -tx[0] }; // (0, 1, 0) x tx.
+			const T ty[3] = { tx[2], T(0), -tx[0] }; // (0, 1, 0) x tx.
 			// LUT, bilinear between cell centres (the sampler's texel-centre mapping).
 			const double fr = std::min(std::max((double)p_s.roughness, 0.0), 1.0) * (n_lut - 1);
-			const double ft = std::sqrt(1.0 - std::min(std::max(nov, 0.0), 1.0)) * (n_lut - 1);
+			const double ft = std::sqrt(1.0 - std::min(std::max((double)nov, 0.0), 1.0)) * (n_lut - 1);
 			const int r0 = std::min((int)fr, n_lut - 2), t0 = std::min((int)ft, n_lut - 2);
 			const double wr = fr - r0, wt = ft - t0;
-			double m[7];
+			T m[7];
 			for (int k = 0; k < 7; k++) {
 				auto cell = [&](int r, int t) { return (double)lut[((size_t)t * n_lut + r) * 8 + k]; };
-				m[k] = (cell(r0, t0) * (1.0 - wr) + cell(r0 + 1, t0) * wr) * (1.0 - wt) + (cell(r0, t0 + 1) * (1.0 - wr) + cell(r0 + 1, t0 + 1) * wr) * wt;
+				m[k] = T((cell(r0, t0) * (1.0 - wr) + cell(r0 + 1, t0) * wr) * (1.0 - wt) + (cell(r0, t0 + 1) * (1.0 - wr) + cell(r0 + 1, t0 + 1) * wr) * wt);
 			}
-			const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4];
-			const double s = 1.0 / (a * e - b * d);
-			double q[4][3];
-			const double sx[4] = { -1, 1, 1, -1 }, sy[4] = { -1, -1, 1, 1 };
+			const T a = m[0], b = m[1], c = m[2], d = m[3], e = m[4];
+			const T s = T(1) / (a * e - b * d);
+			T q[4][3];
+			const T sx[4] = { -1, 1, 1, -1 }, sy[4] = { -1, -1, 1, 1 };
 			for (int i = 0; i < 4; i++) {
 				// World corner relative to the shading point: centre (0, h, 0) + sx hx X + sy hz (-Z).
-				const double w[3] = { sx[i] * hx - p[0], p_s.light_height - p[1], -sy[i] * hz - p[2] };
-				const double lx = w[0] * tx[0] + w[1] * tx[1] + w[2] * tx[2];
-				const double ly = w[0] * ty[0] + w[1] * ty[1] + w[2] * ty[2];
-				const double lz = w[1];
+				const T w[3] = { sx[i] * hx - p[0], T(p_s.light_height) - p[1], -sy[i] * hz - p[2] };
+				const T lx = w[0] * tx[0] + w[1] * tx[1] + w[2] * tx[2];
+				const T ly = w[0] * ty[0] + w[1] * ty[1] + w[2] * ty[2];
+				const T lz = w[1];
 				// M^-1 = s [[e, 0, -b], [0, (ae - bd) / c, 0], [-d, 0, a]].
 				q[i][0] = s * (e * lx - b * lz);
 				q[i][1] = ly / c;
 				q[i][2] = s * (-d * lx + a * lz);
 			}
-			image[(size_t)py * p_s.size + px] = le * exact_form_factor(q) * m[5];
+			image[(size_t)py * p_s.size + px] = double(le * form_factor<T>(q, p_edge) * m[5]);
 		}
 	}
 	return image;
@@ -294,14 +309,18 @@ TEST_CASE("[AreaLight3D][LTC] a long thin light close to a glossy plane: the 5.4
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
 	const StressScene scene;
-	const std::vector<float> fixed = render_gpu(scene, true);
-	const std::vector<float> broken = render_gpu(scene, false);
+	const std::vector<float> fixed = render_gpu(scene);
 	const std::vector<float> reference = render_reference(scene);
-	const std::vector<double> exact = render_exact_ltc(scene);
+	const std::vector<double> exact = render_cpu_ltc<double>(scene, edge_atan2<double>);
+	const std::vector<double> unfixed = render_cpu_ltc<float>(scene, edge_acos<float>);
 	const size_t n = size_t(scene.size) * scene.size * 4;
 	REQUIRE(fixed.size() == n);
-	REQUIRE(broken.size() == n);
 	REQUIRE(reference.size() == n);
+	// The unfixed integral as an RGBA image (grey, as the GPU image).
+	std::vector<float> broken(n, 0.0f);
+	for (size_t i = 0; i < unfixed.size(); i++) {
+		broken[i * 4] = broken[i * 4 + 1] = broken[i * 4 + 2] = (float)unfixed[i];
+	}
 
 	// 1. Against the reference renderer (the task's criterion). The reference integrates this light by
 	// sampling the 20 m rectangle uniformly, so it is itself noisy here (about +-30 % along the centre

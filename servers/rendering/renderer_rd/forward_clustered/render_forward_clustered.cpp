@@ -65,8 +65,7 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 	std::vector<String> variants = { "", "#define MODE_DEPTH\n", "#define USE_AREA_LIGHTS\n", "#define MODE_FORCE_ALL_LIGHTS\n",
 		"#define USE_AREA_LIGHTS\n#define MODE_FORCE_ALL_LIGHTS\n", "#define MODE_DEBUG_CLUSTER\n", "#define USE_AREA_LIGHTS\n#define MODE_DEBUG_CLUSTER\n" };
 	static_assert(SCENE_SHADER_MAX == 7, "One variant define per SceneShaderVariant.");
-	const String general_defines = area_ltc_precision_fix ? "" : "#define AREA_LTC_NO_PRECISION_FIX\n";
-	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants, general_defines), false,
+	ERR_FAIL_COND_V_MSG(!scene_shader.initialize("forward_clustered/scene_forward_clustered.glsl", variants), false,
 			"RenderForwardClustered: cannot load shaders/forward_clustered/scene_forward_clustered.glsl.");
 	// The area-light variant is compiled on first use (render_scene), never for scenes without area lights.
 	for (int v = 0; v < SCENE_SHADER_COLOR_AREA; v++) {

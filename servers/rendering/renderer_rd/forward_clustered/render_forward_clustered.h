@@ -185,7 +185,6 @@ private:
 
 	bool force_all_lights = false;
 	bool area_code_disabled = false; // Benchmark baseline (set_debug_disable_area_lights).
-	bool area_ltc_precision_fix = true; // Thesis 5.4.4 edge-integral fix; read by initialize().
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
 	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
@@ -224,9 +223,6 @@ public:
 	uint64_t get_last_frame_rendering_info(RS::RenderingInfo p_info) const override;
 	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
 	bool is_debug_force_all_lights() const { return force_all_lights; }
-	// Test/debug: off compiles the scene shader with AREA_LTC_NO_PRECISION_FIX (Heitz's original acos
-	// edge integral without the thesis 5.4.4 split, area_light_ltc_inc.glsl). Call before initialize().
-	void set_area_ltc_precision_fix(bool p_enable) { area_ltc_precision_fix = p_enable; }
 	// Benchmark baseline (bench --targets, P4): true skips every area-light step of a frame (area shadow
 	// begin/prepare/draw/adaptive passes, AUTO receivers) and builds only the omni and spot clusters, as a
 	// build without the area-light code would. For scenes WITHOUT area lights only: area lights are not drawn.

@@ -41,24 +41,24 @@
 /* the shading point, which lies on the spherical edge between a and b    */
 /* (thesis fig. 5.20) more than 30 degrees from a. The thesis integrates  */
 /* the two arcs (a, m) and (m, b); they share the circle, so one normal   */
-/* and the whole angle theta = atan(|a x b|, a.b) (accurate over the     */
+/* and the whole angle theta = atan(|a x b|, a.b) (accurate over the      */
 /* whole range in absolute terms; acos is not near +-1) give the same     */
 /* sum for one atan instead of two.                                       */
-/* AREA_LTC_NO_PRECISION_FIX (a define, for the stress test only) turns   */
-/* the fix off: Heitz et al.'s original edge integral                     */
-/* (a x b).z * theta / sin(theta) with theta = acos(a.b), no split, i.e.  */
-/* the thesis' broken version.                                            */
+/* Heitz et al.'s original edge integral (a x b).z * theta / sin(theta)   */
+/* with theta = acos(a.b), no split, explodes there: the stress test      */
+/* tests/servers/test_area_light_ltc_precision.cpp evaluates it in        */
+/* float32 beside this shader.                                            */
 /*                                                                        */
-/* Methods (defines set by the per-method shader versions):              */
-/*   AREA_METHOD_LTC_POLYNOMIAL: the matrix and Fresnel terms come from  */
-/*     degree-5 polynomials (thesis section 5.4.3, appendix C) on 2 x 2  */
-/*     patches of (roughness, theta_v) blended by smoothsteps, fitted by */
-/*     `godot-area ltc-fit --polynomial` into ltc_poly_coeffs_inc.glsl   */
-/*     (compiled-in constants, no binding). Without it no polynomial     */
-/*     code is compiled.                                                 */
+/* Methods (defines set by the per-method shader versions):               */
+/*   AREA_METHOD_LTC_POLYNOMIAL: the matrix and Fresnel terms come from   */
+/*     degree-5 polynomials (thesis section 5.4.3, appendix C) on 2 x 2   */
+/*     patches of (roughness, theta_v) blended by smoothsteps, fitted by  */
+/*     `godot-area ltc-fit --polynomial` into ltc_poly_coeffs_inc.glsl    */
+/*     (compiled-in constants, no binding). Without it no polynomial      */
+/*     code is compiled.                                                  */
 /*   The LUT fetch is compiled unless only AREA_METHOD_LTC_POLYNOMIAL is  */
 /*     defined (with both AREA_METHOD_LTC and AREA_METHOD_LTC_POLYNOMIAL, */
-/*     p_polynomial picks at run time).                                  */
+/*     p_polynomial picks at run time).                                   */
 /* Entry points: light_process_area_ltc(..., bool p_polynomial, ...) and  */
 /* light_process_area(...) (= the LUT path, for existing callers).        */
 /*                                                                        */
@@ -84,8 +84,6 @@
 // Cells per side of the LUT. Must match LTC_LUT_SIZE in servers/rendering/renderer_rd/ltc_lut_data.inc.
 #define LTC_LUT_SIZE 64.0
 
-#ifndef AREA_LTC_NO_PRECISION_FIX
-
 // Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit), with
 // p_a, p_b their unit directions (normalised once per vertex by the caller).
 float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
@@ -109,20 +107,6 @@ float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
 	}
 	return s < 1e-12 ? 0.0 : theta * c.z / s; // 0 for a zero-length edge (a == b).
 }
-
-#else // AREA_LTC_NO_PRECISION_FIX
-
-// Heitz et al. 2016's original edge integral (the thesis' version before section 5.4.4): theta from
-// acos, the direction from the raw cross product, no split. Ill-conditioned for near-antipodal ends.
-float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
-	vec3 a = normalize(p_v1);
-	vec3 b = normalize(p_v2);
-	float cos_theta = clamp(dot(a, b), -1.0, 1.0);
-	float theta = acos(cos_theta);
-	return cross(a, b).z * ((theta > 0.001) ? theta / sin(theta) : 1.0);
-}
-
-#endif // AREA_LTC_NO_PRECISION_FIX
 
 // Slot p_i of a clipped polygon of at most 6 vertices (c0..c5 are named, not an array: no indexed local
 // memory, which a software rasterizer handles lane by lane).
