@@ -22,6 +22,7 @@
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/render_scene_helpers.h"
 
 #include <doctest/doctest.h>
 
@@ -407,11 +408,7 @@ static std::vector<float> render_plane(RS::LightAreaShadingMethod p_method, floa
 		return {};
 	}
 	RenderingServer *rs = engine.get_rendering_server();
-	RS::SurfaceData ground;
-	const float h = 10.0f;
-	ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
-	ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-	ground.indices = { 0, 1, 2, 0, 2, 3 };
+	const RS::SurfaceData ground = RenderTest::make_plane(10.0f); // Normal +Y.
 	RID mesh = rs->mesh_create();
 	rs->mesh_add_surface(mesh, ground);
 	RS::MaterialParams params;

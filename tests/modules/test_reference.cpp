@@ -84,6 +84,7 @@ using RenderTest::add_quad;
 using RenderTest::camera_looking_down;
 using RenderTest::make_box;
 using RenderTest::make_scene;
+using RenderTest::make_sphere;
 
 // Square y = 0 of half side p_half_size, normal +Y.
 static RS::SurfaceData make_ground(float p_half_size) {
@@ -614,31 +615,6 @@ struct CrossScene {
 		return image;
 	}
 };
-
-// A UV sphere with smooth normals, front faces clockwise seen from outside.
-static RS::SurfaceData make_sphere(float p_radius, int p_rings, int p_segments) {
-	RS::SurfaceData s;
-	for (int r = 0; r <= p_rings; r++) {
-		float theta = float(Math::PI) * float(r) / float(p_rings);
-		for (int g = 0; g <= p_segments; g++) {
-			float phi = 2.0f * float(Math::PI) * float(g) / float(p_segments);
-			Vector3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-			s.vertices.push_back(n * p_radius);
-			s.normals.push_back(n);
-		}
-	}
-	for (int r = 0; r < p_rings; r++) {
-		for (int g = 0; g < p_segments; g++) {
-			uint32_t a = r * (p_segments + 1) + g, b = a + 1, c = a + p_segments + 1, d = c + 1;
-			// Front normal (p2 - p0) x (p1 - p0) points outwards for (a, c, b) and (b, c, d).
-			const uint32_t idx[6] = { a, c, b, b, c, d };
-			for (uint32_t i : idx) {
-				s.indices.push_back(i);
-			}
-		}
-	}
-	return s;
-}
 
 TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pixel by pixel on the same scene") {
 	RenderingDevice *rd = rd_test_get_device();

@@ -21,6 +21,8 @@
 #include "servers/rendering/dummy/storage/material_storage.h"
 #include "servers/rendering/dummy/storage/mesh_storage.h"
 
+#include "tests/servers/render_scene_helpers.h"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -45,11 +47,7 @@ struct AreaFixture {
 		options.max_samples = 16384;
 		renderer.set_options(options);
 
-		RS::SurfaceData ground;
-		const float h = 20.0f;
-		ground.vertices = { Vector3(-h, 0, -h), Vector3(h, 0, -h), Vector3(h, 0, h), Vector3(-h, 0, h) };
-		ground.normals = { Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0), Vector3(0, 1, 0) };
-		ground.indices = { 0, 1, 2, 0, 2, 3 }; // (c - a) x (b - a) = +Y: front faces up (clockwise rule).
+		const RS::SurfaceData ground = RenderTest::make_plane(20.0f); // Normal +Y.
 		RID mesh = mesh_storage.mesh_create();
 		mesh_storage.mesh_add_surface(mesh, ground);
 		meshes.push_back(mesh);

@@ -1,7 +1,8 @@
 /**************************************************************************/
 /*  render_scene_helpers.h                                                */
 /**************************************************************************/
-/* Shared test helpers that need no GPU: small meshes (quad, plane, box)  */
+/* Shared test helpers that need no GPU: small meshes (quad, plane, box, */
+/* sphere)                                                                */
 /* and hand-made RenderSceneData views for renderers tested as units (the */
 /* Forward+ renderer in tests/servers, the reference in tests/modules).   */
 
@@ -46,6 +47,14 @@ inline RS::SurfaceData make_box(const Vector3 &p_half) {
 	BoxMesh::create_box_arrays(s, p_half * 2, 0, 0, 0);
 	s.tangents.clear();
 	s.uvs.clear();
+	return s;
+}
+
+// UV sphere of radius p_radius around the origin with p_rings bands of latitude and p_segments of
+// longitude, smooth normals (SphereMesh's arrays, whose `rings` counts the p_rings - 1 inner circles).
+inline RS::SurfaceData make_sphere(float p_radius, int p_rings, int p_segments) {
+	RS::SurfaceData s;
+	SphereMesh::create_sphere_arrays(s, p_radius, 2.0f * p_radius, p_segments, p_rings - 1);
 	return s;
 }
 

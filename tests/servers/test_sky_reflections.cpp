@@ -35,29 +35,6 @@ static const double REFLECTION_SMOOTH_RATIO_BOUND = 0.035;
 static const double REFLECTION_ROUGH_RMSE_BOUND = 0.12;
 static const double REFLECTION_ROUGH_RATIO_BOUND = 0.10;
 
-static RS::SurfaceData make_sphere(float p_radius, int p_rings, int p_segments) {
-	RS::SurfaceData s;
-	for (int r = 0; r <= p_rings; r++) {
-		float theta = float(Math::PI) * float(r) / float(p_rings);
-		for (int g = 0; g <= p_segments; g++) {
-			float phi = 2.0f * float(Math::PI) * float(g) / float(p_segments);
-			Vector3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-			s.vertices.push_back(n * p_radius);
-			s.normals.push_back(n);
-		}
-	}
-	for (int r = 0; r < p_rings; r++) {
-		for (int g = 0; g < p_segments; g++) {
-			uint32_t a = r * (p_segments + 1) + g, b = a + 1, c = a + p_segments + 1, d = c + 1;
-			const uint32_t idx[6] = { a, c, b, b, c, d };
-			for (uint32_t i : idx) {
-				s.indices.push_back(i);
-			}
-		}
-	}
-	return s;
-}
-
 // Default ProceduralSkyMaterial as background; ambient source BG (sky ambient); reflected_light_source BG.
 static void set_default_sky(RenderSceneData &r_d) {
 	r_d.environment.has_environment = true;
@@ -116,7 +93,7 @@ TEST_CASE("[Render][Sky] sky reflections on a smooth and a rough metal sphere ma
 		ro.sky_samples = 256;
 		ReferenceRenderer reference(&f.light_storage, &f.mesh_storage, &f.material_storage, ro);
 		const int W = 64, H = 64;
-		RID sphere = f.mesh(make_sphere(1.0f, 48, 96));
+		RID sphere = f.mesh(RenderTest::make_sphere(1.0f, 48, 96));
 		// Camera a little above the equator: the sphere reflects the sky, the horizon and the ground.
 		const Transform3D cam(Basis::looking_at(Vector3(0, -0.25f, -1).normalized(), Vector3(0, 1, 0)), Vector3(0, 1.0f, 4.0f));
 		RID rt = f.renderer.render_target_create(W, H);

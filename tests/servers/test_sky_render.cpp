@@ -33,29 +33,6 @@ static const double SKY_SPHERE_RELATIVE_RMSE_BOUND = 0.016;
 static const double SKY_SPHERE_MEAN_RATIO_BOUND = 0.003;
 static const double SKY_BACKGROUND_MAX_RELATIVE = 0.0025;
 
-static RS::SurfaceData make_sphere(float p_radius, int p_rings, int p_segments) {
-	RS::SurfaceData s;
-	for (int r = 0; r <= p_rings; r++) {
-		float theta = float(Math::PI) * float(r) / float(p_rings);
-		for (int g = 0; g <= p_segments; g++) {
-			float phi = 2.0f * float(Math::PI) * float(g) / float(p_segments);
-			Vector3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-			s.vertices.push_back(n * p_radius);
-			s.normals.push_back(n);
-		}
-	}
-	for (int r = 0; r < p_rings; r++) {
-		for (int g = 0; g < p_segments; g++) {
-			uint32_t a = r * (p_segments + 1) + g, b = a + 1, c = a + p_segments + 1, d = c + 1;
-			const uint32_t idx[6] = { a, c, b, b, c, d };
-			for (uint32_t i : idx) {
-				s.indices.push_back(i);
-			}
-		}
-	}
-	return s;
-}
-
 static void set_sky(RenderSceneData &r_d, bool p_background, bool p_ambient) {
 	r_d.environment.has_sky = true;
 	r_d.environment.sky = RS::ProceduralSkyParams(); // Godot's defaults.
@@ -81,7 +58,7 @@ TEST_CASE("[Render][Sky] ProceduralSkyMaterial: background and SH sky ambient on
 		ReferenceRenderer reference(&f.light_storage, &f.mesh_storage, &f.material_storage, ro);
 
 		const int W = 64, H = 64;
-		RID sphere = f.mesh(make_sphere(1.0f, 32, 64));
+		RID sphere = f.mesh(RenderTest::make_sphere(1.0f, 32, 64));
 		RS::MaterialParams mp;
 		mp.albedo = Color(1, 1, 1, 1);
 		mp.roughness = 1.0f;
