@@ -270,6 +270,8 @@ public:
 	enum RenderingInfo {
 		RENDERING_INFO_AREA_SHADOW_MAPS_IN_FRAME, // Shadow maps (sample points) the area lights averaged.
 		RENDERING_INFO_AREA_SHADOW_DRAW_CALLS_IN_FRAME, // Draw calls of the area shadow depth pass.
+		RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME, // Draw calls of the opaque pass (Godot's name).
+		RENDERING_INFO_AREA_LIGHT_DRAW_CALLS_IN_FRAME, // Of those, drawn with area-light shader code.
 		RENDERING_INFO_MAX,
 	};
 

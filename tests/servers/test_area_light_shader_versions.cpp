@@ -89,4 +89,64 @@ TEST_CASE("[AreaLight3D][Shadows] the area shadow lookup is compiled only for vi
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
+TEST_CASE("[AreaLight3D][Render] objects out of every area light's reach are drawn without area-light code, with the same pixels") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		RenderFixture f;
+		REQUIRE(f.init());
+		const int S = 32;
+		RenderSceneData d = make_scene(camera_looking_down(6.0f), 70.0f, S, S, 20.0f);
+		RS::MaterialParams params;
+		params.roughness = 0.5f;
+		RID mat = f.material(params);
+		// Patch A under the area light, patch B 3 m away, lit by an omni light only.
+		add_geometry(d, f.plane(0.8f), mat);
+		add_geometry(d, f.plane(0.8f), mat, Transform3D(Basis(), Vector3(3.0f, 0, 0)));
+		RID omni = f.light_storage.light_create(RS::LIGHT_OMNI);
+		f.lights.push_back(omni);
+		f.light_storage.light_set_param(omni, RS::LIGHT_PARAM_ENERGY, 2.0f);
+		f.light_storage.light_set_param(omni, RS::LIGHT_PARAM_RANGE, 3.0f);
+		add_light(d, omni, RS::LIGHT_OMNI, Transform3D(Basis(), Vector3(3.0f, 1.0f, 0)));
+		// Range 1 m: its influence box spans x in [-1.25, 1.25] and stops short of patch B.
+		RID area = f.area_light(Vector2(0.5f, 0.5f), 3.0f, 1.0f, 2.0f);
+		add_light(d, area, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(0, 0.5f, 0)));
+		RID rt = f.renderer.render_target_create(S, S);
+		REQUIRE(rt.is_valid());
+
+		f.renderer.render_scene(d, rt);
+		const std::vector<float> per_draw = f.renderer.render_target_get_data(rt);
+		CHECK(f.renderer.get_last_frame_rendering_info(RS::RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME) == 2);
+		CHECK(f.renderer.get_last_frame_rendering_info(RS::RENDERING_INFO_AREA_LIGHT_DRAW_CALLS_IN_FRAME) == 1);
+
+		// A black area light over patch B with a long range puts B in an area light's box: B is drawn
+		// with the area version, which adds exactly 0 for a black light. Every pixel must stay the same.
+		RID black = f.area_light(Vector2(0.5f, 0.5f), 0.0f, 10.0f, 2.0f);
+		add_light(d, black, RS::LIGHT_AREA, Transform3D(facing_down(), Vector3(3.0f, 0.5f, 0)));
+		f.renderer.render_scene(d, rt);
+		const std::vector<float> all_area = f.renderer.render_target_get_data(rt);
+		CHECK(f.renderer.get_last_frame_rendering_info(RS::RENDERING_INFO_AREA_LIGHT_DRAW_CALLS_IN_FRAME) == 2);
+		REQUIRE(per_draw.size() == all_area.size());
+		int differing = 0;
+		double lit_a = 0.0, lit_b = 0.0;
+		for (int y = 0; y < S; y++) {
+			for (int x = 0; x < S; x++) {
+				const size_t i = (size_t(y) * S + x) * 4;
+				for (int c = 0; c < 3; c++) {
+					differing += per_draw[i + c] != all_area[i + c] ? 1 : 0;
+				}
+				const Vector3 p = pixel_on_ground(d, x, y);
+				lit_a += (std::fabs(p.x) < 0.7f && std::fabs(p.z) < 0.7f) ? per_draw[i] : 0.0f;
+				lit_b += (std::fabs(p.x - 3.0f) < 0.7f && std::fabs(p.z) < 0.7f) ? per_draw[i] : 0.0f;
+			}
+		}
+		MESSAGE("red sums: patch A (area light) ", lit_a, ", patch B (omni only) ", lit_b, "; channels differing between the plain and the area version: ", differing);
+		CHECK(lit_a > 1.0);
+		CHECK(lit_b > 1.0);
+		CHECK(differing == 0);
+		f.renderer.render_target_free(rt);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
 } // namespace TestAreaLightShaderVersions

@@ -565,14 +565,31 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	} else if ((ubo.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
 		color_variant = use_area ? SCENE_SHADER_COLOR_AREA_FORCE_ALL : SCENE_SHADER_COLOR_FORCE_ALL;
 	}
+	// Shader version per draw, as upstream Godot chooses it: an object that no visible area light's
+	// influence box (light_get_aabb(), the support of the range window W) reaches gets exactly 0 from
+	// every area light, so it is drawn with the same key less the area bits, whose shader has no area
+	// code. Debug and brute-force views keep one version for the whole view.
+	const bool area_per_draw = use_area && color_variant == SCENE_SHADER_COLOR_AREA;
+	const uint32_t plain_methods = area_methods & ~AREA_VERSION_ALL_BITS;
 	ERR_FAIL_COND_MSG(!_ensure_scene_sets(area_methods), "render_scene: scene uniform sets could not be created.");
+	ERR_FAIL_COND_MSG(area_per_draw && !_ensure_scene_sets(plain_methods), "render_scene: scene uniform sets could not be created.");
 	RID color_set = area_methods != 0 ? area_versions[area_methods].scene_set : scene_set_color;
+	RID plain_set = plain_methods != 0 ? area_versions[plain_methods].scene_set : scene_set_color;
+	std::vector<AABB> area_boxes; // World bounds of the area lights' influence boxes.
+	if (area_per_draw) {
+		for (const RenderSceneData::LightInstance &li : p_data.lights) {
+			if (li.type == RS::LIGHT_AREA) {
+				area_boxes.push_back(li.transform.xform(light_storage->light_get_aabb(li.light)));
+			}
+		}
+	}
 
 	// Draw items (material sets are created/updated here, outside any list).
 	struct DrawItem {
 		const RendererRD::MeshStorage::SurfaceGPU *gpu;
 		RID material_set;
 		RD::PolygonCullMode cull;
+		bool area; // Drawn with the area-light version (color_variant, area_methods).
 		DrawPushConstant pc;
 	};
 	std::vector<DrawItem> items;
@@ -595,6 +612,16 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 			pc.normal_matrix[c * 4 + 2] = col.z;
 		}
 		pc.layer_mask = g.layer_mask;
+		bool area = use_area && !area_per_draw;
+		if (area_per_draw) {
+			const AABB bound = g.transform.xform(mesh_storage->mesh_get_aabb(g.mesh));
+			for (const AABB &box : area_boxes) {
+				if (box.intersects(bound)) {
+					area = true;
+					break;
+				}
+			}
+		}
 		for (int s = 0; s < surface_count; s++) {
 			const RendererRD::MeshStorage::SurfaceGPU *gpu = mesh_storage->mesh_surface_get_gpu(g.mesh, s);
 			ERR_CONTINUE_MSG(!gpu, "render_scene: a mesh surface has no GPU data (created before the RenderingDevice?); skipped.");
@@ -604,6 +631,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 			item.material_set = material_storage->material_get_uniform_set(material, color_shader);
 			ERR_CONTINUE_MSG(!item.material_set.is_valid(), "render_scene: material uniform set creation failed; surface skipped.");
 			item.cull = material_storage->material_is_cull_back(material) ? RD::POLYGON_CULL_BACK : RD::POLYGON_CULL_DISABLED;
+			item.area = area;
 			item.pc = pc;
 			items.push_back(item);
 		}
@@ -691,9 +719,14 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		clear_colors.resize(4, Color(0, 0, 0, 0)); // Normal, albedo, ambient: zero where no geometry.
 	}
 	list = rd->draw_list_begin(fb_opaque, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, clear_colors, 1.0f);
+	last_draw_calls = 0;
+	last_area_draw_calls = 0;
 	for (const DrawItem &item : items) {
-		rd->draw_list_bind_render_pipeline(list, _get_pipeline(color_variant, item.cull, color_format, area_methods));
-		rd->draw_list_bind_uniform_set(list, color_set, 0);
+		const bool plain = use_area && !item.area;
+		rd->draw_list_bind_render_pipeline(list, plain ? _get_pipeline(SCENE_SHADER_COLOR, item.cull, color_format, plain_methods) : _get_pipeline(color_variant, item.cull, color_format, area_methods));
+		rd->draw_list_bind_uniform_set(list, plain ? plain_set : color_set, 0);
+		last_draw_calls++;
+		last_area_draw_calls += item.area ? 1 : 0;
 		rd->draw_list_bind_uniform_set(list, item.material_set, 1);
 		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);
 		rd->draw_list_set_push_constant(list, &item.pc, sizeof(item.pc));
@@ -765,6 +798,10 @@ uint64_t RenderForwardClustered::get_last_frame_rendering_info(RS::RenderingInfo
 			return area_shadows.get_shadow_map_count();
 		case RS::RENDERING_INFO_AREA_SHADOW_DRAW_CALLS_IN_FRAME:
 			return area_shadows.get_last_draw_count();
+		case RS::RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME:
+			return last_draw_calls;
+		case RS::RENDERING_INFO_AREA_LIGHT_DRAW_CALLS_IN_FRAME:
+			return last_area_draw_calls;
 		default:
 			return 0;
 	}

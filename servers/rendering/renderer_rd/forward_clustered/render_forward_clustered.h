@@ -188,6 +188,8 @@ private:
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
 	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
+	uint64_t last_draw_calls = 0; // Opaque-pass draws of the last render_scene().
+	uint64_t last_area_draw_calls = 0; // Of those, drawn with the area-light shader version.
 	uint64_t frame_counter = 0;
 
 	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
@@ -253,6 +255,8 @@ public:
 	// (area_light_texture_inc.glsl, bindings 4 and 10). Without it no texture code and no atlas.
 	static constexpr uint32_t AREA_VERSION_TEXTURE = 1u << 13;
 	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
+	// Every bit that only area-light code reads (methods, area shadows, shapes, area_texture).
+	static constexpr uint32_t AREA_VERSION_ALL_BITS = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE;
 	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
 	// AREA_VERSION_SHADOWS_PCF / _PCSS also "#define AREA_SHADOWS_PCF\n" / "#define AREA_SHADOWS_PCSS\n".
