@@ -8,7 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 ./misc/scripts/install_deps.sh
 JOBS="$(nproc 2>/dev/null || echo 2)"
-scons -Q -j"$JOBS" target=release
+# Only what the demo runs: the engine and bin/godot-area (test.sh builds the tests and the Python module).
+scons -Q -j"$JOBS" target=release bin/godot-area
 mkdir -p out
 TIMEFORMAT='demo: render took %R s wall clock (%U s user CPU)'
 time ./bin/godot-area render -o out/demo.exr --png out/demo.png --compare-punctual "$@"
