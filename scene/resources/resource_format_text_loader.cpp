@@ -32,6 +32,7 @@ public:
 	Ref<Resource> main_resource;
 	TextSceneData scene_data; // Moved onto the root at the end.
 	String error;
+	String defining_sub_resource; // Id of the [sub_resource] whose properties are being read.
 
 	void problem(int p_line, const String &p_key, const String &p_message) {
 		_problems().add(p_key, vformat("%s:%d", path.c_str(), p_line), p_message);
@@ -44,6 +45,11 @@ public:
 
 	bool resolve_reference(const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
 		if (p_kind == "SubResource") {
+			if (!defining_sub_resource.empty() && p_id == defining_sub_resource) {
+				// A resource holding a reference to itself is a reference cycle: never freed.
+				r_error = vformat("SubResource(\"%s\") refers to the sub_resource it is a property of.", p_id.c_str());
+				return false;
+			}
 			auto it = sub_resources.find(p_id);
 			if (it != sub_resources.end()) {
 				r_value = it->second;
@@ -340,6 +346,7 @@ public:
 		}
 		sub_resources[id] = res;
 		r_target = res.ptr();
+		defining_sub_resource = id;
 		return true;
 	}
 
@@ -488,6 +495,7 @@ public:
 			String raw_tag = section_text(start, stream.pos);
 			section = tag.name;
 			target = nullptr;
+			defining_sub_resource = String();
 			if (tag.name == "ext_resource") {
 				if (!handle_ext_resource_tag(tag, raw_tag)) {
 					return false;

@@ -463,6 +463,15 @@ TEST_CASE("[SceneTree][TSCN] Malformed: bad literal") {
 	CHECK_MESSAGE(err.find("bad.tscn:9: SubResource(\"Nope\") is not declared") == 0, err.c_str());
 }
 
+TEST_CASE("[SceneTree][TSCN] Malformed: a sub_resource naming itself is an error, not a leaked reference cycle") {
+	register_tscn_test_types();
+	// Found by fuzz_resource_format_text (LeakSanitizer; seed tests/fuzz/corpus/tscn/regress_sub_resource_self_reference.tscn):
+	// a property of a sub_resource that named the same sub_resource made it hold itself, never freed.
+	// load_error() also checks that no test resource is left alive.
+	String err = load_error("[gd_scene format=3]\n\n[sub_resource type=\"TscnTestMaterial\" id=\"M\"]\nnext = SubResource(\"M\")\n\n[node name=\"Root\" type=\"TscnTestNode\"]\n");
+	CHECK_MESSAGE(err.find("bad.tscn:4: SubResource(\"M\") refers to the sub_resource it is a property of") == 0, err.c_str());
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: missing parent or root") {
 	register_tscn_test_types();
 	String err = load_error(String(HEADER) + "\n[node name=\"B\" type=\"Node\" parent=\"Nowhere/Else\"]\n");
