@@ -180,26 +180,34 @@ float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
 	return window * pow(max(d, 1e-4), 2.0 - p_light.attenuation);
 }
 
+// What the gate of a rectangle method (area_light_rect_begin) hands on: where the shading point lies
+// relative to the light, the light's frame, and L_e W(d).
+struct AreaRectSetup {
+	vec3 to_vertex; // Shading point - light centre.
+	float plane_dist; // Its distance to the light plane (> 0: in front of the emitting side).
+	vec3 ax; // Unit axes and half extents (metres) of the rectangle (area_light_get_frame).
+	vec3 ay;
+	vec2 half_size;
+	vec3 radiance; // L_e W(d): the colour times the range window, applied once outside the integral.
+};
+
 // The gate every rectangle method opens with (the contract above): the shading point strictly in front
 // of the emitting side, a light with a size and a colour (LightStorage sets the colour of a zero-size
 // light to 0), and an open range window. False where the light adds exactly 0, before any method's
-// maths runs on degenerate input. r_to_vertex = p_vertex - centre, r_plane_dist its distance to the
-// light plane (> 0), r_radiance = L_e W(d), applied once per shading point outside the integral.
-bool area_light_rect_begin(AreaLightData p_light, vec3 p_vertex, out vec3 r_to_vertex, out float r_plane_dist, out vec3 r_radiance) {
-	r_to_vertex = p_vertex - p_light.position;
-	r_plane_dist = dot(r_to_vertex, p_light.normal);
-	r_radiance = vec3(0.0);
-	if (!(r_plane_dist > 0.0) || p_light.color == vec3(0.0)) {
+// maths runs on degenerate input.
+bool area_light_rect_begin(AreaLightData p_light, vec3 p_vertex, out AreaRectSetup r_setup) {
+	r_setup.to_vertex = p_vertex - p_light.position;
+	r_setup.plane_dist = dot(r_setup.to_vertex, p_light.normal);
+	r_setup.radiance = vec3(0.0);
+	bool has_size = area_light_get_frame(p_light, r_setup.ax, r_setup.ay, r_setup.half_size);
+	if (!(r_setup.plane_dist > 0.0) || p_light.color == vec3(0.0) || !has_size) {
 		return false;
 	}
-	if (!(dot(p_light.half_axis_x, p_light.half_axis_x) > 0.0) || !(dot(p_light.half_axis_y, p_light.half_axis_y) > 0.0)) {
-		return false;
-	}
-	float window = area_light_range_window(p_light, r_to_vertex);
+	float window = area_light_range_window(p_light, r_setup.to_vertex);
 	if (!(window > 0.0)) {
 		return false;
 	}
-	r_radiance = p_light.color * window;
+	r_setup.radiance = p_light.color * window;
 	return true;
 }
 

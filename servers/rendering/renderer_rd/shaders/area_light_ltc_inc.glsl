@@ -302,10 +302,8 @@ void ltc_fetch_polynomial(float p_roughness, float p_NoV, out vec4 r_t0, out vec
 // r_specular reflected specular radiance. p_polynomial: take the LTC matrix from the polynomials
 // instead of the LUT (only where both are compiled; otherwise the compiled one is used).
 void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, bool p_polynomial, inout vec3 r_diffuse, inout vec3 r_specular) {
-	vec3 to_vertex;
-	float plane_dist;
-	vec3 radiance;
-	if (!area_light_rect_begin(p_light, p_vertex, to_vertex, plane_dist, radiance)) {
+	AreaRectSetup lr;
+	if (!area_light_rect_begin(p_light, p_vertex, lr)) {
 		return;
 	}
 
@@ -362,7 +360,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	float diffuse;
 	float spec;
 	ltc_rect_form_factors(q, p_specular_enabled, m_inv, diffuse, spec);
-	r_diffuse += radiance * diffuse * area_texture_ltc(p_light, q, true); // Texture: area_light_texture_inc.glsl.
+	r_diffuse += lr.radiance * diffuse * area_texture_ltc(p_light, q, true); // Texture: area_light_texture_inc.glsl.
 	if (p_specular_enabled) {
 		// The texture is fetched where the lobe's vector form factor meets the light in LTC space
 		// (the unclipped corners mapped by M^-1); vec3(1.0) and no work without AREA_LIGHT_TEXTURE.
@@ -374,7 +372,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 #endif
 		// Thesis eq. 5.10.
 		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
-		r_specular += radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
+		r_specular += lr.radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
 	}
 }
 

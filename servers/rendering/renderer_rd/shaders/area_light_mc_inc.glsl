@@ -100,20 +100,14 @@ vec3 area_mc_specular_lobe(vec3 N, vec3 V, vec3 p_l, float p_roughness, vec3 p_f
 }
 
 void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, uint p_diffuse_mode, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
-	vec3 to_vertex;
-	float plane_dist;
-	vec3 radiance;
-	if (!area_light_rect_begin(p_light, p_vertex, to_vertex, plane_dist, radiance)) {
+	AreaRectSetup lr;
+	if (!area_light_rect_begin(p_light, p_vertex, lr)) {
 		return;
 	}
 	vec3 nl = p_light.normal;
-	vec3 ax;
-	vec3 ay;
-	vec2 half_size;
-	area_light_get_frame(p_light, ax, ay, half_size);
 	AreaSphericalRect rect;
-	vec3 corner = p_light.position - ax * half_size.x - ay * half_size.y;
-	if (!area_spherical_rect_init(p_vertex, corner, ax, ay, half_size * 2.0, rect)) {
+	vec3 corner = p_light.position - lr.ax * lr.half_size.x - lr.ay * lr.half_size.y;
+	if (!area_spherical_rect_init(p_vertex, corner, lr.ax, lr.ay, lr.half_size * 2.0, rect)) {
 		return;
 	}
 	float omega = rect.solid_angle;
@@ -135,8 +129,8 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 		vec2 u = area_mc_random2(diffuse_seed, i);
 		vec3 q = area_spherical_rect_sample(rect, u.x, u.y);
 		vec3 l = normalize(q - p_vertex);
-		vec3 tex = area_texture_point(p_light, q - p_light.position, ax, ay, half_size); // area_texture, exact.
-		light_compute(N, l, V, radiance * (omega * inv_n) * tex, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
+		vec3 tex = area_texture_point(p_light, q - p_light.position, lr.ax, lr.ay, lr.half_size); // area_texture, exact.
+		light_compute(N, l, V, lr.radiance * (omega * inv_n) * tex, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
 	}
 	r_diffuse += diffuse;
 
@@ -157,7 +151,7 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 		vec2 u = area_mc_random2(specular_seed, 2u * i);
 		vec3 q = area_spherical_rect_sample(rect, u.x, u.y);
 		vec3 l = normalize(q - p_vertex);
-		vec3 lobe = area_mc_specular_lobe(N, V, l, p_roughness, p_f0, p_f90) * area_texture_point(p_light, q - p_light.position, ax, ay, half_size);
+		vec3 lobe = area_mc_specular_lobe(N, V, l, p_roughness, p_f0, p_f90) * area_texture_point(p_light, q - p_light.position, lr.ax, lr.ay, lr.half_size);
 		if (lobe != vec3(0.0)) {
 			float pdf_brdf = brdf_sampling ? area_mc_vndf_pdf(N, V, l, nov, alpha) : 0.0;
 			sum += lobe / (pdf_light + pdf_brdf);
@@ -173,15 +167,15 @@ void light_process_area_stochastic(AreaLightData p_light, vec3 p_vertex, vec3 N,
 		if (dn >= 0.0 || dot(N, lb) <= 0.0) {
 			continue;
 		}
-		vec3 hit = p_vertex + lb * (plane_dist / -dn) - p_light.position;
-		if (abs(dot(hit, ax)) > half_size.x || abs(dot(hit, ay)) > half_size.y) {
+		vec3 hit = p_vertex + lb * (lr.plane_dist / -dn) - p_light.position;
+		if (abs(dot(hit, lr.ax)) > lr.half_size.x || abs(dot(hit, lr.ay)) > lr.half_size.y) {
 			continue;
 		}
-		vec3 lobe_b = area_mc_specular_lobe(N, V, lb, p_roughness, p_f0, p_f90) * area_texture_point(p_light, hit, ax, ay, half_size);
+		vec3 lobe_b = area_mc_specular_lobe(N, V, lb, p_roughness, p_f0, p_f90) * area_texture_point(p_light, hit, lr.ax, lr.ay, lr.half_size);
 		float pdf_b = area_mc_vndf_pdf(N, V, lb, nov, alpha);
 		sum += lobe_b / (pdf_light + pdf_b);
 	}
-	r_specular += radiance * p_light.specular_amount * sum * inv_n;
+	r_specular += lr.radiance * p_light.specular_amount * sum * inv_n;
 }
 
 #endif // AREA_LIGHT_MC_INC_GLSL

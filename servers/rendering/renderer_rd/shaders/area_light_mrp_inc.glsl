@@ -82,33 +82,27 @@ vec2 area_mrp_plane_hit(AreaLightData p_light, vec3 p_ax, vec3 p_ay, vec3 p_vert
 }
 
 void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, uint p_diffuse_mode, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
-	vec3 to_vertex;
-	float plane_dist;
-	vec3 radiance;
-	if (!area_light_rect_begin(p_light, p_vertex, to_vertex, plane_dist, radiance)) {
+	AreaRectSetup lr;
+	if (!area_light_rect_begin(p_light, p_vertex, lr)) {
 		return;
 	}
 	vec3 nl = p_light.normal;
-	vec3 ax;
-	vec3 ay;
-	vec2 half_size;
-	area_light_get_frame(p_light, ax, ay, half_size);
-	float omega = area_light_solid_angle(p_light, p_vertex, ax, ay, half_size);
+	float omega = area_light_solid_angle(p_light, p_vertex, lr.ax, lr.ay, lr.half_size);
 	if (!(omega > 0.0)) {
 		return;
 	}
 	// Far enough that clamping a point this far away gives the rectangle's limit point.
-	float far = 1e3 * (half_size.x + half_size.y + plane_dist + length(to_vertex));
+	float far = 1e3 * (lr.half_size.x + lr.half_size.y + lr.plane_dist + length(lr.to_vertex));
 
 	// Diffuse: p_r, the rectangle point closest to the plane projection p_p of p (Drobot fig. 1.6).
-	vec2 uv_r = area_light_clamp_uv(area_mrp_plane_uv(p_light, ax, ay, p_vertex), half_size);
-	vec3 dir_r = normalize(area_mrp_uv_to_point(p_light, ax, ay, uv_r) - p_vertex);
+	vec2 uv_r = area_light_clamp_uv(area_mrp_plane_uv(p_light, lr.ax, lr.ay, p_vertex), lr.half_size);
+	vec3 dir_r = normalize(area_mrp_uv_to_point(p_light, lr.ax, lr.ay, uv_r) - p_vertex);
 	// p_c: closest to p' (ray along n, Drobot fig. 1.5), or thesis eq. 5.2 when n does not reach the plane.
 	vec3 dir_c = dir_r;
 	if (dot(N, nl) < -1e-4) {
 		float t;
-		vec2 uv_c = area_light_clamp_uv(area_mrp_plane_hit(p_light, ax, ay, p_vertex, plane_dist, N, far, t), half_size);
-		dir_c = normalize(area_mrp_uv_to_point(p_light, ax, ay, uv_c) - p_vertex);
+		vec2 uv_c = area_light_clamp_uv(area_mrp_plane_hit(p_light, lr.ax, lr.ay, p_vertex, lr.plane_dist, N, far, t), lr.half_size);
+		dir_c = normalize(area_mrp_uv_to_point(p_light, lr.ax, lr.ay, uv_c) - p_vertex);
 	} else {
 		vec3 p2 = cross(cross(nl, N), nl); // Thesis eq. 5.2: p'' parallel to the light plane.
 		if (dot(p2, p2) > 1e-12) {
@@ -119,14 +113,14 @@ void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	vec3 bisector = dir_c + dir_r;
 	vec3 dir_d = dot(bisector, bisector) > 1e-12 ? normalize(bisector) : dir_r;
 	float t_d;
-	vec2 uv_d = area_light_clamp_uv(area_mrp_plane_hit(p_light, ax, ay, p_vertex, plane_dist, dir_d, far, t_d), half_size);
-	vec3 l_d = normalize(area_mrp_uv_to_point(p_light, ax, ay, uv_d) - p_vertex);
+	vec2 uv_d = area_light_clamp_uv(area_mrp_plane_hit(p_light, lr.ax, lr.ay, p_vertex, lr.plane_dist, dir_d, far, t_d), lr.half_size);
+	vec3 l_d = normalize(area_mrp_uv_to_point(p_light, lr.ax, lr.ay, uv_d) - p_vertex);
 	// Drobot eq. 1.16 with the exact solid angle; Burley or Lambert as for punctual lights.
 	vec3 diffuse = vec3(0.0);
 	vec3 unused_specular = vec3(0.0);
 	// area_texture: Drobot eq. 1.24's lookup at p_d, footprint from the plane distance (area_light_texture_inc).
-	vec3 tex_d = area_texture_mrp(p_light, uv_d, half_size, AREA_TEXTURE_MRP_DIFFUSE_SIGMA * plane_dist);
-	light_compute(N, l_d, V, radiance * omega * tex_d, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
+	vec3 tex_d = area_texture_mrp(p_light, uv_d, lr.half_size, AREA_TEXTURE_MRP_DIFFUSE_SIGMA * lr.plane_dist);
+	light_compute(N, l_d, V, lr.radiance * omega * tex_d, 0.0, p_diffuse_mode, p_roughness, p_f0, p_f90, false, diffuse, unused_specular);
 	r_diffuse += diffuse;
 
 	if (!p_specular_enabled) {
@@ -135,9 +129,9 @@ void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	// Specular: the reflection ray's point on the plane (or its limit), clamped to the rectangle.
 	vec3 R = reflect(-V, N);
 	float t_s;
-	vec2 uv_hit = area_mrp_plane_hit(p_light, ax, ay, p_vertex, plane_dist, R, far, t_s);
-	vec2 uv_s = area_light_clamp_uv(uv_hit, half_size);
-	vec3 to_s = area_mrp_uv_to_point(p_light, ax, ay, uv_s) - p_vertex;
+	vec2 uv_hit = area_mrp_plane_hit(p_light, lr.ax, lr.ay, p_vertex, lr.plane_dist, R, far, t_s);
+	vec2 uv_s = area_light_clamp_uv(uv_hit, lr.half_size);
+	vec3 to_s = area_mrp_uv_to_point(p_light, lr.ax, lr.ay, uv_s) - p_vertex;
 	vec3 l_s = normalize(to_s);
 	float NoL = dot(N, l_s);
 	if (NoL <= 0.0) {
@@ -158,11 +152,11 @@ void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	}
 	float rho = dist * tan(half_angle);
 	float stretch = rho / max(cos_hit, 0.05); // Semi-axis along the in-plane direction of the ray.
-	vec2 major = vec2(dot(R, ax), dot(R, ay));
+	vec2 major = vec2(dot(R, lr.ax), dot(R, lr.ay));
 	float major_len = length(major);
 	major = major_len > 1e-6 ? major / major_len : vec2(1.0, 0.0);
 	vec2 extent = sqrt(stretch * stretch * major * major + rho * rho * major.yx * major.yx) + 1e-6;
-	vec2 overlap = max(min(centre + extent, half_size) - max(centre - extent, -half_size), vec2(0.0));
+	vec2 overlap = max(min(centre + extent, lr.half_size) - max(centre - extent, -lr.half_size), vec2(0.0));
 	float covered = (overlap.x * overlap.y) / (4.0 * extent.x * extent.y);
 	float omega_s = min(omega_cone * covered, omega);
 	if (!(omega_s > 0.0)) {
@@ -182,8 +176,8 @@ void light_process_area_mrp(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	// D V cos over any part of the sphere integrates to at most 1 (energy conservation).
 	float integral = min(lobe * omega * (omega_s / omega), 1.0);
 	// area_texture: Drobot eq. 1.28's lookup at p_s, footprint from the projected importance cone (rho).
-	vec3 tex_s = area_texture_mrp(p_light, area_light_clamp_uv(centre, half_size), half_size, 0.5 * rho);
-	r_specular += radiance * p_light.specular_amount * integral * F_Schlick(p_f0, p_f90, LoH) * tex_s;
+	vec3 tex_s = area_texture_mrp(p_light, area_light_clamp_uv(centre, lr.half_size), lr.half_size, 0.5 * rho);
+	r_specular += lr.radiance * p_light.specular_amount * integral * F_Schlick(p_f0, p_f90, LoH) * tex_s;
 }
 
 #endif // AREA_LIGHT_MRP_INC_GLSL
