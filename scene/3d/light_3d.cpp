@@ -268,6 +268,9 @@ std::vector<String> Light3D::get_configuration_warnings() const {
 		} else if (area->get_area_size().x <= 0.0f || area->get_area_size().y <= 0.0f) {
 			warnings.push_back("An AreaLight3D with a zero area_size component emits no light.");
 		}
+		if (area->get_area_shape() != AreaLight3D::AREA_SHAPE_RECTANGLE && area->get_area_texture().is_valid()) {
+			warnings.push_back("area_texture applies to rectangle AreaLight3Ds only (as upstream's); this disk, sphere or tube is drawn untextured.");
+		}
 		if (projector.is_valid()) {
 			// Upstream Godot 4.7 warns the same way: area lights take their texture from area_texture.
 			warnings.push_back("An AreaLight3D does not use light_projector; an area light's texture is area_texture.");
