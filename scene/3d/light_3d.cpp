@@ -672,6 +672,7 @@ void AreaLight3D::set_area_texture(const Ref<Texture2D> &p_texture) {
 	if (get_light().is_valid()) {
 		RS::get_singleton()->light_area_set_texture(get_light(), rid);
 	}
+	notify_property_list_changed(); // A non-rectangle shows the row only while it holds a texture.
 }
 
 void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
@@ -687,6 +688,11 @@ void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
 	}
 	// Only the stochastic method takes samples (AUTO may pick it per light and frame).
 	if (area_shading_method != AREA_SHADING_STOCHASTIC && area_shading_method != AREA_SHADING_AUTO && n == "area_stochastic_samples") {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	// area_texture textures rectangles only (upstream's only shape): another shape shows the row only
+	// while it holds a texture (so it can be seen and cleared; a configuration warning says it is unused).
+	if (area_shape != AREA_SHAPE_RECTANGLE && area_texture.is_null() && n == "area_texture") {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
 	// Area lights do not sample a projector texture (the shading of the rectangle has no projection);

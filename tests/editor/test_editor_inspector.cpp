@@ -10,6 +10,7 @@
 
 #include "core/object/undo_redo.h"
 #include "scene/3d/light_3d.h"
+#include "scene/resources/texture.h"
 #include "tests/scene/scene_test_fixture.h"
 
 #include <doctest/doctest.h>
@@ -406,6 +407,48 @@ TEST_CASE("[EditorInspector] Subgroups, read-only rows, prefixes and hint parsin
 	CHECK(row.has_range);
 	CHECK(row.range_step == doctest::Approx(1.0));
 	undo_redo.clear_history();
+}
+
+TEST_CASE("[EditorInspector] AreaLight3D shows area_texture for rectangles, for other shapes only while set") {
+	DummyServer server;
+	ErrorCatcher errors;
+	AreaLight3D *light = new AreaLight3D;
+	UndoRedo undo_redo;
+	EditorInspector inspector;
+	inspector.set_undo_redo(&undo_redo);
+	inspector.edit(light);
+	CHECK(inspector.find_row("area_texture") >= 0); // Rectangle (the default): upstream's textured light.
+	const AreaLight3D::AreaShape shapes[3] = { AreaLight3D::AREA_SHAPE_DISK, AreaLight3D::AREA_SHAPE_SPHERE, AreaLight3D::AREA_SHAPE_TUBE };
+	for (AreaLight3D::AreaShape shape : shapes) {
+		CAPTURE(int(shape));
+		REQUIRE(inspector.set_row_value(inspector.find_row("area_shape"), (int64_t)shape));
+		inspector.refresh();
+		CHECK(inspector.find_row("area_texture") == -1); // Nothing to texture.
+	}
+	// A tube holding a texture (from a scene file, or set before the shape changed) shows it, so it can be
+	// cleared; clearing it hides the row again.
+	Ref<ImageTexture> texture = ImageTexture::create_from_image(Image(2, 2, Color(1, 1, 1, 1)));
+	REQUIRE(texture.is_valid());
+	light->set_area_texture(texture);
+	inspector.refresh();
+	CHECK(inspector.find_row("area_texture") >= 0);
+	light->set_area_texture(Ref<Texture2D>());
+	inspector.refresh();
+	CHECK(inspector.find_row("area_texture") == -1);
+	// Hidden from the inspector only: still a stored property (Godot's NO_EDITOR).
+	std::vector<PropertyInfo> list;
+	light->get_property_list(&list);
+	bool stored = false;
+	for (const PropertyInfo &pi : list) {
+		stored = stored || (pi.name == "area_texture" && pi.usage == PROPERTY_USAGE_NO_EDITOR);
+	}
+	CHECK(stored);
+	REQUIRE(inspector.set_row_value(inspector.find_row("area_shape"), (int64_t)AreaLight3D::AREA_SHAPE_RECTANGLE));
+	inspector.refresh();
+	CHECK(inspector.find_row("area_texture") >= 0);
+	inspector.edit(nullptr);
+	delete light;
+	CHECK(errors.messages.empty());
 }
 
 TEST_CASE("[EditorInspector] AreaLight3D hides the projector, and the stochastic samples unless a method takes them") {
