@@ -9,8 +9,8 @@
 #include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/area_lights/area_method_selector.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
-#include "servers/rendering/storage/material_storage.h"
 #include "servers/rendering/rendering_device.h"
+#include "servers/rendering/storage/material_storage.h"
 
 #include <algorithm>
 #include <cmath>
