@@ -250,6 +250,20 @@ static const ShapeMethodBound BOUNDS[3][4] = {
 	{ { 0.036f, 0.043f }, { 0.037f, 0.044f }, { 0.41f, 0.13f }, { 0.25f, 0.045f } }, // Tube (0.024 / 0.028, 0.025 / 0.029, 0.27 / 0.086, 0.18 / 0.031; MC was 0.27 / 0.043 sampling the whole capsule).
 };
 
+// The glossy scene of the shape x method and convergence tests: a plane of roughness 0.4, metallic 0.5
+// seen obliquely, the light p_height above it (turned 0.3 rad about the vertical).
+static RenderSceneData glossy_scene(ShapesFixture &f, RID p_light, float p_height, int p_size) {
+	RS::MaterialParams mp;
+	mp.albedo = Color(0.8f, 0.75f, 0.7f, 1.0f);
+	mp.roughness = 0.4f;
+	mp.metallic = 0.5f;
+	mp.cull_back = false;
+	RenderSceneData d = RenderTest::make_scene(Transform3D(Basis::looking_at(Vector3(0, -2.5f, -1.5f)), Vector3(0, 2.5f, 1.5f)), 60.0f, p_size, p_size, 30.0f);
+	add_geometry(d, f.plane(30.0f), f.material(mp));
+	add_light(d, p_light, RS::LIGHT_AREA, Transform3D(facing_down() * Basis::from_axis_angle(Vector3(0, 1, 0), 0.3f), Vector3(0.1f, p_height, -0.1f)));
+	return d;
+}
+
 TEST_CASE("[AreaLight3D][Render] each shape x method against the Embree reference, glossy and rough") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
@@ -257,20 +271,11 @@ TEST_CASE("[AreaLight3D][Render] each shape x method against the Embree referenc
 		ShapesFixture f;
 		REQUIRE(f.init());
 		const int S = 32;
-		RS::MaterialParams mp;
-		mp.albedo = Color(0.8f, 0.75f, 0.7f, 1.0f);
-		mp.roughness = 0.4f;
-		mp.metallic = 0.5f;
-		mp.cull_back = false;
-		RID mat = f.material(mp);
-		RID plane = f.plane(30.0f);
 		const Vector2 sizes[4] = { Vector2(0.8f, 0.5f), Vector2(0.8f, 0.5f), Vector2(0.5f, 0), Vector2(1.0f, 0.15f) };
 		// The rectangle first: the baseline each shape's errors are read against (not bounded here).
 		for (int shape = 0; shape <= 3; shape++) {
-			RenderSceneData d = RenderTest::make_scene(Transform3D(Basis::looking_at(Vector3(0, -2.5f, -1.5f)), Vector3(0, 2.5f, 1.5f)), 60.0f, S, S, 30.0f);
-			add_geometry(d, plane, mat);
 			RID light = f.shape_light(RS::LightAreaShape(shape), sizes[shape], 3.0f, RS::LIGHT_AREA_SHADING_LTC, 64);
-			add_light(d, light, RS::LIGHT_AREA, Transform3D(facing_down() * Basis::from_axis_angle(Vector3(0, 1, 0), 0.3f), Vector3(0.1f, 0.8f, -0.1f)));
+			RenderSceneData d = glossy_scene(f, light, 0.8f, S);
 			const std::vector<float> reference = f.render_reference(d);
 			for (int m = 0; m < 4; m++) {
 				const std::string what = std::string(SHAPE_NAMES[shape]) + " " + METHOD_NAMES[m];
@@ -298,22 +303,13 @@ TEST_CASE("[AreaLight3D][Render] the tube's stochastic method samples its visibl
 		ShapesFixture f;
 		REQUIRE(f.init());
 		const int S = 24;
-		RS::MaterialParams mp;
-		mp.albedo = Color(0.8f, 0.75f, 0.7f, 1.0f);
-		mp.roughness = 0.4f;
-		mp.metallic = 0.5f;
-		mp.cull_back = false;
-		RID mat = f.material(mp);
-		RID plane = f.plane(30.0f);
 		// A tube (1 m x 0.15 m) and a tube of length 0 (a sphere of diameter 0.3 m: both end caps are the
 		// same sphere, each point must count once).
 		const Vector2 sizes[2] = { Vector2(1.0f, 0.15f), Vector2(0.0f, 0.3f) };
 		for (int c = 0; c < 2; c++) {
 			CAPTURE(c);
-			RenderSceneData d = RenderTest::make_scene(Transform3D(Basis::looking_at(Vector3(0, -2.5f, -1.5f)), Vector3(0, 2.5f, 1.5f)), 60.0f, S, S, 30.0f);
-			add_geometry(d, plane, mat);
 			RID light = f.shape_light(RS::LIGHT_AREA_SHAPE_TUBE, sizes[c], 3.0f, RS::LIGHT_AREA_SHADING_STOCHASTIC, 4);
-			add_light(d, light, RS::LIGHT_AREA, Transform3D(facing_down() * Basis::from_axis_angle(Vector3(0, 1, 0), 0.3f), Vector3(0.1f, 0.6f, -0.1f)));
+			RenderSceneData d = glossy_scene(f, light, 0.6f, S);
 			const std::vector<float> reference = f.render_reference(d);
 			const int counts[4] = { 4, 16, 64, 256 };
 			double log_n[4], log_e[4];
