@@ -268,6 +268,9 @@ std::vector<String> Light3D::get_configuration_warnings() const {
 		} else if (area->get_area_size().x <= 0.0f || area->get_area_size().y <= 0.0f) {
 			warnings.push_back("An AreaLight3D with a zero area_size component emits no light.");
 		}
+		if (area->get_area_shape() != AreaLight3D::AREA_SHAPE_RECTANGLE && area->get_area_texture().is_valid()) {
+			warnings.push_back("area_texture applies to rectangle AreaLight3Ds only (as upstream's); this disk, sphere or tube is drawn untextured.");
+		}
 		if (projector.is_valid()) {
 			// Upstream Godot 4.7 warns the same way: area lights take their texture from area_texture.
 			warnings.push_back("An AreaLight3D does not use light_projector; an area light's texture is area_texture.");
@@ -669,6 +672,7 @@ void AreaLight3D::set_area_texture(const Ref<Texture2D> &p_texture) {
 	if (get_light().is_valid()) {
 		RS::get_singleton()->light_area_set_texture(get_light(), rid);
 	}
+	notify_property_list_changed(); // A non-rectangle shows the row only while it holds a texture.
 }
 
 void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
@@ -684,6 +688,11 @@ void AreaLight3D::_validate_property(PropertyInfo &p_property) const {
 	}
 	// Only the stochastic method takes samples (AUTO may pick it per light and frame).
 	if (area_shading_method != AREA_SHADING_STOCHASTIC && area_shading_method != AREA_SHADING_AUTO && n == "area_stochastic_samples") {
+		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
+	}
+	// area_texture textures rectangles only (upstream's only shape): another shape shows the row only
+	// while it holds a texture (so it can be seen and cleared; a configuration warning says it is unused).
+	if (area_shape != AREA_SHAPE_RECTANGLE && area_texture.is_null() && n == "area_texture") {
 		p_property.usage = PROPERTY_USAGE_NO_EDITOR;
 	}
 	// Area lights do not sample a projector texture (the shading of the rectangle has no projection);

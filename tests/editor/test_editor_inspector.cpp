@@ -10,6 +10,7 @@
 
 #include "core/object/undo_redo.h"
 #include "scene/3d/light_3d.h"
+#include "scene/resources/texture.h"
 #include "tests/scene/scene_test_fixture.h"
 
 #include <doctest/doctest.h>
@@ -408,29 +409,77 @@ TEST_CASE("[EditorInspector] Subgroups, read-only rows, prefixes and hint parsin
 	undo_redo.clear_history();
 }
 
-TEST_CASE("[EditorInspector] AreaLight3D hides the projector, and the stochastic samples unless a method takes them") {
+// An AreaLight3D in an inspector with undo/redo, on the dummy server; no errors may be printed.
+struct AreaLightInspector {
 	DummyServer server;
 	ErrorCatcher errors;
 	AreaLight3D *light = new AreaLight3D;
 	UndoRedo undo_redo;
 	EditorInspector inspector;
-	inspector.set_undo_redo(&undo_redo);
-	inspector.edit(light);
+
+	AreaLightInspector() {
+		inspector.set_undo_redo(&undo_redo);
+		inspector.edit(light);
+	}
+	~AreaLightInspector() {
+		inspector.edit(nullptr);
+		delete light;
+	}
+	// Sets the row p_name to p_value through the inspector (as a user would) and refreshes the rows.
+	bool set(const char *p_name, int64_t p_value) {
+		const bool ok = inspector.set_row_value(inspector.find_row(p_name), p_value);
+		inspector.refresh();
+		return ok;
+	}
+};
+
+TEST_CASE("[EditorInspector] AreaLight3D shows area_texture for rectangles, for other shapes only while set") {
+	AreaLightInspector t;
+	CHECK(t.inspector.find_row("area_texture") >= 0); // Rectangle (the default): upstream's textured light.
+	const AreaLight3D::AreaShape shapes[3] = { AreaLight3D::AREA_SHAPE_DISK, AreaLight3D::AREA_SHAPE_SPHERE, AreaLight3D::AREA_SHAPE_TUBE };
+	for (AreaLight3D::AreaShape shape : shapes) {
+		CAPTURE(int(shape));
+		REQUIRE(t.set("area_shape", shape));
+		CHECK(t.inspector.find_row("area_texture") == -1); // Nothing to texture.
+	}
+	// A tube holding a texture (from a scene file, or set before the shape changed) shows it, so it can be
+	// cleared; clearing it hides the row again.
+	Ref<ImageTexture> texture = ImageTexture::create_from_image(Image(2, 2, Color(1, 1, 1, 1)));
+	REQUIRE(texture.is_valid());
+	t.light->set_area_texture(texture);
+	t.inspector.refresh();
+	CHECK(t.inspector.find_row("area_texture") >= 0);
+	t.light->set_area_texture(Ref<Texture2D>());
+	t.inspector.refresh();
+	CHECK(t.inspector.find_row("area_texture") == -1);
+	// Hidden from the inspector only: still a stored property (Godot's NO_EDITOR).
+	std::vector<PropertyInfo> list;
+	t.light->get_property_list(&list);
+	bool stored = false;
+	for (const PropertyInfo &pi : list) {
+		stored = stored || (pi.name == "area_texture" && pi.usage == PROPERTY_USAGE_NO_EDITOR);
+	}
+	CHECK(stored);
+	REQUIRE(t.set("area_shape", AreaLight3D::AREA_SHAPE_RECTANGLE));
+	CHECK(t.inspector.find_row("area_texture") >= 0);
+	CHECK(t.errors.messages.empty());
+}
+
+TEST_CASE("[EditorInspector] AreaLight3D hides the projector, and the stochastic samples unless a method takes them") {
+	AreaLightInspector t;
+	EditorInspector &inspector = t.inspector;
 	// Exactly what _validate_property says: the rows are the EDITOR entries of the property list.
 	CHECK(inspector.find_row("light_projector") == -1);
 	CHECK(inspector.find_row("area_stochastic_samples") == -1); // LTC by default.
-	REQUIRE(inspector.set_row_value(inspector.find_row("area_shading_method"), (int64_t)AreaLight3D::AREA_SHADING_STOCHASTIC));
-	inspector.refresh();
+	REQUIRE(t.set("area_shading_method", AreaLight3D::AREA_SHADING_STOCHASTIC));
 	CHECK(inspector.find_row("area_stochastic_samples") >= 0);
-	REQUIRE(inspector.set_row_value(inspector.find_row("area_shading_method"), (int64_t)AreaLight3D::AREA_SHADING_AUTO));
-	inspector.refresh();
+	REQUIRE(t.set("area_shading_method", AreaLight3D::AREA_SHADING_AUTO));
 	CHECK(inspector.find_row("area_stochastic_samples") >= 0); // AUTO may pick the stochastic method.
-	REQUIRE(inspector.set_row_value(inspector.find_row("area_shading_method"), (int64_t)AreaLight3D::AREA_SHADING_MRP));
-	inspector.refresh();
+	REQUIRE(t.set("area_shading_method", AreaLight3D::AREA_SHADING_MRP));
 	CHECK(inspector.find_row("area_stochastic_samples") == -1);
 	// Hidden from the inspector, still saved (a scene's value is not dropped).
 	std::vector<PropertyInfo> list;
-	light->get_property_list(&list);
+	t.light->get_property_list(&list);
 	int stored = 0;
 	for (const PropertyInfo &pi : list) {
 		if (pi.name == "light_projector" || pi.name == "area_stochastic_samples") {
@@ -444,8 +493,7 @@ TEST_CASE("[EditorInspector] AreaLight3D hides the projector, and the stochastic
 	CHECK(inspector.find_row("light_projector") >= 0);
 	inspector.edit(nullptr);
 	delete omni;
-	delete light;
-	CHECK(errors.messages.empty());
+	CHECK(t.errors.messages.empty());
 }
 
 TEST_CASE("[EditorInspector] Layer masks: 20-layer grid, unsigned values, one bit toggled") {

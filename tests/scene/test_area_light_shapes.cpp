@@ -4,13 +4,15 @@
 /* AreaLight3D::area_shape (RECTANGLE, DISK, SPHERE, TUBE): enum values   */
 /* equal the server's, the default, validation, forwarding to the server, */
 /* the .tscn round trip, the per-shape AABB (the same box as the          */
-/* server's), the culling radius, the emitting area and the zero-size     */
-/* warnings. Dummy server.                                                */
+/* server's), the culling radius, the emitting area, the zero-size        */
+/* warnings and the warning for an area_texture on a non-rectangle.       */
+/* Dummy server.                                                          */
 
 #include "scene/3d/light_3d.h"
 
 #include "core/math/math_funcs.h"
 #include "scene/resources/resource_format_text.h"
+#include "scene/resources/texture.h"
 #include "servers/rendering/rendering_server_globals.h"
 #include "servers/rendering/storage/light_storage.h"
 #include "tests/scene/scene_test_fixture.h"
@@ -162,6 +164,32 @@ TEST_CASE("[AreaLight3D] zero-size warnings follow the shape's meaning of area_s
 	CHECK(light->get_configuration_warnings().empty()); // Tube of length 0: a sphere of diameter y.
 	light->set_area_size(Vector2(1, 0));
 	CHECK(light->get_configuration_warnings().size() == 1);
+	delete light;
+}
+
+TEST_CASE("[AreaLight3D] an area_texture on a disk, sphere or tube is warned about (rectangles only)") {
+	DummyServer server;
+	AreaLight3D *light = new AreaLight3D;
+	Ref<ImageTexture> texture = ImageTexture::create_from_image(Image(2, 2, Color(1, 0.5f, 0.25f, 1)));
+	REQUIRE(texture.is_valid());
+	light->set_area_texture(texture);
+	CHECK(light->get_configuration_warnings().empty()); // A textured rectangle: upstream's case.
+	const AreaLight3D::AreaShape shapes[3] = { AreaLight3D::AREA_SHAPE_DISK, AreaLight3D::AREA_SHAPE_SPHERE, AreaLight3D::AREA_SHAPE_TUBE };
+	for (AreaLight3D::AreaShape shape : shapes) {
+		CAPTURE(int(shape));
+		light->set_area_shape(shape);
+		const std::vector<String> warnings = light->get_configuration_warnings();
+		REQUIRE(warnings.size() == 1);
+		CHECK(warnings[0].find("area_texture") != String::npos);
+		CHECK(warnings[0].find("untextured") != String::npos);
+		// The texture is kept (saved, forwarded): switching back to a rectangle textures it again.
+		CHECK(light->get_area_texture() == texture);
+	}
+	light->set_area_texture(Ref<Texture2D>());
+	CHECK(light->get_configuration_warnings().empty()); // An untextured tube.
+	light->set_area_shape(AreaLight3D::AREA_SHAPE_RECTANGLE);
+	light->set_area_texture(texture);
+	CHECK(light->get_configuration_warnings().empty());
 	delete light;
 }
 

@@ -3,8 +3,10 @@
 /**************************************************************************/
 /* godot-area: textured area lights (AreaLight3D.area_texture, issue 21): */
 /* the atlas prefilter on the CPU; no atlas and no texture code without a */
-/* textured light, uploads on change only; a white texture equals no      */
-/* texture for every method; LTC and MRP against the Embree reference     */
+/* textured light, uploads on change only; a textured disk, sphere or     */
+/* tube takes no slot and draws untextured (counted, warned); a white     */
+/* texture equals no texture for every method; LTC and MRP against the    */
+/* Embree reference                                                       */
 /* (which integrates the texture exactly); the stochastic method's error  */
 /* falling as N^-1/2 towards it. Tiny images, validation layer on.        */
 
@@ -261,6 +263,56 @@ TEST_CASE("[AreaLight3D][Texture] without a textured light there is no atlas and
 		f.render_gpu(d);
 		CHECK_FALSE(f.light_storage.has_textured_area_lights());
 		CHECK(f.light_storage.get_area_light_data()[0].texture_rect[2] == 0.0f);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+/* Rectangles only */
+
+TEST_CASE("[AreaLight3D][Texture] a textured disk, sphere or tube takes no atlas slot, draws untextured and is counted") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		TextureFixture f;
+		REQUIRE(f.init());
+		const int S = 16;
+		RID tex = f.texture(quadrant_image(16));
+		const AreaLightAtlas &atlas = f.light_storage.get_area_light_atlas();
+		const RS::LightAreaShape shapes[3] = { RS::LIGHT_AREA_SHAPE_DISK, RS::LIGHT_AREA_SHAPE_SPHERE, RS::LIGHT_AREA_SHAPE_TUBE };
+		RID light;
+		RenderSceneData d;
+		for (RS::LightAreaShape shape : shapes) {
+			CAPTURE(int(shape));
+			light = f.area_light(Vector2(0.8f, 0.5f), 2.0f, RS::LIGHT_AREA_SHADING_LTC);
+			f.light_storage.light_area_set_shape(light, shape);
+			d = facing_scene(f, light, 0.4f, 0.0f, S);
+			const std::vector<float> plain = f.render_gpu(d);
+			CHECK(f.light_storage.get_untextured_shape_count() == 0);
+			f.light_storage.light_area_set_texture(light, tex);
+			CHECK(f.light_storage.light_area_get_texture(light) == tex); // Kept by the server, only not drawn.
+			const std::vector<float> textured = f.render_gpu(d);
+			CHECK_FALSE(atlas.is_allocated());
+			CHECK(atlas.get_slot_count() == 0);
+			CHECK(atlas.get_build_count() == 0);
+			CHECK_FALSE(f.light_storage.has_textured_area_lights());
+			CHECK_FALSE(f.renderer.is_area_texture_compiled());
+			CHECK(f.light_storage.get_area_light_data()[0].texture_rect[2] == 0.0f);
+			CHECK(f.light_storage.get_untextured_shape_count() == 1);
+			double peak = 0.0, worst = 0.0;
+			for (size_t i = 0; i < plain.size(); i++) {
+				peak = std::max(peak, double(plain[i]));
+				worst = std::max(worst, std::fabs(double(plain[i]) - textured[i]));
+			}
+			CHECK(peak > 0.01);
+			CHECK(worst == 0.0);
+		}
+		// Back to a rectangle: the same texture gets its slot and is drawn.
+		f.light_storage.light_area_set_shape(light, RS::LIGHT_AREA_SHAPE_RECTANGLE);
+		f.render_gpu(d);
+		CHECK(atlas.get_slot_count() == 1);
+		CHECK(f.light_storage.has_textured_area_lights());
+		CHECK(f.light_storage.get_area_light_data()[0].texture_rect[2] > 0.0f);
+		CHECK(f.light_storage.get_untextured_shape_count() == 0);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }

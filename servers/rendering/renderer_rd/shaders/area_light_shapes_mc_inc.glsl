@@ -11,10 +11,19 @@
 /*          inside the sphere uniform over all directions (Omega = 4 pi); */
 /*   DISK   uniform over the ellipse's area (rho = sqrt(u), phi = 2 pi v; */
 /*          pdf_w = dist^2 / (A cos theta_l), A = pi a b);                */
-/*   TUBE   uniform over the capsule's area (cylinder 2 pi r l, the two   */
-/*          half spheres 4 pi r^2, picked by area); a point whose outward */
-/*          normal faces away from the shading point is hidden by the     */
-/*          convex capsule itself and counts 0.                          */
+/*   TUBE   uniform over the part of the capsule that faces the shading   */
+/*          point p (a convex body: what faces p is what p sees): on the  */
+/*          cylinder the points with (p - q).n > 0 are the arc            */
+/*          |phi - phi_p| < acos(r / rho) around the direction of p from  */
+/*          the axis (rho its distance), at every height: area            */
+/*          2 acos(r / rho) r l; on each end sphere (centre C, D = |p -   */
+/*          C|) the cap cos theta > r / D around p - C: area              */
+/*          2 pi r^2 (1 - r / D), uniform in cos theta. One of the three  */
+/*          is picked by area, so the density is 1 / A_vis over their     */
+/*          union; a cap point on the inner half of its sphere is inside  */
+/*          the cylinder (not the surface) and counts 0. Every sample     */
+/*          lands on the visible side (uniform over the whole capsule,    */
+/*          about half faced away and counted 0).                         */
 /* Specular: N light samples combined with N GGX VNDF samples (balance   */
 /* heuristic, as the rectangle; a BRDF sample counts when its ray's first */
 /* hit is the shape: cone test, disk plane, ray / capsule).               */
@@ -105,8 +114,26 @@ void light_process_area_shape_mc(AreaLightData p_light, uint p_shape, vec3 p_rad
 	vec3 tube_axis = seg > 0.0 ? p_light.half_axis_x / (0.5 * seg) : normalize(cross(p_light.half_axis_y, p_light.normal));
 	vec3 tube_e1 = radius > 0.0 ? p_light.half_axis_y / radius : t1;
 	vec3 tube_e2 = cross(tube_axis, tube_e1);
-	float cyl_area = 2.0 * M_PI * radius * seg;
-	float tube_area = cyl_area + 4.0 * M_PI * radius * radius;
+	// Tube: the part facing the shading point (-c from the centre), see the header.
+	vec3 from_centre = -c;
+	vec3 radial = from_centre - tube_axis * dot(from_centre, tube_axis);
+	float axis_dist = length(radial);
+	vec3 arc_e1 = axis_dist > 0.0 ? radial / axis_dist : tube_e1;
+	vec3 arc_e2 = cross(tube_axis, arc_e1);
+	float arc_half = axis_dist > radius ? acos(radius / axis_dist) : 0.0;
+	float arc_area = 2.0 * arc_half * radius * seg;
+	// End spheres: 0 at +seg/2 along the axis, 1 at -seg/2 (named, not arrays: no indexed local memory).
+	vec3 to_p0 = from_centre - tube_axis * (0.5 * seg);
+	vec3 to_p1 = from_centre + tube_axis * (0.5 * seg);
+	float dist0 = length(to_p0);
+	float dist1 = length(to_p1);
+	vec3 cap_w0 = dist0 > 0.0 ? to_p0 / dist0 : tube_axis;
+	vec3 cap_w1 = dist1 > 0.0 ? to_p1 / dist1 : -tube_axis;
+	float cap_cos0 = dist0 > radius ? radius / dist0 : 1.0;
+	float cap_cos1 = dist1 > radius ? radius / dist1 : 1.0;
+	float cap_area0 = 2.0 * M_PI * radius * radius * (1.0 - cap_cos0);
+	float cap_area1 = 2.0 * M_PI * radius * radius * (1.0 - cap_cos1);
+	float tube_area = arc_area + cap_area0 + cap_area1; // Visible area (0 inside the capsule).
 
 	// Samples: direction l and its solid-angle pdf (0: counts nothing).
 	vec3 diffuse = vec3(0.0);
@@ -140,21 +167,33 @@ void light_process_area_shape_mc(AreaLightData p_light, uint p_shape, vec3 p_rad
 				float pick = area_mc_random2(seed, 3u * i + 2u).x * tube_area;
 				vec3 q;
 				vec3 nq;
-				if (pick < cyl_area) {
-					float phi = 2.0 * M_PI * u.y;
-					nq = tube_e1 * cos(phi) + tube_e2 * sin(phi);
+				bool on_surface = true;
+				if (pick < arc_area) {
+					float phi = (2.0 * u.y - 1.0) * arc_half;
+					nq = arc_e1 * cos(phi) + arc_e2 * sin(phi);
 					q = c + tube_axis * (seg * (u.x - 0.5)) + nq * radius;
 				} else {
-					float z = 1.0 - 2.0 * u.x;
+					bool first = pick < arc_area + cap_area0;
+					vec3 w = first ? cap_w0 : cap_w1;
+					float cap_cos = first ? cap_cos0 : cap_cos1;
+					vec3 b1;
+					vec3 b2;
+					area_shape_basis(w, b1, b2);
+					float z = 1.0 - u.x * (1.0 - cap_cos); // Uniform in cos theta over the cap: uniform area.
 					float phi = 2.0 * M_PI * u.y;
 					float sr = sqrt(max(1.0 - z * z, 0.0));
-					nq = tube_axis * z + tube_e1 * (sr * cos(phi)) + tube_e2 * (sr * sin(phi));
-					q = c + tube_axis * (z >= 0.0 ? 0.5 * seg : -0.5 * seg) + nq * radius;
+					nq = w * z + b1 * (sr * cos(phi)) + b2 * (sr * sin(phi));
+					q = c + tube_axis * (first ? 0.5 * seg : -0.5 * seg) + nq * radius;
+					// Only the outer half of each end sphere is the capsule's surface (the inner half lies
+					// inside the cylinder). Split by the sign along the axis, so that a tube of length 0 (one
+					// sphere, both caps the same) still counts each point once.
+					float along = dot(nq, tube_axis);
+					on_surface = first ? along >= 0.0 : along < 0.0;
 				}
 				float dist2 = dot(q, q);
 				l = q * inversesqrt(max(dist2, 1e-30));
 				float cos_l = -dot(l, nq);
-				pdf = cos_l > 0.0 ? dist2 / (tube_area * cos_l) : 0.0;
+				pdf = on_surface && cos_l > 0.0 && tube_area > 0.0 ? dist2 / (tube_area * cos_l) : 0.0;
 			}
 			if (!(pdf > 0.0)) {
 				continue;
@@ -203,7 +242,7 @@ void light_process_area_shape_mc(AreaLightData p_light, uint p_shape, vec3 p_rad
 				vec3 nh;
 				if (area_mc_ray_capsule(-c, lb, tube_axis, 0.5 * seg, radius, t, nh)) {
 					float cos_h = -dot(lb, nh);
-					pdf_light = cos_h > 0.0 ? t * t / (tube_area * cos_h) : 0.0;
+					pdf_light = cos_h > 0.0 && tube_area > 0.0 ? t * t / (tube_area * cos_h) : 0.0;
 				}
 			}
 			if (!(pdf_light > 0.0)) {

@@ -65,7 +65,7 @@
 
 #ifdef AREA_LIGHT_TEXTURE
 
-layout(set = 0, binding = 4) uniform texture3D area_light_atlas; // AreaLightAtlas: RGBA32F linear, premultiplied; depth = level.
+layout(set = 0, binding = 4) uniform texture3D area_light_atlas; // AreaLightAtlas: RGBA16F linear, premultiplied; depth = level.
 layout(set = 0, binding = 10) uniform sampler area_light_atlas_sampler; // Linear, clamp to edge, no mipmaps.
 
 // k: footprint sigma per unit of plane distance over the light's size (see above).

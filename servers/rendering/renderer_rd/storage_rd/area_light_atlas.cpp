@@ -26,6 +26,45 @@ uint32_t AreaLightAtlas::get_project_size() {
 
 namespace {
 
+// IEEE 754 binary16 of p_value, rounded to nearest even (overflow to infinity, underflow through the
+// subnormals to zero). The atlas stores half floats: the same accuracy against the reference as floats
+// (doc/methods.md section 12) at half the memory.
+uint16_t _to_half(float p_value) {
+	uint32_t x;
+	memcpy(&x, &p_value, sizeof(x));
+	const uint32_t sign = (x >> 16) & 0x8000u;
+	const uint32_t abs_bits = x & 0x7fffffffu;
+	if (abs_bits >= 0x7f800000u) {
+		return uint16_t(sign | 0x7c00u | (abs_bits > 0x7f800000u ? 0x200u : 0u)); // Infinity or NaN.
+	}
+	if (abs_bits >= 0x477ff000u) {
+		return uint16_t(sign | 0x7c00u); // Rounds to above 65504: infinity.
+	}
+	if (abs_bits < 0x38800000u) {
+		// Subnormal half (or zero): the value in units of 2^-24, rounded to nearest even.
+		if (abs_bits < 0x33000000u) {
+			return uint16_t(sign); // Below half of the smallest subnormal.
+		}
+		const uint32_t mantissa = (abs_bits & 0x7fffffu) | 0x800000u;
+		const uint32_t shift = 126u - (abs_bits >> 23); // 14..24 for exponents -15..-25.
+		uint32_t h = mantissa >> shift;
+		const uint32_t rest = mantissa & ((1u << shift) - 1u);
+		const uint32_t half_way = 1u << (shift - 1u);
+		if (rest > half_way || (rest == half_way && (h & 1u))) {
+			h++;
+		}
+		return uint16_t(sign | h);
+	}
+	// Normal: rebias the exponent (127 -> 15), keep 10 mantissa bits, round to nearest even (a carry
+	// into the exponent is the correct result).
+	uint32_t h = ((abs_bits >> 13) - (112u << 10));
+	const uint32_t rest = abs_bits & 0x1fffu;
+	if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) {
+		h++;
+	}
+	return uint16_t(sign | h);
+}
+
 // Resamples p_count rows of p_src (p_src_n texels each, p_stride floats between texels) to p_dst_n texels:
 // a box average of the covered source texels when shrinking, linear interpolation between texel
 // centres (clamped at the ends) when enlarging.
@@ -274,7 +313,7 @@ void AreaLightAtlas::_rebuild_texture() {
 			rd->free(texture);
 		}
 		RD::TextureFormat tf;
-		tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
+		tf.format = RD::DATA_FORMAT_R16G16B16A16_SFLOAT;
 		tf.width = width;
 		tf.height = height;
 		tf.depth = depth;
@@ -292,13 +331,17 @@ void AreaLightAtlas::_rebuild_texture() {
 		sampler = rd->sampler_create(ss);
 	}
 	// Slice z of the atlas holds slice z of every slot, slot `row` at rows [row * C, (row + 1) * C).
-	const size_t slot_slice = size_t(size) * size * 4; // Floats of one slot in one slice.
-	std::vector<uint8_t> bytes(slot_slice * rows * depth * sizeof(float), 0);
-	float *dst = reinterpret_cast<float *>(bytes.data());
+	const size_t slot_slice = size_t(size) * size * 4; // Channels of one slot in one slice.
+	std::vector<uint8_t> bytes(slot_slice * rows * depth * sizeof(uint16_t), 0);
+	uint16_t *dst = reinterpret_cast<uint16_t *>(bytes.data());
 	for (const auto &kv : slots) {
 		ERR_CONTINUE(kv.second.texels.size() != slot_slice * depth);
 		for (uint32_t z = 0; z < depth; z++) {
-			memcpy(dst + (size_t(z) * rows + kv.second.row) * slot_slice, kv.second.texels.data() + size_t(z) * slot_slice, slot_slice * sizeof(float));
+			uint16_t *out = dst + (size_t(z) * rows + kv.second.row) * slot_slice;
+			const float *in = kv.second.texels.data() + size_t(z) * slot_slice;
+			for (size_t i = 0; i < slot_slice; i++) {
+				out[i] = _to_half(in[i]);
+			}
 		}
 	}
 	rd->texture_update(texture, 0, bytes);

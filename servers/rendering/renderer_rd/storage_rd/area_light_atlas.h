@@ -7,11 +7,14 @@
 /* Each texture becomes one SLOT: its linear, alpha-premultiplied colour  */
 /* resampled to C x C texels (C = the project setting SETTING_SIZE) and   */
 /* the prefiltered levels 0..log2(C), each upsampled back to C x C        */
-/* (bilinear) and stored as the depth slices of a 3D texture: slice L is  */
-/* level L. Slots stack vertically (atlas C x rows * C x (log2(C) + 1),   */
-/* rows a power of two, grown on demand). A 3D texture instead of a mip   */
-/* chain: RenderingDevice uploads mip 0 only, and linear filtering along  */
-/* the depth blends two levels in ONE fetch (the shader's cost).          */
+/* (bilinear) and stored (half floats, RGBA16F) as the depth slices of a  */
+/* 3D texture: slice L is level L. Slots stack vertically (atlas C x     */
+/* rows * C x (log2(C) + 1), rows a power of two, grown on demand).       */
+/* Half floats: the same error against the reference as floats, half the */
+/* memory (and no faster on llvmpipe, doc/methods.md section 12).        */
+/* A 3D texture instead of a mip chain: RenderingDevice uploads mip 0     */
+/* only, and linear filtering along the depth blends two levels in ONE    */
+/* fetch (the shader's cost).                                             */
 /*                                                                        */
 /* Prefilter (Heitz, Dupuy, Hill and Neubelt 2016, section 6: the texture */
 /* is prefiltered with Gaussians so a fetch returns the average under the */
@@ -87,7 +90,7 @@ private:
 	uint32_t uploads = 0; // Atlas uploads so far.
 	uint32_t dropped = 0; // Textures of the last update that found no slot.
 	uint32_t warned_dropped = 0;
-	RID texture; // RGBA32F 3D, C x rows * C x (log2(C) + 1).
+	RID texture; // RGBA16F 3D, C x rows * C x (log2(C) + 1).
 	RID sampler; // Linear, clamp to edge, no mipmaps.
 
 	bool _find_free_row(uint32_t &r_row) const;

@@ -9,8 +9,8 @@
 #include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/area_lights/area_method_selector.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
-#include "servers/rendering/storage/material_storage.h"
 #include "servers/rendering/rendering_device.h"
+#include "servers/rendering/storage/material_storage.h"
 
 #include <algorithm>
 #include <cmath>
@@ -302,10 +302,15 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	// area_texture: slots for the textures of the kept lights (built on first use), then their rects. A
 	// scene without textured lights never touches the atlas.
 	area_textured = false;
+	area_untextured_shapes = 0;
 	bool any_texture = false;
 	for (const SortedArea &s : areas) {
 		const Light *light = light_owner.get_or_null(p_lights[s.index].light);
 		if (light && light->area_texture.is_valid()) {
+			if (unpack_area_shape(s.data.shading_method) != RS::LIGHT_AREA_SHAPE_RECTANGLE) {
+				area_untextured_shapes++; // No slot: drawn untextured (texture_rect stays 0), warned below.
+				continue;
+			}
 			if (!any_texture) {
 				area_atlas.begin_update();
 				any_texture = true;
@@ -322,9 +327,15 @@ void LightStorage::update_light_buffers(const std::vector<RenderSceneData::Light
 	}
 	for (SortedArea &s : areas) {
 		const Light *light = light_owner.get_or_null(p_lights[s.index].light);
-		if (light && light->area_texture.is_valid() && area_atlas.get_rect(light->area_texture, s.data.texture_rect)) {
+		if (light && light->area_texture.is_valid() && unpack_area_shape(s.data.shading_method) == RS::LIGHT_AREA_SHAPE_RECTANGLE && area_atlas.get_rect(light->area_texture, s.data.texture_rect)) {
 			area_textured = true;
 		}
+	}
+	if (area_untextured_shapes != warned_untextured_shapes) {
+		if (area_untextured_shapes > 0) {
+			WARN_PRINT(vformat("%u visible area lights have an area_texture but are not rectangles; area_texture applies to rectangles only (as upstream's AreaLight3D), so they are drawn untextured.", area_untextured_shapes));
+		}
+		warned_untextured_shapes = area_untextured_shapes;
 	}
 	for (const SortedArea &s : areas) {
 		area_data.push_back(s.data);

@@ -152,6 +152,10 @@ private:
 	AreaLightAtlas area_atlas;
 	const RendererMaterialStorage *texture_source = nullptr;
 	bool area_textured = false; // Some area light of the last update is textured.
+	// area_texture applies to rectangles only (upstream's only shape): a disk, sphere or tube with a
+	// texture takes no atlas slot and is drawn untextured; counted and warned when the count changes.
+	uint32_t area_untextured_shapes = 0;
+	uint32_t warned_untextured_shapes = 0;
 	// AUTO shading (AreaMethodSelector): receivers of the next update_light_buffers() only (then cleared).
 	const std::vector<RenderSceneData::GeometryInstance> *auto_geometry = nullptr;
 	const RendererMeshStorage *auto_mesh_storage = nullptr;
@@ -210,6 +214,8 @@ public:
 	// True when some area light of the last update_light_buffers() has its texture in the atlas (the renderer
 	// then compiles the texture code and binds the atlas); false for a scene without textured lights.
 	bool has_textured_area_lights() const { return area_textured; }
+	// Visible non-rectangle area lights of the last update whose area_texture was ignored.
+	uint32_t get_untextured_shape_count() const { return area_untextured_shapes; }
 	const AreaLightAtlas &get_area_light_atlas() const { return area_atlas; }
 	uint32_t get_max_lights() const { return max_lights; }
 	// Visible lights (all types) of the last update_light_buffers() beyond the capacity, so not drawn.
