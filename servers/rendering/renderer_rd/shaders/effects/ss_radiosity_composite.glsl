@@ -12,8 +12,9 @@
 /* ambient part scaled by v alone (eq. 29 with k_SSAO = 1, as Godot's     */
 /* SSAO darkens ambient light), k_ISR = ssil_intensity, rho the diffuse   */
 /* albedo and E the upsampled sum F L of eq. 25. Pixels without geometry  */
-/* are left alone. C++: renderer_rd/effects/ss_radiosity_rd.h, mirror     */
-/* SSRadiosityRD::CompositePushConstant.                                  */
+/* are left alone. Variants: USE_SSIL, USE_SSAO (each reads only the     */
+/* targets its terms need). C++: renderer_rd/effects/ss_radiosity_rd.h,   */
+/* mirror SSRadiosityRD::CompositePushConstant.                           */
 
 #[vertex]
 
@@ -40,10 +41,13 @@ params;
 
 layout(set = 0, binding = 0) uniform sampler nearest_sampler;
 layout(set = 0, binding = 1) uniform texture2D depth_texture;
+#ifdef USE_SSIL
 layout(set = 0, binding = 2) uniform texture2D albedo_texture; // Diffuse albedo rho (rgb).
+#endif
+#ifdef USE_SSAO
 layout(set = 0, binding = 3) uniform texture2D ambient_texture; // Ambient part of C (rgb).
-layout(set = 0, binding = 4) uniform texture2D isr_texture; // Coarse, blurred: rgb = sum F L, a = O.
-layout(set = 0, binding = 5) uniform texture2D coarse_normal_depth; // w = linear depth.
+#endif
+layout(set = 0, binding = 4) uniform utexture2D isr_texture; // Coarse, blurred (isr_pack): sum F L, O, normal, depth.
 
 layout(location = 0) out vec4 frag_color;
 
@@ -65,18 +69,22 @@ void main() {
 	vec4 values[4];
 	for (int i = 0; i < 4; i++) {
 		ivec2 q = clamp(taps[i], ivec2(0), icoarse - 1);
-		zs[i] = texelFetch(sampler2D(coarse_normal_depth, nearest_sampler), q, 0).w;
-		values[i] = texelFetch(sampler2D(isr_texture, nearest_sampler), q, 0);
+		uvec4 t = texelFetch(usampler2D(isr_texture, nearest_sampler), q, 0);
+		zs[i] = isr_unpack_depth(t);
+		values[i] = isr_unpack_value(t);
 	}
 	vec4 w = isr_bilateral_weights(f, zs, zp, params.flags.y, params.flags.z);
 	vec4 isr = values[0] * w.x + values[1] * w.y + values[2] * w.z + values[3] * w.w;
 
-	float v = 1.0;
-	if (params.flags.x > 0.0) {
-		v = pow(clamp(1.0 - params.terms.y * isr.a, 0.0, 1.0), params.terms.z);
-	}
-	float fd = clamp(v + 1.0 - params.terms.w, 0.0, 1.0); // Eq. 29: saturate(L_SSAO + 1 - k_SSAO).
-	vec3 rho = texelFetch(sampler2D(albedo_texture, nearest_sampler), fp, 0).rgb;
-	vec3 ambient = texelFetch(sampler2D(ambient_texture, nearest_sampler), fp, 0).rgb;
-	frag_color = vec4(ambient * (v - fd) + params.terms.x * rho * isr.rgb, fd);
+	vec3 added = vec3(0.0);
+	float fd = 1.0;
+#ifdef USE_SSAO
+	float v = pow(clamp(1.0 - params.terms.y * isr.a, 0.0, 1.0), params.terms.z);
+	fd = clamp(v + 1.0 - params.terms.w, 0.0, 1.0); // Eq. 29: saturate(L_SSAO + 1 - k_SSAO).
+	added += texelFetch(sampler2D(ambient_texture, nearest_sampler), fp, 0).rgb * (v - fd);
+#endif
+#ifdef USE_SSIL
+	added += params.terms.x * texelFetch(sampler2D(albedo_texture, nearest_sampler), fp, 0).rgb * isr.rgb;
+#endif
+	frag_color = vec4(added, fd);
 }
