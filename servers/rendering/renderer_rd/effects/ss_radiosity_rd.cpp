@@ -37,9 +37,9 @@ bool SSRadiosityRD::_ensure_shaders() {
 	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	ERR_FAIL_NULL_V_MSG(rd, false, "SSRadiosityRD: no RenderingDevice.");
-	static_assert(PASS_MAX == 7 && COMPOSITE_MAX == 3, "One define per PassVariant.");
+	static_assert(PASS_MAX == 8 && COMPOSITE_MAX == 3, "One define per PassVariant.");
 	const char *terms[COMPOSITE_MAX] = { "#define USE_SSIL\n", "#define USE_SSAO\n", "#define USE_SSIL\n#define USE_SSAO\n" };
-	std::vector<String> defines = { "#define MODE_DOWNSAMPLE\n" };
+	std::vector<String> defines = { "#define MODE_DOWNSAMPLE\n#define DOWNSAMPLE_HALF\n", "#define MODE_DOWNSAMPLE\n" };
 	for (const char *mode : { "#define MODE_ISR\n", "#define MODE_BLUR\n" }) {
 		for (const char *t : terms) {
 			defines.push_back(String(mode) + t);
@@ -103,9 +103,10 @@ static RID _make_texture(RenderingDevice *p_rd, RD::DataFormat p_format, int p_w
 bool SSRadiosityRD::_make_sets(Buffers &r_b) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	using U = RD::Uniform;
+	// Both downsample variants declare the same bindings.
 	r_b.sets[0] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.color), U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.depth),
 												 U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.normal), U(RD::UNIFORM_TYPE_IMAGE, 4, r_b.coarse_gbuffer) },
-			pass_shader.version_get_shader(PASS_DOWNSAMPLE), 0);
+			pass_shader.version_get_shader(PASS_DOWNSAMPLE_HALF), 0);
 	// The ISR variants declare the same bindings: one set serves them all.
 	r_b.sets[1] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.coarse_gbuffer), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[0]) },
 			pass_shader.version_get_shader(PASS_ISR_SSIL), 0);
@@ -212,7 +213,7 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	// Blur and composite variants: only the terms that are on.
 	const int variant = p_frame.ssil ? (p_frame.ssao ? COMPOSITE_SSIL_SSAO : COMPOSITE_SSIL) : COMPOSITE_SSAO;
 	RD::ComputeListID list = rd->compute_list_begin();
-	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_DOWNSAMPLE]);
+	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[p_frame.half_size ? PASS_DOWNSAMPLE_HALF : PASS_DOWNSAMPLE_FULL]);
 	rd->compute_list_bind_uniform_set(list, b.sets[0], 0);
 	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
 	rd->compute_list_dispatch_threads(list, cw, ch, 1);
@@ -225,8 +226,9 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	for (int pass = 0; pass < p_frame.blur_passes; pass++) {
 		for (int axis = 0; axis < 2; axis++) {
 			rd->compute_list_add_barrier(list);
-			pc.blur[0] = axis == 0 ? 1.0f : 0.0f;
-			pc.blur[1] = axis == 0 ? 0.0f : 1.0f;
+			const float stride = float(1 << std::min(pass, 8)); // A trous: 1, 2, 4, ... coarse pixels.
+			pc.blur[0] = axis == 0 ? stride : 0.0f;
+			pc.blur[1] = axis == 0 ? 0.0f : stride;
 			rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_BLUR_SSIL + variant]);
 			rd->compute_list_bind_uniform_set(list, b.sets[2 + 2 * variant + axis], 0); // H: 0 -> 1, V: 1 -> 0.
 			rd->compute_list_set_push_constant(list, &pc, sizeof(pc));

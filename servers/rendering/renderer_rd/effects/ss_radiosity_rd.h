@@ -48,7 +48,8 @@ public:
 	// The ISR step, the blur and the composite come in one variant per CompositeVariant (the terms that
 	// are on), in that order.
 	enum PassVariant {
-		PASS_DOWNSAMPLE,
+		PASS_DOWNSAMPLE_HALF, // half_size: 2x2 blocks.
+		PASS_DOWNSAMPLE_FULL,
 		PASS_ISR_SSIL,
 		PASS_ISR_SSAO,
 		PASS_ISR_SSIL_SSAO,
@@ -65,9 +66,9 @@ public:
 		float proj_depth[4]; // P22, P32, coarse width, coarse height.
 		float ssil[4]; // radius, normal rejection, enabled, max disk radius (coarse pixels).
 		float ssao[4]; // radius, horizon, detail, enabled.
-		float blur[4]; // direction x, y, ssil sharpness, ssao sharpness.
+		float blur[4]; // step x, y (direction times the pass's stride), ssil sharpness, ssao sharpness.
 		uint32_t misc[4]; // sample count, full width, full height, scale.
-		uint32_t pattern[4]; // interleave k, unused x3.
+		uint32_t pattern[4]; // interleave k (FrameSettings::interleave), unused x3.
 	};
 	static_assert(sizeof(PassPushConstant) == 128, "PassPushConstant must match shaders/effects/ss_radiosity.glsl.");
 	static_assert(sizeof(PassPushConstant) % 16 == 0, "PassPushConstant must stay a multiple of 16 bytes.");

@@ -6,12 +6,13 @@
 /* constant mirror SSRadiosityRD::PassPushConstant. Every coarse buffer   */
 /* is RGBA32UI, one texel per tap (isr_pack in ss_radiosity_inc.glsl):    */
 /* a colour, a scalar, the view normal and the linear depth. Variants:    */
-/*   MODE_DOWNSAMPLE: full-resolution colour (the opaque pass's outgoing  */
-/*     radiance L), view normals and depth -> the coarse G-buffer (L, 0,  */
-/*     normal, depth; depth 0: no surface). The seed averages each 2x2    */
-/*     block; averaging depth across a silhouette would invent a surface  */
-/*     between the two, so only the texels within 5 % of the block's      */
-/*     nearest depth are averaged.                                        */
+/*   MODE_DOWNSAMPLE (+ DOWNSAMPLE_HALF for half_size): full-resolution  */
+/*     colour (the opaque pass's outgoing radiance L), view normals and   */
+/*     depth -> the coarse G-buffer (L, 0, normal, depth; depth 0: no     */
+/*     surface). The seed averages each 2x2 block (read in gathers);      */
+/*     averaging depth across a silhouette would invent a surface between */
+/*     the two, so only the texels within 5 % of the block's nearest      */
+/*     depth are averaged.                                                */
 /*   MODE_ISR: per coarse pixel, samples of an N-sample golden-angle      */
 /*     spiral (rotated per k x k block, isr_pixel_noise; interleaved:     */
 /*     each pixel of the block takes every k^2-th sample) inside the      */
@@ -19,10 +20,11 @@
 /*     sample is a patch of S / N pixels (S = disk area): indirect light  */
 /*     from eqs. 6 and 25, occlusion from eq. 26. Out: sum F L (rho       */
 /*     applied later), the occlusion sum, the pixel's normal and depth.   */
-/*   MODE_BLUR: one direction of the separable depth-aware Gaussian blur  */
-/*     (§4.2), which also gathers the interleaved samples of a block:     */
-/*     taps off the centre's tangent plane are rejected, by               */
-/*     ssil_sharpness for the light and ssao_sharpness for the occlusion. */
+/*   MODE_BLUR: one direction of the separable depth-aware blur (§4.2),   */
+/*     5 B3-spline taps at stride 1, 2, 4 ... per pass (à trous), which   */
+/*     also gathers the interleaved samples of a block: taps off the      */
+/*     centre's tangent plane are rejected, by ssil_sharpness for the     */
+/*     light and ssao_sharpness for the occlusion.                        */
 
 #[compute]
 
@@ -39,7 +41,7 @@ layout(push_constant, std430) uniform Params {
 	vec4 proj_depth; // P22, P32, coarse width, coarse height.
 	vec4 ssil; // radius (m), normal rejection, enabled (0/1), max disk radius (coarse pixels).
 	vec4 ssao; // radius (m), horizon, detail, enabled (0/1).
-	vec4 blur; // direction x, y; ssil sharpness, ssao sharpness.
+	vec4 blur; // step x, y (coarse pixels: the direction times the pass's stride); ssil sharpness, ssao sharpness.
 	uvec4 misc; // sample count, full width, full height, full / coarse scale (1 or 2).
 	uvec4 pattern; // interleave k (k x k pixels share the N-sample pattern), unused x3.
 }
@@ -58,37 +60,32 @@ void main() {
 	if (any(greaterThanEqual(c, coarse_size))) {
 		return;
 	}
-	int scale = int(params.misc.w);
-	ivec2 full_size = ivec2(params.misc.yz);
-	float depths[4];
-	float nearest = 1e30;
-	for (int i = 0; i < scale * scale; i++) {
-		ivec2 f = min(c * scale + ivec2(i % scale, i / scale), full_size - 1);
-		float z = texelFetch(sampler2D(depth_texture, nearest_sampler), f, 0).r;
-		depths[i] = z < 1.0 ? isr_linear_depth(z, params.proj_depth.x, params.proj_depth.y, params.proj_zw.z, params.proj_zw.w) : 0.0;
-		if (depths[i] > 0.0) {
-			nearest = min(nearest, depths[i]);
-		}
-	}
+	// The 2x2 block (one texel with scale 1), one gather per channel, texels ordered as textureGather returns
+	// them: (0, 1), (1, 1), (1, 0), (0, 0) (the clamp-to-edge sampler repeats the last row and column).
+	vec2 full_size = vec2(params.misc.yz);
+#ifdef DOWNSAMPLE_HALF
+	vec2 uv = (vec2(c) * 2.0 + 1.0) / full_size; // The block's centre: the four texels around it.
+#define ISR_GATHER(m_tex, m_comp) textureGather(sampler2D(m_tex, nearest_sampler), uv, m_comp)
+#else // Full size: the pixel's own texel, as the four.
+#define ISR_GATHER(m_tex, m_comp) vec4(texelFetch(sampler2D(m_tex, nearest_sampler), c, 0)[m_comp])
+#endif
+	vec4 z = ISR_GATHER(depth_texture, 0);
+	// isr_linear_depth on the four; 0 where no surface (depth 1).
+	vec4 d = -(vec4(params.proj_depth.y) - z * params.proj_zw.w) / (z * params.proj_zw.z - vec4(params.proj_depth.x));
+	d = mix(vec4(0.0), d, lessThan(z, vec4(1.0)));
+	vec4 d_valid = mix(vec4(1e30), d, greaterThan(d, vec4(0.0)));
+	float nearest = min(min(d_valid.x, d_valid.y), min(d_valid.z, d_valid.w));
+	vec4 sel = vec4(lessThanEqual(d_valid, vec4(nearest * 1.05)));
 	vec3 radiance = vec3(0.0);
 	vec3 normal = vec3(0.0, 0.0, 1.0);
 	float depth = 0.0;
-	float count = 0.0;
 	if (nearest < 1e30) {
-		normal = vec3(0.0);
-		for (int i = 0; i < scale * scale; i++) {
-			if (depths[i] > 0.0 && depths[i] <= nearest * 1.05) {
-				ivec2 f = min(c * scale + ivec2(i % scale, i / scale), full_size - 1);
-				radiance += texelFetch(sampler2D(color_texture, nearest_sampler), f, 0).rgb;
-				normal += texelFetch(sampler2D(normal_texture, nearest_sampler), f, 0).xyz;
-				depth += depths[i];
-				count += 1.0;
-			}
-		}
-		radiance /= count;
-		depth /= count;
-		float l = length(normal);
-		normal = l > 0.0 ? normal / l : vec3(0.0, 0.0, 1.0);
+		float inv_count = 1.0 / dot(sel, vec4(1.0));
+		radiance = vec3(dot(ISR_GATHER(color_texture, 0), sel), dot(ISR_GATHER(color_texture, 1), sel), dot(ISR_GATHER(color_texture, 2), sel)) * inv_count;
+		vec3 nsum = vec3(dot(ISR_GATHER(normal_texture, 0), sel), dot(ISR_GATHER(normal_texture, 1), sel), dot(ISR_GATHER(normal_texture, 2), sel));
+		depth = dot(d_valid * sel, vec4(1.0)) * inv_count;
+		float l = length(nsum);
+		normal = l > 0.0 ? nsum / l : vec3(0.0, 0.0, 1.0);
 	}
 	imageStore(coarse_gbuffer, c, isr_pack(radiance, 0.0, normal, depth));
 }
@@ -135,6 +132,11 @@ void main() {
 	float inv_n = 1.0 / float(n);
 	float rotation = 2.0 * ISR_PI * isr_pixel_noise(vec2(c / int(k)));
 	const float golden_angle = 2.39996323; // pi (3 - sqrt 5).
+	// The pixel's samples i = slot + j k^2 lie at angles slot * golden_angle + rotation + j * (k^2 golden_angle):
+	// the unit direction turns by a fixed step per sample (one complex product instead of a cos and a sin).
+	float a0 = float(slot) * golden_angle + rotation;
+	vec2 unit = vec2(cos(a0), sin(a0));
+	vec2 turn = vec2(cos(float(kk) * golden_angle), sin(float(kk) * golden_angle));
 
 	vec3 bounce = vec3(0.0);
 	float occlusion = 0.0;
@@ -148,8 +150,8 @@ void main() {
 	for (uint j = 0u; j < m; j++) {
 		uint i = slot + j * kk;
 		float t = (float(i) + 0.5) * inv_n;
-		float a = float(i) * golden_angle + rotation;
-		vec2 dir = vec2(cos(a), sin(a)) * sqrt(t);
+		vec2 dir = unit * sqrt(t);
+		unit = vec2(unit.x * turn.x - unit.y * turn.y, unit.x * turn.y + unit.y * turn.x);
 #ifdef USE_SSIL
 		{
 			ivec2 q = ivec2(floor(vec2(c) + 0.5 + dir * r_il));
@@ -229,9 +231,14 @@ void main() {
 	float sum_a = 0.0;
 	float w_a = 0.0;
 #endif
-	// 7 taps, Gaussian sigma = 2 coarse pixels.
-	for (int k = -3; k <= 3; k++) {
+	// 5 B3-spline taps (1, 4, 6, 4, 1) / 16 at the pass's stride (à trous: 1, 2, 4, ... coarse pixels;
+	// Dammertz et al. 2010, "Edge-Avoiding A-Trous Wavelet Transform for fast Global Illumination
+	// Filtering"): two passes cover +-6 pixels with 20 taps and cancel the period-2 and period-4
+	// patterns of the interleaved samples exactly on flat surfaces.
+	const float taps[5] = float[](0.0625, 0.25, 0.375, 0.25, 0.0625);
+	for (int k = -2; k <= 2; k++) {
 		ivec2 q = clamp(c + step_dir * k, ivec2(0), isize - 1);
+		float g = taps[k + 2];
 		uvec4 t = texelFetch(usampler2D(isr_in, nearest_sampler), q, 0);
 		float d_q = isr_unpack_depth(t);
 		if (d_q <= 0.0) {
@@ -242,7 +249,6 @@ void main() {
 		vec2 ndc_q = (vec2(q) + 0.5) / size * 2.0 - 1.0;
 		vec3 x = vec3((ndc_q * w - params.proj_xy.zw * z - params.proj_zw.xy) * inv_p, z);
 		float plane = abs(dot(n_p, x - p));
-		float g = exp(-float(k * k) / 8.0);
 		vec4 v = isr_unpack_value(t);
 #ifdef USE_SSIL
 		float wi = g * exp(-plane * inv_tol_il) * max(dot(n_p, isr_unpack_normal(t)), 0.0);

@@ -59,22 +59,21 @@ void main() {
 	}
 	float zp = isr_linear_depth(z, params.proj_depth.x, params.proj_depth.y, params.proj_depth.z, params.proj_depth.w);
 	vec2 coarse = params.sizes.zw;
-	ivec2 icoarse = ivec2(coarse);
 	vec2 cpos = (vec2(fp) + 0.5) * coarse / params.sizes.xy - 0.5;
 	vec2 base = floor(cpos);
 	vec2 f = cpos - base;
-	ivec2 b = ivec2(base);
-	ivec2 taps[4] = ivec2[](b, b + ivec2(1, 0), b + ivec2(0, 1), b + ivec2(1, 1));
-	vec4 zs;
-	vec4 values[4];
-	for (int i = 0; i < 4; i++) {
-		ivec2 q = clamp(taps[i], ivec2(0), icoarse - 1);
-		uvec4 t = texelFetch(usampler2D(isr_texture, nearest_sampler), q, 0);
-		zs[i] = isr_unpack_depth(t);
-		values[i] = isr_unpack_value(t);
-	}
+	// The 2x2 coarse texels around the pixel in gathers (one per packed word used), reordered from
+	// textureGather's (0, 1), (1, 1), (1, 0), (0, 0) to (0, 0), (1, 0), (0, 1), (1, 1); the clamp-to-edge
+	// sampler repeats the border texels.
+	vec2 uv = (base + 1.0) / coarse;
+	vec4 zs = uintBitsToFloat(textureGather(usampler2D(isr_texture, nearest_sampler), uv, 3).wzxy);
+	uvec4 rg = textureGather(usampler2D(isr_texture, nearest_sampler), uv, 0).wzxy;
+	uvec4 ba = textureGather(usampler2D(isr_texture, nearest_sampler), uv, 1).wzxy;
 	vec4 w = isr_bilateral_weights(f, zs, zp, params.flags.y, params.flags.z);
-	vec4 isr = values[0] * w.x + values[1] * w.y + values[2] * w.z + values[3] * w.w;
+	vec4 isr = vec4(0.0);
+	for (int i = 0; i < 4; i++) {
+		isr += vec4(unpackHalf2x16(rg[i]), unpackHalf2x16(ba[i])) * w[i];
+	}
 
 	vec3 added = vec3(0.0);
 	float fd = 1.0;
