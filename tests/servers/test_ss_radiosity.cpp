@@ -452,6 +452,37 @@ TEST_CASE("[SSRadiosity][Render] a static camera gives bit-identical frames with
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 
+TEST_CASE("[SSRadiosity][Render] SSAO alone darkens the ambient light and adds none") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		GpuScene g;
+		REQUIRE(g.init(IsrScene::make_room(IsrScene::ROOM_CORNELL), 0, 64, 48));
+		g.d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_COLOR;
+		g.d.environment.ambient_color = Color(0.3f, 0.3f, 0.3f, 1);
+		g.d.environment.ambient_energy = 1.0f;
+		const std::vector<float> plain = g.render();
+		g.d.environment.ss_lighting.ssao_enabled = true;
+		const std::vector<float> ao = g.render();
+		REQUIRE(plain.size() == ao.size());
+		REQUIRE(g.f.renderer.get_ss_radiosity().get_last_pass_count() == 7u);
+		double darker = 0.0;
+		int brighter = 0, non_finite = 0;
+		for (size_t i = 0; i < ao.size(); i += 4) {
+			for (int c = 0; c < 3; c++) {
+				non_finite += std::isfinite(ao[i + c]) ? 0 : 1;
+				brighter += ao[i + c] > plain[i + c] * 1.0001f + 1e-6f ? 1 : 0;
+				darker += double(plain[i + c]) - double(ao[i + c]);
+			}
+		}
+		MESSAGE(vformat("SSAO alone: mean darkening %.5f per channel, %d channels brighter", darker / (ao.size() / 4 * 3), brighter));
+		CHECK(non_finite == 0);
+		CHECK(brighter == 0);
+		CHECK(darker > 0.0);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
 // Mean of (a - b) over the rectangle [x0, x1) x [y0, y1), per channel.
 static Color _mean_difference(const std::vector<float> &p_a, const std::vector<float> &p_b, int p_w, int p_x0, int p_y0, int p_x1, int p_y1) {
 	double s[3] = { 0, 0, 0 };
