@@ -13,17 +13,18 @@
 /* from the depth pre-pass (linear depth is derived from it, §4.3).       */
 /* Passes (Listing 3), after the opaque pass, timestamp "ss_radiosity":   */
 /*   downsample -> ISR (eqs. 6, 25, 26; interleaved over k x k pixels)    */
-/*   -> blur x blur_passes (H + V) -> composite (bilateral upsampling     */
-/*   eqs. 27-28, eq. 29).                                                 */
+/*   -> blur x blur_passes (H + V, a trous) -> composite (bilateral       */
+/*   upsampling eqs. 27-28, eq. 29).                                      */
 /* Coarse resolution: half of each axis with half_size (Godot's default), */
-/* else full. Samples per pixel from the quality level                    */
-/* (RS::get_ss_radiosity_sample_count: 12/24/48/80/128).                  */
+/* else full. Samples per coarse pixel from the quality level             */
+/* (RS::get_ss_radiosity_sample_count: 12/24/48/80/128), interleaved      */
+/* over k x k pixels (get_interleave).                                    */
 /*                                                                        */
-/* Nothing exists before the first view with SSIL or SSAO enabled: no    */
-/* shader, pipeline, texture or set (has_resources()); a view without    */
+/* Nothing exists before the first view with SSIL or SSAO enabled: no     */
+/* shader, pipeline, texture or set (has_resources()); a view without     */
 /* either records no pass. Per-render-target textures are freed with the  */
 /* target (release_owner).                                                */
-/* Shaders: shaders/effects/ss_radiosity*.glsl (terms in                 */
+/* Shaders: shaders/effects/ss_radiosity*.glsl (terms in                  */
 /* ss_radiosity_inc.glsl).                                                */
 
 #pragma once

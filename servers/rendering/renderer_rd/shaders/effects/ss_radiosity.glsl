@@ -6,7 +6,7 @@
 /* constant mirror SSRadiosityRD::PassPushConstant. Every coarse buffer   */
 /* is RGBA32UI, one texel per tap (isr_pack in ss_radiosity_inc.glsl):    */
 /* a colour, a scalar, the view normal and the linear depth. Variants:    */
-/*   MODE_DOWNSAMPLE (+ DOWNSAMPLE_HALF for half_size): full-resolution  */
+/*   MODE_DOWNSAMPLE (+ DOWNSAMPLE_HALF for half_size): full-resolution   */
 /*     colour (the opaque pass's outgoing radiance L), view normals and   */
 /*     depth -> the coarse G-buffer (L, 0, normal, depth; depth 0: no     */
 /*     surface). The seed averages each 2x2 block (read in gathers);      */

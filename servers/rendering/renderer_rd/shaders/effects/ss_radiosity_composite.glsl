@@ -12,7 +12,7 @@
 /* ambient part scaled by v alone (eq. 29 with k_SSAO = 1, as Godot's     */
 /* SSAO darkens ambient light), k_ISR = ssil_intensity, rho the diffuse   */
 /* albedo and E the upsampled sum F L of eq. 25. Pixels without geometry  */
-/* are left alone. Variants: USE_SSIL, USE_SSAO (each reads only the     */
+/* are left alone. Variants: USE_SSIL, USE_SSAO (each reads only the      */
 /* targets its terms need). C++: renderer_rd/effects/ss_radiosity_rd.h,   */
 /* mirror SSRadiosityRD::CompositePushConstant.                           */
 
