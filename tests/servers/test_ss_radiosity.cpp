@@ -44,6 +44,11 @@ void main() {
 		r.xyz = isr_view_position(k.a.xy, k.a.z, k.b, k.c);
 	} else if (mode == 5u) { // isr_linear_depth(depth = a.x, P22 = b.x, P32 = b.y, P23 = b.z, P33 = b.w)
 		r.x = isr_linear_depth(k.a.x, k.b.x, k.b.y, k.b.z, k.b.w);
+	} else if (mode == 6u) { // isr_pack(rgb = a.xyz, a = a.w, normal = b.xyz, depth = b.w): out = unpacked normal, depth
+		uvec4 t = isr_pack(k.a.xyz, k.a.w, k.b.xyz, k.b.w);
+		r = vec4(isr_unpack_normal(t), isr_unpack_depth(t));
+	} else if (mode == 7u) { // the same: out = unpacked value
+		r = isr_unpack_value(isr_pack(k.a.xyz, k.a.w, k.b.xyz, k.b.w));
 	}
 	out_buf.values[i] = r;
 }
@@ -314,6 +319,84 @@ struct GpuScene {
 	}
 };
 
+TEST_CASE("[SSRadiosity] a packed coarse texel keeps the value to half precision, the normal to 1e-4 and the depth exactly") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	// Normals over all octants (the octahedral fold for z < 0 included), the poles and an axis.
+	const float normals[][3] = { { 0, 0, 1 }, { 0, 0, -1 }, { 1, 0, 0 }, { 0, -1, 0 }, { 0.48f, 0.6f, 0.64f }, { -0.48f, 0.6f, -0.64f }, { 0.6f, -0.48f, -0.64f }, { -0.36f, -0.48f, 0.8f }, { 0.0f, 0.6f, -0.8f } };
+	std::vector<TermCase> cases;
+	for (const float *n : normals) {
+		TermCase k;
+		_set(k.a, 0.1234f, 3.5f, 1000.0f, 0.0625f);
+		_set(k.b, n[0], n[1], n[2], 17.318f);
+		k.d[3] = 6;
+		cases.push_back(k);
+		k.d[3] = 7;
+		cases.push_back(k);
+	}
+	const std::vector<float> v = _run_terms(rd, cases);
+	REQUIRE(v.size() == cases.size() * 4);
+	double worst_normal = 0.0;
+	for (size_t i = 0; i < cases.size(); i += 2) {
+		const float *n = cases[i].b;
+		const float *g = &v[i * 4];
+		worst_normal = std::max(worst_normal, double(std::sqrt((g[0] - n[0]) * (g[0] - n[0]) + (g[1] - n[1]) * (g[1] - n[1]) + (g[2] - n[2]) * (g[2] - n[2]))));
+		CHECK(g[3] == 17.318f); // The depth is stored as a float: exact.
+		const float *val = &v[(i + 1) * 4];
+		const float in[4] = { 0.1234f, 3.5f, 1000.0f, 0.0625f };
+		for (int c = 0; c < 4; c++) {
+			CHECK(std::fabs(val[c] - in[c]) <= in[c] / 1024.0f); // Half floats: 11 significant bits.
+		}
+	}
+	MESSAGE(vformat("packed normal: worst error %.2e", worst_normal));
+	CHECK(worst_normal < 1e-4);
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[SSRadiosity] interleaved sampling: k x k pixels share the pattern, every pixel keeps at least one sample") {
+	// k = min(4, floor(sqrt(N))) for Godot's 12 / 24 / 48 / 80 / 128 samples and small counts.
+	CHECK(SSRadiosityRD::get_interleave(1) == 1u);
+	CHECK(SSRadiosityRD::get_interleave(3) == 1u);
+	CHECK(SSRadiosityRD::get_interleave(4) == 2u);
+	CHECK(SSRadiosityRD::get_interleave(12) == 3u);
+	CHECK(SSRadiosityRD::get_interleave(24) == 4u);
+	CHECK(SSRadiosityRD::get_interleave(48) == 4u);
+	CHECK(SSRadiosityRD::get_interleave(128) == 4u);
+	for (int q = RS::ENV_SSIL_QUALITY_VERY_LOW; q <= RS::ENV_SSIL_QUALITY_ULTRA; q++) {
+		ScreenSpaceLightingSettings s;
+		s.ssil_enabled = true;
+		s.ssil_quality = q;
+		const SSRadiosityRD::FrameSettings f = SSRadiosityRD::get_frame_settings(s);
+		CHECK(f.interleave * f.interleave <= f.sample_count);
+	}
+}
+
+TEST_CASE("[SSRadiosity][Render] full-size SSIL (half_size off) adds the light of the half-size pass") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	const int W = 64, H = 48;
+	const IsrScene room = IsrScene::make_room(IsrScene::ROOM_WHITE);
+	IsrImages half, full;
+	String error;
+	ScreenSpaceLightingSettings s = IsrSweep::default_settings();
+	REQUIRE_MESSAGE(IsrSweep::render_gpu(room, 0, W, H, s, half, &error), error);
+	s.ssil_half_size = false;
+	REQUIRE_MESSAGE(IsrSweep::render_gpu(room, 0, W, H, s, full, &error), error);
+	double add_half = 0.0, add_full = 0.0;
+	int non_finite = 0;
+	for (size_t i = 0; i < full.isr.size(); i += 4) {
+		add_half += double(half.isr[i]) - double(half.direct[i]);
+		add_full += double(full.isr[i]) - double(full.direct[i]);
+		non_finite += std::isfinite(full.isr[i]) ? 0 : 1;
+	}
+	MESSAGE(vformat("white room %dx%d, red channel added: half size %.5f, full size %.5f per pixel", W, H, add_half / (W * H), add_full / (W * H)));
+	CHECK(non_finite == 0);
+	CHECK(add_half > 0.0);
+	// The same estimate at twice the resolution: within 15 % (the pattern and the blur footprint differ).
+	CHECK(std::fabs(add_full - add_half) < 0.15 * add_half);
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
 TEST_CASE("[SSRadiosity][Render] a view without SSIL or SSAO builds no pass, texture, shader or pipeline") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
@@ -365,6 +448,37 @@ TEST_CASE("[SSRadiosity][Render] a static camera gives bit-identical frames with
 			non_finite += std::isfinite(x) ? 0 : 1;
 		}
 		CHECK(non_finite == 0);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[SSRadiosity][Render] SSAO alone darkens the ambient light and adds none") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		GpuScene g;
+		REQUIRE(g.init(IsrScene::make_room(IsrScene::ROOM_CORNELL), 0, 64, 48));
+		g.d.environment.ambient_source = RS::ENV_AMBIENT_SOURCE_COLOR;
+		g.d.environment.ambient_color = Color(0.3f, 0.3f, 0.3f, 1);
+		g.d.environment.ambient_energy = 1.0f;
+		const std::vector<float> plain = g.render();
+		g.d.environment.ss_lighting.ssao_enabled = true;
+		const std::vector<float> ao = g.render();
+		REQUIRE(plain.size() == ao.size());
+		REQUIRE(g.f.renderer.get_ss_radiosity().get_last_pass_count() == 7u);
+		double darker = 0.0;
+		int brighter = 0, non_finite = 0;
+		for (size_t i = 0; i < ao.size(); i += 4) {
+			for (int c = 0; c < 3; c++) {
+				non_finite += std::isfinite(ao[i + c]) ? 0 : 1;
+				brighter += ao[i + c] > plain[i + c] * 1.0001f + 1e-6f ? 1 : 0;
+				darker += double(plain[i + c]) - double(ao[i + c]);
+			}
+		}
+		MESSAGE(vformat("SSAO alone: mean darkening %.5f per channel, %d channels brighter", darker / (ao.size() / 4 * 3), brighter));
+		CHECK(non_finite == 0);
+		CHECK(brighter == 0);
+		CHECK(darker > 0.0);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }

@@ -19,7 +19,16 @@ SSRadiosityRD::FrameSettings SSRadiosityRD::get_frame_settings(const ScreenSpace
 	f.sample_count = uint32_t(RS::get_ss_radiosity_sample_count(quality));
 	f.half_size = f.ssil ? p_settings.ssil_half_size : p_settings.ssao_half_size;
 	f.blur_passes = f.ssil ? p_settings.ssil_blur_passes : p_settings.ssao_blur_passes;
+	f.interleave = get_interleave(f.sample_count);
 	return f;
+}
+
+uint32_t SSRadiosityRD::get_interleave(uint32_t p_sample_count) {
+	uint32_t k = 1;
+	while (k < MAX_INTERLEAVE && (k + 1) * (k + 1) <= p_sample_count) {
+		k++;
+	}
+	return k;
 }
 
 bool SSRadiosityRD::_ensure_shaders() {
@@ -28,8 +37,15 @@ bool SSRadiosityRD::_ensure_shaders() {
 	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	ERR_FAIL_NULL_V_MSG(rd, false, "SSRadiosityRD: no RenderingDevice.");
-	static_assert(PASS_MAX == 3, "One define per PassVariant.");
-	ERR_FAIL_COND_V_MSG(!pass_shader.initialize("effects/ss_radiosity.glsl", { "#define MODE_DOWNSAMPLE\n", "#define MODE_ISR\n", "#define MODE_BLUR\n" }), false,
+	static_assert(PASS_MAX == 8 && COMPOSITE_MAX == 3, "One define per PassVariant.");
+	const char *terms[COMPOSITE_MAX] = { "#define USE_SSIL\n", "#define USE_SSAO\n", "#define USE_SSIL\n#define USE_SSAO\n" };
+	std::vector<String> defines = { "#define MODE_DOWNSAMPLE\n#define DOWNSAMPLE_HALF\n", "#define MODE_DOWNSAMPLE\n" };
+	for (const char *mode : { "#define MODE_ISR\n", "#define MODE_BLUR\n" }) {
+		for (const char *t : terms) {
+			defines.push_back(String(mode) + t);
+		}
+	}
+	ERR_FAIL_COND_V_MSG(!pass_shader.initialize("effects/ss_radiosity.glsl", defines), false,
 			"SSRadiosityRD: cannot load shaders/effects/ss_radiosity.glsl.");
 	for (int v = 0; v < PASS_MAX; v++) {
 		RID shader = pass_shader.version_get_shader(v);
@@ -37,8 +53,11 @@ bool SSRadiosityRD::_ensure_shaders() {
 		pass_pipelines[v] = rd->compute_pipeline_create(shader);
 		ERR_FAIL_COND_V_MSG(!pass_pipelines[v].is_valid(), false, "SSRadiosityRD: compute pipeline creation failed.");
 	}
-	ERR_FAIL_COND_V_MSG(!composite_shader.initialize("effects/ss_radiosity_composite.glsl", { "" }), false, "SSRadiosityRD: cannot load shaders/effects/ss_radiosity_composite.glsl.");
-	ERR_FAIL_COND_V_MSG(!composite_shader.version_get_shader(0).is_valid(), false, "SSRadiosityRD: ss_radiosity_composite.glsl failed to compile: " + composite_shader.get_last_error());
+	ERR_FAIL_COND_V_MSG(!composite_shader.initialize("effects/ss_radiosity_composite.glsl", { terms[0], terms[1], terms[2] }), false,
+			"SSRadiosityRD: cannot load shaders/effects/ss_radiosity_composite.glsl.");
+	for (int v = 0; v < COMPOSITE_MAX; v++) {
+		ERR_FAIL_COND_V_MSG(!composite_shader.version_get_shader(v).is_valid(), false, vformat("SSRadiosityRD: ss_radiosity_composite.glsl variant %d failed to compile: %s", v, composite_shader.get_last_error().c_str()));
+	}
 	RD::SamplerState ss; // Nearest, clamp: every read is a texelFetch.
 	sampler = rd->sampler_create(ss);
 	vertex_format = rd->vertex_format_create({});
@@ -52,7 +71,7 @@ void SSRadiosityRD::_free_buffers(Buffers &r_b) {
 		return;
 	}
 	// Freeing a texture frees the framebuffers and uniform sets made with it.
-	for (RID *t : { &r_b.normal, &r_b.albedo, &r_b.ambient, &r_b.coarse_radiance, &r_b.coarse_normal_depth, &r_b.isr[0], &r_b.isr[1] }) {
+	for (RID *t : { &r_b.normal, &r_b.albedo, &r_b.ambient, &r_b.coarse_gbuffer, &r_b.isr[0], &r_b.isr[1] }) {
 		if (t->is_valid()) {
 			rd->free(*t);
 			*t = RID();
@@ -84,20 +103,29 @@ static RID _make_texture(RenderingDevice *p_rd, RD::DataFormat p_format, int p_w
 bool SSRadiosityRD::_make_sets(Buffers &r_b) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	using U = RD::Uniform;
+	// Both downsample variants declare the same bindings.
 	r_b.sets[0] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.color), U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.depth),
-												 U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.normal), U(RD::UNIFORM_TYPE_IMAGE, 4, r_b.coarse_radiance), U(RD::UNIFORM_TYPE_IMAGE, 5, r_b.coarse_normal_depth) },
-			pass_shader.version_get_shader(PASS_DOWNSAMPLE), 0);
-	r_b.sets[1] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.coarse_radiance), U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.coarse_normal_depth),
-												 U(RD::UNIFORM_TYPE_IMAGE, 3, r_b.isr[0]) },
-			pass_shader.version_get_shader(PASS_ISR), 0);
-	for (int i = 0; i < 2; i++) {
-		r_b.sets[2 + i] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.isr[i]), U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.coarse_normal_depth),
-														 U(RD::UNIFORM_TYPE_IMAGE, 3, r_b.isr[1 - i]) },
-				pass_shader.version_get_shader(PASS_BLUR), 0);
+												 U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.normal), U(RD::UNIFORM_TYPE_IMAGE, 4, r_b.coarse_gbuffer) },
+			pass_shader.version_get_shader(PASS_DOWNSAMPLE_HALF), 0);
+	// The ISR variants declare the same bindings: one set serves them all.
+	r_b.sets[1] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.coarse_gbuffer), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[0]) },
+			pass_shader.version_get_shader(PASS_ISR_SSIL), 0);
+	for (int v = 0; v < COMPOSITE_MAX; v++) {
+		for (int i = 0; i < 2; i++) {
+			r_b.sets[2 + 2 * v + i] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.isr[i]), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[1 - i]) },
+					pass_shader.version_get_shader(PASS_BLUR_SSIL + v), 0);
+		}
 	}
-	r_b.sets[4] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.depth), U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.albedo),
-												 U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.ambient), U(RD::UNIFORM_TYPE_TEXTURE, 4, r_b.isr[0]), U(RD::UNIFORM_TYPE_TEXTURE, 5, r_b.coarse_normal_depth) },
-			composite_shader.version_get_shader(0), 0);
+	for (int v = 0; v < COMPOSITE_MAX; v++) {
+		std::vector<U> u = { U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.depth), U(RD::UNIFORM_TYPE_TEXTURE, 4, r_b.isr[0]) };
+		if (v != COMPOSITE_SSAO) {
+			u.push_back(U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.albedo));
+		}
+		if (v != COMPOSITE_SSIL) {
+			u.push_back(U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.ambient));
+		}
+		r_b.sets[2 + 2 * COMPOSITE_MAX + v] = rd->uniform_set_create(u, composite_shader.version_get_shader(v), 0);
+	}
 	for (RID s : r_b.sets) {
 		ERR_FAIL_COND_V_MSG(!s.is_valid(), false, "SSRadiosityRD: uniform set creation failed.");
 	}
@@ -129,11 +157,10 @@ RID SSRadiosityRD::prepare(RID p_owner, RID p_color, RID p_depth, int p_width, i
 	b.normal = _make_texture(rd, GBUFFER_FORMAT, p_width, p_height, attachment, "SSRadiosityRD normal");
 	b.albedo = _make_texture(rd, GBUFFER_FORMAT, p_width, p_height, attachment, "SSRadiosityRD albedo");
 	b.ambient = _make_texture(rd, GBUFFER_FORMAT, p_width, p_height, attachment, "SSRadiosityRD ambient");
-	b.coarse_radiance = _make_texture(rd, RD::DATA_FORMAT_R16G16B16A16_SFLOAT, cw, ch, storage, "SSRadiosityRD coarse radiance");
-	b.coarse_normal_depth = _make_texture(rd, RD::DATA_FORMAT_R32G32B32A32_SFLOAT, cw, ch, storage, "SSRadiosityRD coarse normal depth");
-	b.isr[0] = _make_texture(rd, RD::DATA_FORMAT_R16G16B16A16_SFLOAT, cw, ch, storage, "SSRadiosityRD ISR 0");
-	b.isr[1] = _make_texture(rd, RD::DATA_FORMAT_R16G16B16A16_SFLOAT, cw, ch, storage, "SSRadiosityRD ISR 1");
-	ERR_FAIL_COND_V_MSG(!b.normal.is_valid() || !b.albedo.is_valid() || !b.ambient.is_valid() || !b.coarse_radiance.is_valid() || !b.coarse_normal_depth.is_valid() || !b.isr[0].is_valid() || !b.isr[1].is_valid(),
+	b.coarse_gbuffer = _make_texture(rd, COARSE_FORMAT, cw, ch, storage, "SSRadiosityRD coarse G-buffer");
+	b.isr[0] = _make_texture(rd, COARSE_FORMAT, cw, ch, storage, "SSRadiosityRD ISR 0");
+	b.isr[1] = _make_texture(rd, COARSE_FORMAT, cw, ch, storage, "SSRadiosityRD ISR 1");
+	ERR_FAIL_COND_V_MSG(!b.normal.is_valid() || !b.albedo.is_valid() || !b.ambient.is_valid() || !b.coarse_gbuffer.is_valid() || !b.isr[0].is_valid() || !b.isr[1].is_valid(),
 			RID(), "SSRadiosityRD: texture creation failed.");
 	b.fb_gbuffer = rd->framebuffer_create({ p_color, b.normal, b.albedo, b.ambient, p_depth });
 	b.fb_composite = rd->framebuffer_create({ p_color });
@@ -177,18 +204,21 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	pc.misc[1] = uint32_t(b.width);
 	pc.misc[2] = uint32_t(b.height);
 	pc.misc[3] = p_frame.half_size ? 2u : 1u;
+	pc.pattern[0] = std::max(p_frame.interleave, 1u);
 	if (p_frame.ssao && p_settings.ssao_ao_channel_affect > 0.0f) {
 		WARN_PRINT_ONCE("Environment ssao_ao_channel_affect has no effect: godot-area materials have no ambient occlusion texture channel.");
 	}
 
 	const uint32_t cw = uint32_t(b.coarse_width), ch = uint32_t(b.coarse_height);
+	// Blur and composite variants: only the terms that are on.
+	const int variant = p_frame.ssil ? (p_frame.ssao ? COMPOSITE_SSIL_SSAO : COMPOSITE_SSIL) : COMPOSITE_SSAO;
 	RD::ComputeListID list = rd->compute_list_begin();
-	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_DOWNSAMPLE]);
+	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[p_frame.half_size ? PASS_DOWNSAMPLE_HALF : PASS_DOWNSAMPLE_FULL]);
 	rd->compute_list_bind_uniform_set(list, b.sets[0], 0);
 	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
 	rd->compute_list_dispatch_threads(list, cw, ch, 1);
 	rd->compute_list_add_barrier(list);
-	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_ISR]);
+	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_ISR_SSIL + variant]);
 	rd->compute_list_bind_uniform_set(list, b.sets[1], 0);
 	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
 	rd->compute_list_dispatch_threads(list, cw, ch, 1);
@@ -196,10 +226,11 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	for (int pass = 0; pass < p_frame.blur_passes; pass++) {
 		for (int axis = 0; axis < 2; axis++) {
 			rd->compute_list_add_barrier(list);
-			pc.blur[0] = axis == 0 ? 1.0f : 0.0f;
-			pc.blur[1] = axis == 0 ? 0.0f : 1.0f;
-			rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_BLUR]);
-			rd->compute_list_bind_uniform_set(list, b.sets[2 + axis], 0); // H: 0 -> 1, V: 1 -> 0.
+			const float stride = float(1 << std::min(pass, 8)); // A trous: 1, 2, 4, ... coarse pixels.
+			pc.blur[0] = axis == 0 ? stride : 0.0f;
+			pc.blur[1] = axis == 0 ? 0.0f : stride;
+			rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_BLUR_SSIL + variant]);
+			rd->compute_list_bind_uniform_set(list, b.sets[2 + 2 * variant + axis], 0); // H: 0 -> 1, V: 1 -> 0.
 			rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
 			rd->compute_list_dispatch_threads(list, cw, ch, 1);
 			last_pass_count++;
@@ -226,7 +257,7 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	cc.flags[2] = BILATERAL_MATCH_RELATIVE;
 
 	RD::FramebufferFormatID format = rd->framebuffer_get_format(b.fb_composite);
-	RID &pipeline = composite_pipelines[format];
+	RID &pipeline = composite_pipelines[std::make_pair(format, variant)];
 	if (!pipeline.is_valid()) {
 		RD::PipelineRasterizationState raster;
 		raster.cull_mode = RD::POLYGON_CULL_DISABLED;
@@ -239,12 +270,12 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 		a.dst_color_blend_factor = RD::BLEND_FACTOR_SRC_ALPHA;
 		a.src_alpha_blend_factor = RD::BLEND_FACTOR_ZERO;
 		a.dst_alpha_blend_factor = RD::BLEND_FACTOR_ONE;
-		pipeline = rd->render_pipeline_create(composite_shader.version_get_shader(0), format, vertex_format, RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
+		pipeline = rd->render_pipeline_create(composite_shader.version_get_shader(variant), format, vertex_format, RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
 		ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), false, "SSRadiosityRD: the composite pipeline could not be created.");
 	}
 	RD::DrawListID dl = rd->draw_list_begin(b.fb_composite, RD::INITIAL_ACTION_LOAD, RD::INITIAL_ACTION_LOAD);
 	rd->draw_list_bind_render_pipeline(dl, pipeline);
-	rd->draw_list_bind_uniform_set(dl, b.sets[4], 0);
+	rd->draw_list_bind_uniform_set(dl, b.sets[2 + 2 * COMPOSITE_MAX + variant], 0);
 	rd->draw_list_set_push_constant(dl, &cc, sizeof(cc));
 	rd->draw_list_draw(dl, false, 1, 3);
 	rd->draw_list_end();

@@ -12,17 +12,19 @@
 /* the ambient part of the colour into three RGBA16F targets; depth comes */
 /* from the depth pre-pass (linear depth is derived from it, §4.3).       */
 /* Passes (Listing 3), after the opaque pass, timestamp "ss_radiosity":   */
-/*   downsample -> ISR (eqs. 6, 25, 26) -> blur x blur_passes (H + V)      */
-/*   -> composite (bilateral upsampling eqs. 27-28, eq. 29).              */
+/*   downsample -> ISR (eqs. 6, 25, 26; interleaved over k x k pixels)    */
+/*   -> blur x blur_passes (H + V, a trous) -> composite (bilateral       */
+/*   upsampling eqs. 27-28, eq. 29).                                      */
 /* Coarse resolution: half of each axis with half_size (Godot's default), */
-/* else full. Samples per pixel from the quality level                    */
-/* (RS::get_ss_radiosity_sample_count: 12/24/48/80/128).                  */
+/* else full. Samples per coarse pixel from the quality level             */
+/* (RS::get_ss_radiosity_sample_count: 12/24/48/80/128), interleaved      */
+/* over k x k pixels (get_interleave).                                    */
 /*                                                                        */
-/* Nothing exists before the first view with SSIL or SSAO enabled: no    */
-/* shader, pipeline, texture or set (has_resources()); a view without    */
+/* Nothing exists before the first view with SSIL or SSAO enabled: no     */
+/* shader, pipeline, texture or set (has_resources()); a view without     */
 /* either records no pass. Per-render-target textures are freed with the  */
 /* target (release_owner).                                                */
-/* Shaders: shaders/effects/ss_radiosity*.glsl (terms in                 */
+/* Shaders: shaders/effects/ss_radiosity*.glsl (terms in                  */
 /* ss_radiosity_inc.glsl).                                                */
 
 #pragma once
@@ -37,10 +39,24 @@ class SSRadiosityRD {
 public:
 	/* Definition */
 
+	enum CompositeVariant {
+		COMPOSITE_SSIL,
+		COMPOSITE_SSAO,
+		COMPOSITE_SSIL_SSAO,
+		COMPOSITE_MAX,
+	};
+
+	// The ISR step, the blur and the composite come in one variant per CompositeVariant (the terms that
+	// are on), in that order.
 	enum PassVariant {
-		PASS_DOWNSAMPLE,
-		PASS_ISR,
-		PASS_BLUR,
+		PASS_DOWNSAMPLE_HALF, // half_size: 2x2 blocks.
+		PASS_DOWNSAMPLE_FULL,
+		PASS_ISR_SSIL,
+		PASS_ISR_SSAO,
+		PASS_ISR_SSIL_SSAO,
+		PASS_BLUR_SSIL,
+		PASS_BLUR_SSAO,
+		PASS_BLUR_SSIL_SSAO,
 		PASS_MAX,
 	};
 
@@ -51,10 +67,11 @@ public:
 		float proj_depth[4]; // P22, P32, coarse width, coarse height.
 		float ssil[4]; // radius, normal rejection, enabled, max disk radius (coarse pixels).
 		float ssao[4]; // radius, horizon, detail, enabled.
-		float blur[4]; // direction x, y, ssil sharpness, ssao sharpness.
+		float blur[4]; // step x, y (direction times the pass's stride), ssil sharpness, ssao sharpness.
 		uint32_t misc[4]; // sample count, full width, full height, scale.
+		uint32_t pattern[4]; // interleave k (FrameSettings::interleave), unused x3.
 	};
-	static_assert(sizeof(PassPushConstant) == 112, "PassPushConstant must match shaders/effects/ss_radiosity.glsl.");
+	static_assert(sizeof(PassPushConstant) == 128, "PassPushConstant must match shaders/effects/ss_radiosity.glsl.");
 	static_assert(sizeof(PassPushConstant) % 16 == 0, "PassPushConstant must stay a multiple of 16 bytes.");
 
 	// Mirror of Params in shaders/effects/ss_radiosity_composite.glsl.
@@ -67,6 +84,11 @@ public:
 	static_assert(sizeof(CompositePushConstant) == 64, "CompositePushConstant must match shaders/effects/ss_radiosity_composite.glsl.");
 
 	static constexpr RenderingDevice::DataFormat GBUFFER_FORMAT = RenderingDevice::DATA_FORMAT_R16G16B16A16_SFLOAT;
+	// Every coarse buffer: one texel per tap (isr_pack in shaders/effects/ss_radiosity_inc.glsl).
+	static constexpr RenderingDevice::DataFormat COARSE_FORMAT = RenderingDevice::DATA_FORMAT_R32G32B32A32_UINT;
+	// Interleaved sampling: k x k coarse pixels share the N-sample pattern, k = min(MAX_INTERLEAVE,
+	// floor(sqrt(N))) so that every pixel of a block gets at least one sample.
+	static constexpr uint32_t MAX_INTERLEAVE = 4;
 	// Bilateral upsampling (eqs. 27-28): eps and the "no coarse sample matches" limit, relative to depth.
 	static constexpr float BILATERAL_EPS_RELATIVE = 0.001f;
 	static constexpr float BILATERAL_MATCH_RELATIVE = 0.1f;
@@ -78,11 +100,13 @@ public:
 		bool ssil = false;
 		bool ssao = false;
 		uint32_t sample_count = 48;
+		uint32_t interleave = 4; // k of the k x k interleaved sampling (get_interleave).
 		bool half_size = true;
 		int blur_passes = 2;
 		bool is_active() const { return ssil || ssao; }
 	};
 	static FrameSettings get_frame_settings(const ScreenSpaceLightingSettings &p_settings);
+	static uint32_t get_interleave(uint32_t p_sample_count);
 
 private:
 	/* Private Members */
@@ -97,19 +121,18 @@ private:
 		RID normal; // View normal (xyz).
 		RID albedo; // Diffuse albedo (rgb).
 		RID ambient; // Ambient part of the colour (rgb).
-		RID coarse_radiance;
-		RID coarse_normal_depth; // RGBA32F: normal, linear depth.
-		RID isr[2]; // Ping-pong of the ISR result and the blur.
+		RID coarse_gbuffer; // COARSE_FORMAT: radiance, normal, linear depth.
+		RID isr[2]; // COARSE_FORMAT, ping-pong of the ISR result and the blur: sum F L, O, normal, depth.
 		RID fb_gbuffer; // { color, normal, albedo, ambient, depth }: the opaque pass.
 		RID fb_composite; // { color }.
-		RID sets[5]; // downsample, isr, blur 0->1, blur 1->0, composite.
+		RID sets[2 + 2 * COMPOSITE_MAX + COMPOSITE_MAX]; // downsample, ISR, blur 0->1 and 1->0 per variant, composite per variant.
 	};
 
 	ShaderRD pass_shader;
 	ShaderRD composite_shader;
 	bool shaders_ready = false;
 	RID pass_pipelines[PASS_MAX];
-	std::map<RenderingDevice::FramebufferFormatID, RID> composite_pipelines;
+	std::map<std::pair<RenderingDevice::FramebufferFormatID, int>, RID> composite_pipelines; // (format, variant).
 	RID sampler;
 	RenderingDevice::VertexFormatID vertex_format = -1;
 	std::map<RID, Buffers> buffers; // Key: the render target.

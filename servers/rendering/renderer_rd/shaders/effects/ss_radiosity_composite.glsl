@@ -12,8 +12,9 @@
 /* ambient part scaled by v alone (eq. 29 with k_SSAO = 1, as Godot's     */
 /* SSAO darkens ambient light), k_ISR = ssil_intensity, rho the diffuse   */
 /* albedo and E the upsampled sum F L of eq. 25. Pixels without geometry  */
-/* are left alone. C++: renderer_rd/effects/ss_radiosity_rd.h, mirror     */
-/* SSRadiosityRD::CompositePushConstant.                                  */
+/* are left alone. Variants: USE_SSIL, USE_SSAO (each reads only the      */
+/* targets its terms need). C++: renderer_rd/effects/ss_radiosity_rd.h,   */
+/* mirror SSRadiosityRD::CompositePushConstant.                           */
 
 #[vertex]
 
@@ -40,10 +41,13 @@ params;
 
 layout(set = 0, binding = 0) uniform sampler nearest_sampler;
 layout(set = 0, binding = 1) uniform texture2D depth_texture;
+#ifdef USE_SSIL
 layout(set = 0, binding = 2) uniform texture2D albedo_texture; // Diffuse albedo rho (rgb).
+#endif
+#ifdef USE_SSAO
 layout(set = 0, binding = 3) uniform texture2D ambient_texture; // Ambient part of C (rgb).
-layout(set = 0, binding = 4) uniform texture2D isr_texture; // Coarse, blurred: rgb = sum F L, a = O.
-layout(set = 0, binding = 5) uniform texture2D coarse_normal_depth; // w = linear depth.
+#endif
+layout(set = 0, binding = 4) uniform utexture2D isr_texture; // Coarse, blurred (isr_pack): sum F L, O, normal, depth.
 
 layout(location = 0) out vec4 frag_color;
 
@@ -55,28 +59,31 @@ void main() {
 	}
 	float zp = isr_linear_depth(z, params.proj_depth.x, params.proj_depth.y, params.proj_depth.z, params.proj_depth.w);
 	vec2 coarse = params.sizes.zw;
-	ivec2 icoarse = ivec2(coarse);
 	vec2 cpos = (vec2(fp) + 0.5) * coarse / params.sizes.xy - 0.5;
 	vec2 base = floor(cpos);
 	vec2 f = cpos - base;
-	ivec2 b = ivec2(base);
-	ivec2 taps[4] = ivec2[](b, b + ivec2(1, 0), b + ivec2(0, 1), b + ivec2(1, 1));
-	vec4 zs;
-	vec4 values[4];
-	for (int i = 0; i < 4; i++) {
-		ivec2 q = clamp(taps[i], ivec2(0), icoarse - 1);
-		zs[i] = texelFetch(sampler2D(coarse_normal_depth, nearest_sampler), q, 0).w;
-		values[i] = texelFetch(sampler2D(isr_texture, nearest_sampler), q, 0);
-	}
+	// The 2x2 coarse texels around the pixel in gathers (one per packed word used), reordered from
+	// textureGather's (0, 1), (1, 1), (1, 0), (0, 0) to (0, 0), (1, 0), (0, 1), (1, 1); the clamp-to-edge
+	// sampler repeats the border texels.
+	vec2 uv = (base + 1.0) / coarse;
+	vec4 zs = uintBitsToFloat(textureGather(usampler2D(isr_texture, nearest_sampler), uv, 3).wzxy);
+	uvec4 rg = textureGather(usampler2D(isr_texture, nearest_sampler), uv, 0).wzxy;
+	uvec4 ba = textureGather(usampler2D(isr_texture, nearest_sampler), uv, 1).wzxy;
 	vec4 w = isr_bilateral_weights(f, zs, zp, params.flags.y, params.flags.z);
-	vec4 isr = values[0] * w.x + values[1] * w.y + values[2] * w.z + values[3] * w.w;
-
-	float v = 1.0;
-	if (params.flags.x > 0.0) {
-		v = pow(clamp(1.0 - params.terms.y * isr.a, 0.0, 1.0), params.terms.z);
+	vec4 isr = vec4(0.0);
+	for (int i = 0; i < 4; i++) {
+		isr += vec4(unpackHalf2x16(rg[i]), unpackHalf2x16(ba[i])) * w[i];
 	}
-	float fd = clamp(v + 1.0 - params.terms.w, 0.0, 1.0); // Eq. 29: saturate(L_SSAO + 1 - k_SSAO).
-	vec3 rho = texelFetch(sampler2D(albedo_texture, nearest_sampler), fp, 0).rgb;
-	vec3 ambient = texelFetch(sampler2D(ambient_texture, nearest_sampler), fp, 0).rgb;
-	frag_color = vec4(ambient * (v - fd) + params.terms.x * rho * isr.rgb, fd);
+
+	vec3 added = vec3(0.0);
+	float fd = 1.0;
+#ifdef USE_SSAO
+	float v = pow(clamp(1.0 - params.terms.y * isr.a, 0.0, 1.0), params.terms.z);
+	fd = clamp(v + 1.0 - params.terms.w, 0.0, 1.0); // Eq. 29: saturate(L_SSAO + 1 - k_SSAO).
+	added += texelFetch(sampler2D(ambient_texture, nearest_sampler), fp, 0).rgb * (v - fd);
+#endif
+#ifdef USE_SSIL
+	added += params.terms.x * texelFetch(sampler2D(albedo_texture, nearest_sampler), fp, 0).rgb * isr.rgb;
+#endif
+	frag_color = vec4(added, fd);
 }

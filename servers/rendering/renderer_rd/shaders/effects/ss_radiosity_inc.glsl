@@ -119,3 +119,41 @@ vec4 isr_bilateral_weights(vec2 p_f, vec4 p_z, float p_zp, float p_eps_rel, floa
 float isr_pixel_noise(vec2 p_pixel) {
 	return fract(52.9829189 * fract(dot(p_pixel, vec2(0.06711056, 0.00583715))));
 }
+
+// The coarse buffers hold one RGBA32UI texel per pixel, so a tap of the ISR step, the blur or the
+// upsampling is one fetch: x, y = half floats (r, g), (b, a) of a colour and a scalar (radiance L and
+// 0 in the coarse G-buffer; sum F L and the occlusion O in the ISR result), z = the view normal in
+// octahedral encoding (Cigolle et al. 2014, "A Survey of Efficient Representations for Independent
+// Unit Vectors", §3.3) as two snorm16, w = the linear depth as a float (0: no surface).
+vec2 isr_oct_encode(vec3 p_n) {
+	vec3 n = p_n / max(abs(p_n.x) + abs(p_n.y) + abs(p_n.z), 1e-20);
+	if (n.z < 0.0) {
+		vec2 s = vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+		n.xy = (1.0 - abs(n.yx)) * s;
+	}
+	return n.xy;
+}
+
+vec3 isr_oct_decode(vec2 p_e) {
+	vec3 n = vec3(p_e, 1.0 - abs(p_e.x) - abs(p_e.y));
+	float t = max(-n.z, 0.0);
+	n.x += n.x >= 0.0 ? -t : t;
+	n.y += n.y >= 0.0 ? -t : t;
+	return normalize(n);
+}
+
+uvec4 isr_pack(vec3 p_rgb, float p_a, vec3 p_normal, float p_depth) {
+	return uvec4(packHalf2x16(p_rgb.rg), packHalf2x16(vec2(p_rgb.b, p_a)), packSnorm2x16(isr_oct_encode(p_normal)), floatBitsToUint(p_depth));
+}
+
+vec4 isr_unpack_value(uvec4 p_t) { // (rgb, a).
+	return vec4(unpackHalf2x16(p_t.x), unpackHalf2x16(p_t.y));
+}
+
+vec3 isr_unpack_normal(uvec4 p_t) {
+	return isr_oct_decode(unpackSnorm2x16(p_t.z));
+}
+
+float isr_unpack_depth(uvec4 p_t) {
+	return uintBitsToFloat(p_t.w);
+}
