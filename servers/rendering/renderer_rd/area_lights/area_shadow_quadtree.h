@@ -98,7 +98,16 @@ public:
 		float receiver_distance = 0.0f;
 		float min_camera_distance = 0.1f; // Clamp (camera inside the box).
 		uint32_t max_depth = DEFAULT_MAX_DEPTH;
+		// The per-sample penumbra filter is on (RS::AREA_SHADOW_FILTER_PENUMBRA): each map's edge is spread
+		// over the penumbra of its own cell, so the n - 1 steps are ramps, not bands, and the target is a
+		// ramp width (filter_ramp_px) instead of a hard step (target_step_px). With the filter the error
+		// stops falling at 5 x 5 (FILTER_MAX_DEPTH) and the 3 x 3 grid is worse than the 2 x 2 one (its
+		// centre map cannot see the floor beside an occluder's base), so depth 1 becomes depth 2.
+		bool sample_filter = false;
+		float filter_ramp_px = 4.0f;
 	};
+
+	static constexpr uint32_t FILTER_MAX_DEPTH = 2;
 
 	struct HeuristicResult {
 		uint32_t depth = 0; // Subdivision levels: grid 2^depth + 1.

@@ -43,7 +43,7 @@ float AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction() {
 	return float(v);
 }
 
-uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light, const std::vector<AABB> &p_casters) {
+uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light, const std::vector<AABB> &p_casters, bool p_sample_filter) {
 	AreaShadowQuadtree::HeuristicInput in;
 	in.light_size = p_size;
 	in.range = p_range;
@@ -60,6 +60,7 @@ uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, c
 	in.viewport_height = p_data.viewport_height > 0 ? float(p_data.viewport_height) : 1080.0f;
 	in.max_depth = get_project_max_depth();
 	in.occluder_fraction = get_project_heuristic_occluder_fraction();
+	in.sample_filter = p_sample_filter;
 	// Each caster's extent along the light's normal: its nearest point can occlude, its farthest can
 	// receive. Casters behind the light plane or beyond the range do neither.
 	const Vector3 normal = -p_world_from_light.basis.get_column(2).normalized();

@@ -307,7 +307,9 @@ public:
 	// height), up to get_project_max_depth(). p_casters (world AABBs of the light's casters, may be
 	// empty) give the occluder and receiver distances along the light's normal (-Z of
 	// p_world_from_light); without them the project's occluder fraction of the range is assumed.
-	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light = Transform3D(), const std::vector<AABB> &p_casters = {});
+	// p_sample_filter: the lookup uses the per-sample penumbra filter (the ramp target, 2 or 5 x 5 only,
+	// AreaShadowQuadtree::HeuristicInput::sample_filter); false: the fixed PCF (hard steps, up to 9 x 9).
+	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light = Transform3D(), const std::vector<AABB> &p_casters = {}, bool p_sample_filter = false);
 
 	// True once a dispatch with work compiled the reprojection shader.
 	bool is_reprojection_compiled() const { return reprojection_shader.is_variant_created(0); }

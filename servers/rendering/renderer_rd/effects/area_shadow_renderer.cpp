@@ -431,7 +431,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 				for (const RenderSceneData::GeometryInstance *gi : lf.casters) {
 					casters.push_back(gi->aabb);
 				}
-				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data, lf.world_from_light, casters); // Thesis 6.5 estimate.
+				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data, lf.world_from_light, casters, sample_filter); // Thesis 6.5 estimate.
 			}
 			_hash_bytes(hash, &grid, sizeof(grid));
 			float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
