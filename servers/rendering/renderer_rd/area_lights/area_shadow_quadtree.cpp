@@ -224,7 +224,7 @@ uint32_t AreaShadowQuadtree::apply_results(const std::vector<Result> &p_results)
 	uint32_t banding_depths = 0;
 	for (const Result &r : p_results) {
 		auto it = nodes.find(r.node);
-		if (r.banding && it != nodes.end() && it->second.version == r.version && it->second.depth < 32) {
+		if (same_depth && r.banding && it != nodes.end() && it->second.version == r.version && it->second.depth < 32) {
 			banding_depths |= 1u << it->second.depth;
 		}
 	}

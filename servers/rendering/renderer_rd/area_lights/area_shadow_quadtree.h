@@ -132,6 +132,7 @@ private:
 
 	TileSource *tiles = nullptr;
 	uint32_t max_depth = DEFAULT_MAX_DEPTH;
+	bool same_depth = true;
 	uint64_t frame = 0;
 	uint64_t change_count = 0;
 	std::map<uint64_t, Node> nodes;
@@ -160,6 +161,10 @@ public:
 	// Deepest level (1..LATTICE_LEVELS); nodes deeper than a new limit are pruned (their points freed).
 	void set_max_depth(uint32_t p_depth);
 	uint32_t get_max_depth() const { return max_depth; }
+	// The same-depth rule of apply_results() (default on); off: Algorithm 1 as written (each quad on its
+	// own answer), for measuring what the rule is worth.
+	void set_same_depth_rule(bool p_enable) { same_depth = p_enable; }
+	bool is_same_depth_rule() const { return same_depth; }
 
 	// Subdivides leaf p_node into four. Needs tiles for the new points (up to 5); fails without changing
 	// anything if the node is not an expandable leaf or the tiles are not there.

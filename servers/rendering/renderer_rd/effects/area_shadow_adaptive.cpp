@@ -245,6 +245,7 @@ AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaS
 	tiles->cap = cap != tile_caps.end() ? cap->second : UINT32_MAX;
 	std::unique_ptr<AreaShadowQuadtree> tree(new AreaShadowQuadtree);
 	tree->set_max_depth(max_depth);
+	tree->set_same_depth_rule(same_depth);
 	if (!tree->reset(tiles.get())) {
 		return nullptr;
 	}
@@ -404,6 +405,14 @@ void AreaShadowAdaptiveRD::_update_settled(uint64_t p_light, const AreaShadowQua
 void AreaShadowAdaptiveRD::set_skip_settled(bool p_enable) {
 	skip_settled = p_enable;
 	settled.clear();
+}
+
+void AreaShadowAdaptiveRD::set_same_depth_rule(bool p_enable) {
+	same_depth = p_enable;
+	settled.clear();
+	for (auto &kv : trees) {
+		kv.second->set_same_depth_rule(p_enable);
+	}
 }
 
 bool AreaShadowAdaptiveRD::is_light_settled(uint64_t p_light, uint64_t p_state_hash) const {

@@ -211,6 +211,7 @@ private:
 	std::map<uint64_t, uint64_t> content_hashes;
 	std::map<uint64_t, uint64_t> settled; // Light -> state hash its last complete round of tests left unchanged.
 	bool skip_settled = true;
+	bool same_depth = true;
 	uint32_t last_skipped_count = 0;
 	uint32_t divisor = DEFAULT_REPROJECTION_DIVISOR;
 	uint32_t max_depth = AreaShadowQuadtree::DEFAULT_MAX_DEPTH;
@@ -333,6 +334,8 @@ public:
 	// their state changes; off: every light is tested every frame (Algorithm 1 as written).
 	void set_skip_settled(bool p_enable);
 	bool is_skip_settled() const { return skip_settled; }
+	// The trees' same-depth rule (AreaShadowQuadtree::set_same_depth_rule()), now and for new trees.
+	void set_same_depth_rule(bool p_enable);
 	bool is_light_settled(uint64_t p_light, uint64_t p_state_hash) const;
 	// Lights skipped by the last dispatch() because they were settled.
 	uint32_t get_last_skipped_count() const { return last_skipped_count; }

@@ -163,6 +163,7 @@ bool AreaShadowRendererRD::_ensure_adaptive(AtlasInstance &p_atlas) {
 		adaptive->set_reprojection_divisor(adaptive_divisor);
 	}
 	adaptive->set_skip_settled(adaptive_skip_settled);
+	adaptive->set_same_depth_rule(adaptive_same_depth);
 	p_atlas.adaptive_tiles.reset(new AreaShadowAdaptiveRD::AtlasTiles(&p_atlas.atlas));
 	p_atlas.adaptive = std::move(adaptive);
 	p_atlas.adaptive_configuration = p_atlas.atlas.get_configuration();
@@ -227,6 +228,15 @@ bool AreaShadowRendererRD::set_adaptive_reprojection_divisor(uint32_t p_divisor)
 		}
 	}
 	return true;
+}
+
+void AreaShadowRendererRD::set_adaptive_same_depth_rule(bool p_enable) {
+	adaptive_same_depth = p_enable;
+	for (auto &e : atlases) {
+		if (e.second.adaptive) {
+			e.second.adaptive->set_same_depth_rule(p_enable);
+		}
+	}
 }
 
 void AreaShadowRendererRD::set_adaptive_skip_settled(bool p_enable) {
