@@ -15,9 +15,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <sys/wait.h>
-#include <initializer_list>
 
 namespace TestMainCLI {
 

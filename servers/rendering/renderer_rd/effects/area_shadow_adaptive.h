@@ -37,9 +37,9 @@
 
 #include "core/math/aabb.h"
 #include "core/math/projection.h"
-#include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_rd/area_lights/area_shadow_quadtree.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/area_shadow_readback_ring.h"
 #include "servers/rendering/renderer_scene_render.h"
 

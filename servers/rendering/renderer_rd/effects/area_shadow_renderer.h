@@ -26,9 +26,9 @@
 
 #pragma once
 
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_scene_render.h"
 
 #include <map>
