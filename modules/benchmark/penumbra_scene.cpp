@@ -17,6 +17,15 @@
 #include <algorithm>
 #include <cmath>
 
+namespace {
+
+Vector3 box_half_extents(const PenumbraScene::Settings &p_settings) {
+	const float h = p_settings.box_half;
+	return Vector3(h, p_settings.box_half_height < 0.0f ? h : p_settings.box_half_height, p_settings.box_half_depth < 0.0f ? h : p_settings.box_half_depth);
+}
+
+} // namespace
+
 RS::SurfaceData PenumbraScene::make_plane(float p_half) {
 	RS::SurfaceData s;
 	PlaneMesh::create_plane_arrays(s, Vector2(p_half * 2, p_half * 2), 0, 0, Vector3(), PlaneMesh::FACE_Y);
@@ -84,7 +93,7 @@ bool PenumbraScene::create(RendererLightStorage *p_light_storage, RendererMeshSt
 	floor_mesh = mesh_storage->mesh_create();
 	mesh_storage->mesh_add_surface(floor_mesh, make_plane(p_settings.floor_half));
 	box_mesh = mesh_storage->mesh_create();
-	mesh_storage->mesh_add_surface(box_mesh, make_box(p_settings.box_center, Vector3(p_settings.box_half, p_settings.box_half_height < 0.0f ? p_settings.box_half : p_settings.box_half_height, p_settings.box_half)));
+	mesh_storage->mesh_add_surface(box_mesh, make_box(p_settings.box_center, box_half_extents(p_settings)));
 	material = material_storage->material_create();
 	material_storage->material_set_params(material, lambert());
 	light = light_storage->light_create(RS::LIGHT_AREA);
@@ -125,7 +134,7 @@ bool PenumbraScene::create_in_server(RenderingServer *p_rs, int p_width, int p_h
 	floor_mesh = rs->mesh_create();
 	rs->mesh_add_surface(floor_mesh, make_plane(p_settings.floor_half));
 	box_mesh = rs->mesh_create();
-	rs->mesh_add_surface(box_mesh, make_box(p_settings.box_center, Vector3(p_settings.box_half, p_settings.box_half_height < 0.0f ? p_settings.box_half : p_settings.box_half_height, p_settings.box_half)));
+	rs->mesh_add_surface(box_mesh, make_box(p_settings.box_center, box_half_extents(p_settings)));
 	material = rs->material_create();
 	rs->material_set_params(material, lambert());
 	light = rs->area_light_create();

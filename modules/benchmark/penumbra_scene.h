@@ -40,6 +40,7 @@ public:
 		float light_range = 20.0f;
 		float box_half = 0.25f;
 		float box_half_height = -1.0f; // Vertical half extent; < 0: box_half (a cube). Small: a plate.
+		float box_half_depth = -1.0f; // Half extent along Z; < 0: box_half. Long and thin: a bar.
 		Vector3 box_center = Vector3(0.0f, 0.55f, 0.0f);
 		float floor_half = 4.0f;
 	};

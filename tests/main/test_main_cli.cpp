@@ -15,9 +15,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <sys/wait.h>
-#include <initializer_list>
 
 namespace TestMainCLI {
 
@@ -78,10 +78,11 @@ TEST_CASE("[CLI][Render] the embedded demo (hero frame) renders within LDR-FLIP 
 	ImageMetrics::Result metrics;
 	REQUIRE_MESSAGE(ImageMetrics::compare(a, b, &metrics, &error), error);
 	MESSAGE("hero frame 96x54 vs Embree: LDR-FLIP ", metrics.flip, ", HDR-FLIP ", metrics.hdr_flip, ", RMSE ", metrics.rmse, ", relMSE ", metrics.relative_mse);
-	// Issue 23 asks for LDR-FLIP < 0.05; with the default area shadows (FIXED 5 x 5 with the per-sample
-	// penumbra filter) this frame measures 0.058 (FIXED 3 x 3 without the filter: 0.071), so the bound
-	// guards the measured value until the shadows reach the target.
-	CHECK_MESSAGE(metrics.flip < 0.065, "LDR-FLIP(GPU, reference) = " << metrics.flip);
+	// Issue 23 asks for LDR-FLIP < 0.05. With the default area shadows (FIXED 5 x 5, per-sample penumbra
+	// filter with its near-layer step) this frame measures 0.047; without the near-layer step the window's
+	// mullion, 3.5 cm in front of the WindowPanel light, darkened the floor through the grid's centre
+	// column (0.058; FIXED 3 x 3 without the filter: 0.071).
+	CHECK_MESSAGE(metrics.flip < 0.05, "LDR-FLIP(GPU, reference) = " << metrics.flip);
 	CHECK(run_cli_process("compare '" + gpu + "' '" + ref + "'") == 0);
 	std::filesystem::remove_all(dir);
 }

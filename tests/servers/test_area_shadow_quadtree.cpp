@@ -474,6 +474,45 @@ TEST_CASE("[AreaShadowQuadtree] a full atlas stops growth without oscillation or
 	check_accounting(sim.tree, sim.pool);
 }
 
+TEST_CASE("[AreaShadowQuadtree] with the per-sample filter the heuristic saves maps: a ramp target, 2 x 2 or 5 x 5") {
+	AreaShadowQuadtree::HeuristicInput in;
+	in.light_size = Vector2(1.0f, 1.0f);
+	in.range = 4.0f;
+	in.viewport_height = 720.0f;
+	in.max_depth = 3;
+	bool fewer = false, four = false, twenty_five = false;
+	uint32_t prev = 100;
+	for (float d = 0.05f; d < 5000.0f; d *= 1.3f) {
+		in.camera_distance = d;
+		in.sample_filter = false;
+		AreaShadowQuadtree::HeuristicResult hard = AreaShadowQuadtree::estimate_heuristic(in);
+		in.sample_filter = true;
+		AreaShadowQuadtree::HeuristicResult f = AreaShadowQuadtree::estimate_heuristic(in);
+		CHECK((f.grid == 2 || f.grid == 5)); // No 3 x 3 (less accurate than 2 x 2 filtered), no 9 x 9.
+		CHECK(f.depth <= hard.depth); // Never more maps than the hard-step target.
+		CHECK(f.depth <= prev); // Farther: never more.
+		CHECK(f.penumbra_px == doctest::Approx(hard.penumbra_px));
+		if (f.depth == 0) {
+			CHECK(f.penumbra_px <= in.filter_ramp_px + 1e-4f); // One ramp is enough only for a narrow penumbra.
+		}
+		prev = f.depth;
+		fewer = fewer || f.depth < hard.depth;
+		four = four || f.grid == 2;
+		twenty_five = twenty_five || f.grid == 5;
+	}
+	CHECK(fewer);
+	CHECK(four);
+	CHECK(twenty_five);
+	// A penumbra of 10 ramps' width: 9 x 9 with hard steps (1.5 px), 5 x 5 with the filter.
+	in.camera_distance = 0.0f;
+	in.sample_filter = false;
+	CHECK(AreaShadowQuadtree::estimate_heuristic(in).grid == 9);
+	in.sample_filter = true;
+	CHECK(AreaShadowQuadtree::estimate_heuristic(in).grid == 5);
+	in.max_depth = 1; // The project's limit still holds.
+	CHECK(AreaShadowQuadtree::estimate_heuristic(in).grid == 3);
+}
+
 TEST_CASE("[AreaShadowQuadtree] heuristic sample count is monotonic and bounded") {
 	AreaShadowQuadtree::HeuristicInput in;
 	in.light_size = Vector2(1.0f, 1.0f);

@@ -224,7 +224,7 @@ uint32_t AreaShadowQuadtree::apply_results(const std::vector<Result> &p_results)
 	uint32_t banding_depths = 0;
 	for (const Result &r : p_results) {
 		auto it = nodes.find(r.node);
-		if (r.banding && it != nodes.end() && it->second.version == r.version && it->second.depth < 32) {
+		if (same_depth && r.banding && it != nodes.end() && it->second.version == r.version && it->second.depth < 32) {
 			banding_depths |= 1u << it->second.depth;
 		}
 	}
@@ -440,13 +440,19 @@ AreaShadowQuadtree::HeuristicResult AreaShadowQuadtree::estimate_heuristic(const
 	float cam = std::max(in.camera_distance, std::max(in.min_camera_distance, 1e-3f));
 	float fov = std::min(std::max(in.fov_y, 1e-3f), 3.1f);
 	float pixel_m = 2.0f * cam * std::tan(fov * 0.5f) / std::max(in.viewport_height, 1.0f);
-	float target = std::max(in.target_step_px, 0.1f);
+	float target = std::max(in.sample_filter ? in.filter_ramp_px : in.target_step_px, 0.1f);
+	if (in.sample_filter) {
+		depth_limit = std::min(depth_limit, FILTER_MAX_DEPTH);
+	}
 	res.penumbra_m = penumbra;
 	res.penumbra_px = penumbra / pixel_m;
 	float steps = res.penumbra_px / target; // n - 1 must reach this.
 	uint32_t depth = 0;
 	while (depth < depth_limit && float(1u << depth) < steps) {
 		depth++;
+	}
+	if (in.sample_filter && depth == 1 && depth_limit >= 2) {
+		depth = 2; // Filtered 3 x 3 is less accurate than 2 x 2 (doc/shadows.md): straight to 5 x 5.
 	}
 	res.depth = depth;
 	res.grid = (1u << depth) + 1;

@@ -98,7 +98,16 @@ public:
 		float receiver_distance = 0.0f;
 		float min_camera_distance = 0.1f; // Clamp (camera inside the box).
 		uint32_t max_depth = DEFAULT_MAX_DEPTH;
+		// The per-sample penumbra filter is on (RS::AREA_SHADOW_FILTER_PENUMBRA): each map's edge is spread
+		// over the penumbra of its own cell, so the n - 1 steps are ramps, not bands, and the target is a
+		// ramp width (filter_ramp_px) instead of a hard step (target_step_px). With the filter the error
+		// stops falling at 5 x 5 (FILTER_MAX_DEPTH) and the 3 x 3 grid is worse than the 2 x 2 one (its
+		// centre map cannot see the floor beside an occluder's base), so depth 1 becomes depth 2.
+		bool sample_filter = false;
+		float filter_ramp_px = 4.0f;
 	};
+
+	static constexpr uint32_t FILTER_MAX_DEPTH = 2;
 
 	struct HeuristicResult {
 		uint32_t depth = 0; // Subdivision levels: grid 2^depth + 1.
@@ -123,6 +132,7 @@ private:
 
 	TileSource *tiles = nullptr;
 	uint32_t max_depth = DEFAULT_MAX_DEPTH;
+	bool same_depth = true;
 	uint64_t frame = 0;
 	uint64_t change_count = 0;
 	std::map<uint64_t, Node> nodes;
@@ -151,6 +161,10 @@ public:
 	// Deepest level (1..LATTICE_LEVELS); nodes deeper than a new limit are pruned (their points freed).
 	void set_max_depth(uint32_t p_depth);
 	uint32_t get_max_depth() const { return max_depth; }
+	// The same-depth rule of apply_results() (default on); off: Algorithm 1 as written (each quad on its
+	// own answer), for measuring what the rule is worth.
+	void set_same_depth_rule(bool p_enable) { same_depth = p_enable; }
+	bool is_same_depth_rule() const { return same_depth; }
 
 	// Subdivides leaf p_node into four. Needs tiles for the new points (up to 5); fails without changing
 	// anything if the node is not an expandable leaf or the tiles are not there.

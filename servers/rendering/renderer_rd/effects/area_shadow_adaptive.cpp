@@ -43,7 +43,7 @@ float AreaShadowAdaptiveRD::get_project_heuristic_occluder_fraction() {
 	return float(v);
 }
 
-uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light, const std::vector<AABB> &p_casters) {
+uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light, const std::vector<AABB> &p_casters, bool p_sample_filter) {
 	AreaShadowQuadtree::HeuristicInput in;
 	in.light_size = p_size;
 	in.range = p_range;
@@ -60,6 +60,7 @@ uint32_t AreaShadowAdaptiveRD::compute_heuristic_grid(const AABB &p_world_box, c
 	in.viewport_height = p_data.viewport_height > 0 ? float(p_data.viewport_height) : 1080.0f;
 	in.max_depth = get_project_max_depth();
 	in.occluder_fraction = get_project_heuristic_occluder_fraction();
+	in.sample_filter = p_sample_filter;
 	// Each caster's extent along the light's normal: its nearest point can occlude, its farthest can
 	// receive. Casters behind the light plane or beyond the range do neither.
 	const Vector3 normal = -p_world_from_light.basis.get_column(2).normalized();
@@ -244,6 +245,7 @@ AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaS
 	tiles->cap = cap != tile_caps.end() ? cap->second : UINT32_MAX;
 	std::unique_ptr<AreaShadowQuadtree> tree(new AreaShadowQuadtree);
 	tree->set_max_depth(max_depth);
+	tree->set_same_depth_rule(same_depth);
 	if (!tree->reset(tiles.get())) {
 		return nullptr;
 	}
@@ -403,6 +405,14 @@ void AreaShadowAdaptiveRD::_update_settled(uint64_t p_light, const AreaShadowQua
 void AreaShadowAdaptiveRD::set_skip_settled(bool p_enable) {
 	skip_settled = p_enable;
 	settled.clear();
+}
+
+void AreaShadowAdaptiveRD::set_same_depth_rule(bool p_enable) {
+	same_depth = p_enable;
+	settled.clear();
+	for (auto &kv : trees) {
+		kv.second->set_same_depth_rule(p_enable);
+	}
 }
 
 bool AreaShadowAdaptiveRD::is_light_settled(uint64_t p_light, uint64_t p_state_hash) const {

@@ -37,9 +37,9 @@
 
 #include "core/math/aabb.h"
 #include "core/math/projection.h"
-#include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_rd/area_lights/area_shadow_quadtree.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/area_shadow_readback_ring.h"
 #include "servers/rendering/renderer_scene_render.h"
 
@@ -211,6 +211,7 @@ private:
 	std::map<uint64_t, uint64_t> content_hashes;
 	std::map<uint64_t, uint64_t> settled; // Light -> state hash its last complete round of tests left unchanged.
 	bool skip_settled = true;
+	bool same_depth = true;
 	uint32_t last_skipped_count = 0;
 	uint32_t divisor = DEFAULT_REPROJECTION_DIVISOR;
 	uint32_t max_depth = AreaShadowQuadtree::DEFAULT_MAX_DEPTH;
@@ -307,7 +308,9 @@ public:
 	// height), up to get_project_max_depth(). p_casters (world AABBs of the light's casters, may be
 	// empty) give the occluder and receiver distances along the light's normal (-Z of
 	// p_world_from_light); without them the project's occluder fraction of the range is assumed.
-	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light = Transform3D(), const std::vector<AABB> &p_casters = {});
+	// p_sample_filter: the lookup uses the per-sample penumbra filter (the ramp target, 2 or 5 x 5 only,
+	// AreaShadowQuadtree::HeuristicInput::sample_filter); false: the fixed PCF (hard steps, up to 9 x 9).
+	static uint32_t compute_heuristic_grid(const AABB &p_world_box, const Vector2 &p_size, float p_range, const RenderSceneData &p_data, const Transform3D &p_world_from_light = Transform3D(), const std::vector<AABB> &p_casters = {}, bool p_sample_filter = false);
 
 	// True once a dispatch with work compiled the reprojection shader.
 	bool is_reprojection_compiled() const { return reprojection_shader.is_variant_created(0); }
@@ -331,6 +334,8 @@ public:
 	// their state changes; off: every light is tested every frame (Algorithm 1 as written).
 	void set_skip_settled(bool p_enable);
 	bool is_skip_settled() const { return skip_settled; }
+	// The trees' same-depth rule (AreaShadowQuadtree::set_same_depth_rule()), now and for new trees.
+	void set_same_depth_rule(bool p_enable);
 	bool is_light_settled(uint64_t p_light, uint64_t p_state_hash) const;
 	// Lights skipped by the last dispatch() because they were settled.
 	uint32_t get_last_skipped_count() const { return last_skipped_count; }

@@ -163,6 +163,7 @@ bool AreaShadowRendererRD::_ensure_adaptive(AtlasInstance &p_atlas) {
 		adaptive->set_reprojection_divisor(adaptive_divisor);
 	}
 	adaptive->set_skip_settled(adaptive_skip_settled);
+	adaptive->set_same_depth_rule(adaptive_same_depth);
 	p_atlas.adaptive_tiles.reset(new AreaShadowAdaptiveRD::AtlasTiles(&p_atlas.atlas));
 	p_atlas.adaptive = std::move(adaptive);
 	p_atlas.adaptive_configuration = p_atlas.atlas.get_configuration();
@@ -227,6 +228,15 @@ bool AreaShadowRendererRD::set_adaptive_reprojection_divisor(uint32_t p_divisor)
 		}
 	}
 	return true;
+}
+
+void AreaShadowRendererRD::set_adaptive_same_depth_rule(bool p_enable) {
+	adaptive_same_depth = p_enable;
+	for (auto &e : atlases) {
+		if (e.second.adaptive) {
+			e.second.adaptive->set_same_depth_rule(p_enable);
+		}
+	}
 }
 
 void AreaShadowRendererRD::set_adaptive_skip_settled(bool p_enable) {
@@ -431,7 +441,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 				for (const RenderSceneData::GeometryInstance *gi : lf.casters) {
 					casters.push_back(gi->aabb);
 				}
-				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data, lf.world_from_light, casters); // Thesis 6.5 estimate.
+				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data, lf.world_from_light, casters, sample_filter); // Thesis 6.5 estimate.
 			}
 			_hash_bytes(hash, &grid, sizeof(grid));
 			float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);

@@ -26,9 +26,9 @@
 
 #pragma once
 
+#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
-#include "servers/rendering/renderer_rd/area_lights/area_shadow_atlas.h"
 #include "servers/rendering/renderer_scene_render.h"
 
 #include <map>
@@ -145,6 +145,7 @@ private:
 	uint32_t default_subdivision = AreaShadowAtlas::DEFAULT_SUBDIVISION;
 	uint32_t adaptive_divisor = 0; // 0: the project setting.
 	bool adaptive_skip_settled = true;
+	bool adaptive_same_depth = true;
 	bool sample_filter = true;
 
 	bool _ensure_atlas(AtlasInstance &p_atlas);
@@ -209,6 +210,9 @@ public:
 	// while its camera, light, casters, receivers and atlas stay the same (a static view costs no
 	// reprojection). Off: every frame tests (Algorithm 1 as written; tests of the convergence).
 	void set_adaptive_skip_settled(bool p_enable);
+	// The quadtrees' same-depth rule (doc/shadows_adaptive.md; default on). Off: each quad refines on its own
+	// banding answer only (Algorithm 1 as written), which lets trees become non-uniform.
+	void set_adaptive_same_depth_rule(bool p_enable);
 	// Per-sample penumbra filter (default on): each map's lookup is filtered over the penumbra of the light
 	// cell its sample point stands for (shaders/area_light_shadow_inc.glsl, area_shadow_sample_filtered()).
 	// Off: the fixed-size PCF of shadow_blur (thesis 6.1 as written), for comparisons.

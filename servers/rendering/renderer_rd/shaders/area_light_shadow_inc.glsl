@@ -29,6 +29,11 @@
 #define AREA_SHADOW_SEARCH_K 2.0
 #define AREA_SHADOW_MAX_K 8.0
 #define AREA_SHADOW_MARCH_STEPS 2
+// Near layer: blockers nearer the sample than d_receiver / (1 + AREA_SHADOW_MAX_K) (a window's mullion a few
+// cm in front of the light) get their own step at their own ratio, k up to AREA_SHADOW_NEAR_MAX_K, and are
+// left out of the march (whose k stops at AREA_SHADOW_MAX_K, where a sample behind the bar sees nothing).
+#define AREA_SHADOW_NEAR_MAX_K 200.0
+#define AREA_SHADOW_NEAR_DEPTH 1.5
 
 // Lookups compiled in: AREA_SHADOWS_PCF (grid modes) and/or AREA_SHADOWS_PCSS (PCSS baseline), set by the
 // area version key of RenderForwardClustered from the lights that have maps; with neither, both.
@@ -227,7 +232,12 @@ void area_shadow_blocker_search(uint p_light, uint p_packed, vec3 p_v, vec3 p_no
 // AREA_SHADOW_MARCH_STEPS fractions spanning the blockers' range p_ratio (a short march along the ray in
 // the map: a box's top edge and its base cast penumbrae of different widths). Each tap point is slid onto
 // the receiver's tangent plane (exact depths on planar receivers: no acne from the width of the kernel).
-float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal, vec2 p_lo, vec2 p_hi, vec2 p_shift, vec2 p_ratio, float p_min_k, int p_taps, float p_bias_texels, float p_texel_per_m) {
+// p_near (x: the nearest blocker's ratio, y: the end of the near layer; x = 0: no near layer): a first step at
+// ratio p_near.x, k = 1 / p_near.x - 1 (the ray point is then beside the light point s + delta, where a bar
+// in front of the light is), blocked by surfaces up to p_near.y; the march then ignores those surfaces. The
+// near step uses the whole cell (the march's offsets are p_facing times it) and the direction to p + k delta
+// itself, not slid onto the receiver: the test is exact for any receiver orientation.
+float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal, vec2 p_lo, vec2 p_hi, float p_facing, vec2 p_shift, vec2 p_ratio, vec2 p_near, float p_min_k, int p_taps, float p_bias_texels, float p_texel_per_m) {
 	float scale = area_shadows.data[p_light].depth_scale;
 	float atlas_texel = area_shadows.data[p_light].atlas_texel;
 	float inv_count = 1.0 / float(p_taps * p_taps);
@@ -235,8 +245,15 @@ float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal,
 	for (int a = 0; a < p_taps; a++) {
 		for (int b = 0; b < p_taps; b++) {
 			vec2 f = (vec2(float(a * p_taps + b), float(b * p_taps + a)) + p_shift) * inv_count;
-			vec2 delta = mix(p_lo, p_hi, f);
+			vec2 cell_delta = mix(p_lo, p_hi, f);
+			vec2 delta = cell_delta * p_facing;
 			float tap = 1.0;
+			if (p_near.x > 0.0) {
+				vec3 x = p_v + vec3(cell_delta * (1.0 / p_near.x - 1.0), 0.0);
+				if (x.z < 0.0) {
+					tap = textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel, length(x) * p_near.y * scale), 0.0);
+				}
+			}
 			for (int m = 0; m < AREA_SHADOW_MARCH_STEPS; m++) {
 				// Step m covers ratios up to its end (a surface anywhere before it blocks).
 				float t0 = float(m) / float(AREA_SHADOW_MARCH_STEPS);
@@ -250,7 +267,12 @@ float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal,
 				}
 				float d = length(x);
 				float receiver = (d * r_end - d * p_texel_per_m * p_bias_texels) * scale;
-				tap = min(tap, textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel, receiver), 0.0));
+				vec2 pixel = area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel;
+				float step_lit = textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(pixel, receiver), 0.0);
+				if (p_near.x > 0.0) { // Texels of the near layer do not block here (the near step judged them).
+					step_lit = min(step_lit + 1.0 - textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(pixel, d * p_near.y * scale), 0.0), 1.0);
+				}
+				tap = min(tap, step_lit);
 			}
 			lit += tap;
 		}
@@ -344,7 +366,15 @@ float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p
 	if (blockers == 0.0) {
 		return 1.0;
 	}
-	ratio = clamp(ratio, vec2(1.0 / (1.0 + AREA_SHADOW_MAX_K)), vec2(1.0));
+	// A blocker in the near layer (ratio under 1 / (1 + AREA_SHADOW_MAX_K)): its own step; the layer reaches
+	// AREA_SHADOW_NEAR_DEPTH times its distance (a bar's thickness), at most to the march's first ratio.
+	float near_cut = 1.0 / (1.0 + AREA_SHADOW_MAX_K);
+	vec2 near = vec2(0.0);
+	if (ratio.x < near_cut) {
+		near.x = max(ratio.x, 1.0 / (1.0 + AREA_SHADOW_NEAR_MAX_K));
+		near.y = min(near.x * AREA_SHADOW_NEAR_DEPTH, near_cut);
+	}
+	ratio = clamp(ratio, vec2(near_cut), vec2(1.0));
 	float min_blur = area_shadows.data[p_light].pcf_radius;
 	float visibility = 0.0;
 	float total = 0.0;
@@ -368,7 +398,7 @@ float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p
 			// few texels (taps slide under the floor or into the box), so the kernel fades to shadow_blur's.
 			float facing = clamp(p_normal.z * 2.0 - 0.4, 0.0, 1.0);
 			vec2 shift = fract(vec2(0.5, 0.5) + uv.yx * 0.61803399);
-			lit = area_shadow_filtered(p_light, packed, v, p_normal, lo * facing, hi * facing, shift, ratio, min_k / max(facing, 1e-3), taps, bias_texels + slope, texel_per_m);
+			lit = area_shadow_filtered(p_light, packed, v, p_normal, lo, hi, facing, shift, ratio, near, min_k / max(facing, 1e-3), taps, bias_texels + slope, texel_per_m);
 		}
 		visibility += lit * w;
 		total += w;
