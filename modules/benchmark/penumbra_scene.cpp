@@ -17,14 +17,10 @@
 #include <algorithm>
 #include <cmath>
 
-namespace {
-
-Vector3 box_half_extents(const PenumbraScene::Settings &p_settings) {
+Vector3 PenumbraScene::box_half_extents(const Settings &p_settings) {
 	const float h = p_settings.box_half;
 	return Vector3(h, p_settings.box_half_height < 0.0f ? h : p_settings.box_half_height, p_settings.box_half_depth < 0.0f ? h : p_settings.box_half_depth);
 }
-
-} // namespace
 
 RS::SurfaceData PenumbraScene::make_plane(float p_half) {
 	RS::SurfaceData s;
@@ -80,43 +76,6 @@ RenderSceneData PenumbraScene::make_top_view(int p_resolution) {
 	RenderSceneData d = make_view(Vector3(0.3f, 3.2f, 0.2f), Vector3(0.3f, 0.0f, 0.2f), p_resolution, p_resolution);
 	d.cam_transform.basis = Basis::looking_at(Vector3(0, -1, 0), Vector3(0, 0, -1)); // Exactly the sweep's view.
 	return d;
-}
-
-bool PenumbraScene::create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene, const Settings &p_settings) {
-	ERR_FAIL_NULL_V_MSG(p_light_storage, false, "PenumbraScene: no light storage.");
-	ERR_FAIL_NULL_V_MSG(p_mesh_storage, false, "PenumbraScene: no mesh storage.");
-	ERR_FAIL_NULL_V_MSG(p_material_storage, false, "PenumbraScene: no material storage.");
-	free();
-	light_storage = p_light_storage;
-	mesh_storage = p_mesh_storage;
-	material_storage = p_material_storage;
-	floor_mesh = mesh_storage->mesh_create();
-	mesh_storage->mesh_add_surface(floor_mesh, make_plane(p_settings.floor_half));
-	box_mesh = mesh_storage->mesh_create();
-	mesh_storage->mesh_add_surface(box_mesh, make_box(p_settings.box_center, box_half_extents(p_settings)));
-	material = material_storage->material_create();
-	material_storage->material_set_params(material, lambert());
-	light = light_storage->light_create(RS::LIGHT_AREA);
-	if (!floor_mesh.is_valid() || !box_mesh.is_valid() || !material.is_valid() || !light.is_valid()) {
-		free();
-		ERR_FAIL_V_MSG(false, "PenumbraScene: a storage refused to create the scene's objects.");
-	}
-	light_storage->light_area_set_size(light, p_settings.light_size);
-	light_storage->light_set_param(light, RS::LIGHT_PARAM_ENERGY, p_settings.light_energy);
-	light_storage->light_set_param(light, RS::LIGHT_PARAM_RANGE, p_settings.light_range);
-	light_storage->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
-	RenderSceneData::GeometryInstance g;
-	g.mesh = floor_mesh;
-	g.material_override = material;
-	r_scene.geometry.push_back(g);
-	g.mesh = box_mesh;
-	r_scene.geometry.push_back(g);
-	RenderSceneData::LightInstance li;
-	li.light = light;
-	li.type = RS::LIGHT_AREA;
-	li.transform = light_transform(p_settings);
-	r_scene.lights.push_back(li);
-	return true;
 }
 
 bool PenumbraScene::create_in_server(RenderingServer *p_rs, int p_width, int p_height, const Settings &p_settings) {
@@ -185,33 +144,17 @@ std::vector<float> PenumbraScene::render() {
 }
 
 void PenumbraScene::free() {
-	if (rs) {
-		const RID rids[] = { viewport, camera, light_instance, box_instance, floor_instance, light, material, box_mesh, floor_mesh, scenario, environment };
-		for (RID r : rids) {
-			if (r.is_valid()) {
-				rs->free(r);
-			}
-		}
-		rs = nullptr;
-		viewport = camera = light_instance = box_instance = floor_instance = light = material = box_mesh = floor_mesh = scenario = environment = RID();
+	if (!rs) {
 		return;
 	}
-	if (light.is_valid()) {
-		light_storage->light_free(light);
+	const RID rids[] = { viewport, camera, light_instance, box_instance, floor_instance, light, material, box_mesh, floor_mesh, scenario, environment };
+	for (RID r : rids) {
+		if (r.is_valid()) {
+			rs->free(r);
+		}
 	}
-	if (floor_mesh.is_valid()) {
-		mesh_storage->mesh_free(floor_mesh);
-	}
-	if (box_mesh.is_valid()) {
-		mesh_storage->mesh_free(box_mesh);
-	}
-	if (material.is_valid()) {
-		material_storage->material_free(material);
-	}
-	light = RID();
-	floor_mesh = RID();
-	box_mesh = RID();
-	material = RID();
+	rs = nullptr;
+	viewport = camera = light_instance = box_instance = floor_instance = light = material = box_mesh = floor_mesh = scenario = environment = RID();
 }
 
 void PenumbraScene::visibility_error(const std::vector<float> &p_open, const std::vector<float> &p_shadowed, int p_width,

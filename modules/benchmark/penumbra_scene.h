@@ -8,8 +8,9 @@
 /* penumbra. The sweeps build it through the public RenderingServer (a   */
 /* scenario, instances, a camera and a viewport), so the Forward+ image   */
 /* and the Embree reference (RendererCompositorReference) see one scene   */
-/* through the scene cull, the path users take. The renderer's own unit  */
-/* tests can also create its objects in bare storages (create()).         */
+/* through the scene cull, the path users take. (The renderer's own unit */
+/* tests build the same objects in bare storages themselves, from the    */
+/* static builders below.)                                                */
 /*                                                                        */
 /* Also the visibility error of the sweeps: visibility = shadowed /       */
 /* unshadowed image (the shading method's own error cancels), compared    */
@@ -27,9 +28,6 @@
 #include <vector>
 
 class RenderingServer;
-class RendererLightStorage;
-class RendererMeshStorage;
-class RendererMaterialStorage;
 
 class PenumbraScene {
 public:
@@ -46,12 +44,8 @@ public:
 	};
 
 private:
-	RendererLightStorage *light_storage = nullptr;
-	RendererMeshStorage *mesh_storage = nullptr;
-	RendererMaterialStorage *material_storage = nullptr;
-	RID floor_mesh, box_mesh, material, light;
-	// Server objects (create_in_server()).
 	RenderingServer *rs = nullptr;
+	RID floor_mesh, box_mesh, material, light;
 	RID scenario, environment, camera, viewport, floor_instance, box_instance, light_instance;
 	int view_width = 0;
 	int view_height = 0;
@@ -61,6 +55,8 @@ public:
 	// Axis-aligned box, 24 vertices with outward normals (half extents p_half, or p_half on every axis).
 	static RS::SurfaceData make_box(const Vector3 &p_center, const Vector3 &p_half);
 	static RS::SurfaceData make_box(const Vector3 &p_center, float p_half) { return make_box(p_center, Vector3(p_half, p_half, p_half)); }
+	// The box's half extents (box_half, or box_half_height / box_half_depth where set).
+	static Vector3 box_half_extents(const Settings &p_settings);
 	static RS::MaterialParams lambert();
 	// world_from_light: the light faces down (-Z local = -Y world).
 	static Transform3D light_transform(const Settings &p_settings);
@@ -70,10 +66,6 @@ public:
 	// The shadows sweep's view: from 3.2 m above, slightly off centre, square.
 	static RenderSceneData make_top_view(int p_resolution);
 
-	// Creates the floor, box, material and light in the storages and appends them to r_scene (light index 0
-	// of r_scene.lights if it had none). False if a storage refused.
-	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene, const Settings &p_settings);
-	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene) { return create(p_light_storage, p_mesh_storage, p_material_storage, r_scene, Settings()); }
 	// Creates the scene in p_rs with a p_width x p_height viewport (black background, no ambient) that
 	// looks from the top view. False (and nothing left behind) if the server refused.
 	bool create_in_server(RenderingServer *p_rs, int p_width, int p_height, const Settings &p_settings);

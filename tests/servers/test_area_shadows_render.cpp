@@ -55,6 +55,57 @@ static RenderSceneData make_scene() {
 	return PenumbraScene::make_top_view(W);
 }
 
+// The penumbra scene's floor, box, material and light made in bare storages and appended to r_scene
+// (this file renders hand-built RenderSceneData, as the renderer's own unit tests do; the benchmarks
+// build the same scene through the RenderingServer, PenumbraScene::create_in_server()).
+struct StoragePenumbra {
+	RendererLightStorage *light_storage = nullptr;
+	RendererMeshStorage *mesh_storage = nullptr;
+	RendererMaterialStorage *material_storage = nullptr;
+	RID floor_mesh, box_mesh, material, light;
+
+	bool create(RendererLightStorage *p_light_storage, RendererMeshStorage *p_mesh_storage, RendererMaterialStorage *p_material_storage, RenderSceneData &r_scene, const PenumbraScene::Settings &p_settings = PenumbraScene::Settings()) {
+		light_storage = p_light_storage;
+		mesh_storage = p_mesh_storage;
+		material_storage = p_material_storage;
+		floor_mesh = mesh_storage->mesh_create();
+		mesh_storage->mesh_add_surface(floor_mesh, PenumbraScene::make_plane(p_settings.floor_half));
+		box_mesh = mesh_storage->mesh_create();
+		mesh_storage->mesh_add_surface(box_mesh, PenumbraScene::make_box(p_settings.box_center, PenumbraScene::box_half_extents(p_settings)));
+		material = material_storage->material_create();
+		material_storage->material_set_params(material, PenumbraScene::lambert());
+		light = light_storage->light_create(RS::LIGHT_AREA);
+		if (!floor_mesh.is_valid() || !box_mesh.is_valid() || !material.is_valid() || !light.is_valid()) {
+			return false;
+		}
+		light_storage->light_area_set_size(light, p_settings.light_size);
+		light_storage->light_set_param(light, RS::LIGHT_PARAM_ENERGY, p_settings.light_energy);
+		light_storage->light_set_param(light, RS::LIGHT_PARAM_RANGE, p_settings.light_range);
+		light_storage->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, 2.0f);
+		RenderTest::add_geometry(r_scene, floor_mesh, material);
+		RenderTest::add_geometry(r_scene, box_mesh, material);
+		RenderTest::add_light(r_scene, light, RS::LIGHT_AREA, PenumbraScene::light_transform(p_settings));
+		return true;
+	}
+	RID get_light() const { return light; }
+	void free() {
+		if (light.is_valid()) {
+			light_storage->light_free(light);
+		}
+		if (floor_mesh.is_valid()) {
+			mesh_storage->mesh_free(floor_mesh);
+		}
+		if (box_mesh.is_valid()) {
+			mesh_storage->mesh_free(box_mesh);
+		}
+		if (material.is_valid()) {
+			material_storage->material_free(material);
+		}
+		light = floor_mesh = box_mesh = material = RID();
+	}
+	~StoragePenumbra() { free(); }
+};
+
 // The Embree reference of the penumbra scene, with and without shadow rays.
 static void render_reference(std::vector<float> &r_open, std::vector<float> &r_shadowed, float p_target_error = 0.01f, const PenumbraScene::Settings &p_settings = PenumbraScene::Settings()) {
 	RendererDummy::LightStorage ls;
@@ -65,7 +116,7 @@ static void render_reference(std::vector<float> &r_open, std::vector<float> &r_s
 	options.target_relative_error = p_target_error;
 	options.max_samples = p_target_error < 0.01f ? 16384 : 2048;
 	ReferenceRenderer ref(&ls, &ms, &mats, options);
-	PenumbraScene penumbra;
+	StoragePenumbra penumbra;
 	RenderSceneData d = make_scene();
 	REQUIRE(penumbra.create(&ls, &ms, &mats, d, p_settings));
 	RID rt = ref.render_target_create(W, H);
@@ -84,7 +135,7 @@ struct ShadowFixture {
 	RendererRD::MeshStorage mesh_storage;
 	RendererRD::MaterialStorage material_storage;
 	RenderTest::SceneRenderer renderer{ &light_storage, &mesh_storage, &material_storage };
-	PenumbraScene penumbra;
+	StoragePenumbra penumbra;
 	RID light, rt;
 	RenderSceneData scene;
 
