@@ -87,8 +87,9 @@ public:
 		MATERIAL_TEXTURE_CHANNEL_GRAYSCALE,
 	};
 
-	// BaseMaterial3D::TextureFilter. Textures have no mip chain here: the *_WITH_MIPMAPS filters read
-	// the base level with their nearest or linear filter.
+	// BaseMaterial3D::TextureFilter. The *_WITH_MIPMAPS filters blend the two nearest levels of the
+	// texture's mip chain (servers/rendering/storage/texture_mipmaps.h); the anisotropic ones sample as
+	// their isotropic filter (no anisotropy here; BaseMaterial3D warns).
 	enum MaterialTextureFilter {
 		MATERIAL_TEXTURE_FILTER_NEAREST,
 		MATERIAL_TEXTURE_FILTER_LINEAR,

@@ -135,15 +135,20 @@ private:
 		bool unshaded = false;
 		bool specular_enabled = true;
 		bool cull_back = true;
-		const Image *albedo_texture = nullptr; // Valid during render_scene() only.
-		const Image *normal_texture = nullptr;
-		const Image *roughness_texture = nullptr; // Read through roughness_channel (weights per channel).
-		const Image *metallic_texture = nullptr;
+		// A texture: its base level and, for the mipmap filters, levels 1..n (valid during render_scene()).
+		struct Texture {
+			const Image *image = nullptr;
+			const std::vector<Image> *levels = nullptr;
+		};
+		// Albedo (sRGB chain), normal, roughness, metallic; roughness and metallic are read through their
+		// channel weights.
+		Texture textures[4];
 		float roughness_channel[4] = { 1, 0, 0, 0 };
 		float metallic_channel[4] = { 1, 0, 0, 0 };
 		Vector2 uv1_scale = Vector2(1, 1);
 		Vector2 uv1_offset;
 		bool nearest = false; // texture_filter NEAREST*: Vulkan NEAREST instead of LINEAR.
+		bool mipmaps = false; // texture_filter *_WITH_MIPMAPS*: sampled at the ray differentials' level.
 	};
 
 	// One mesh surface of one instance, in world space (one Embree geometry).
@@ -191,14 +196,14 @@ private:
 	};
 
 	static void _render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels);
+	// The rays through the centres of the next pixel right (0) and down (1) (reference_texture.h).
+	struct RayDifferentials {
+		Vector3 origins[2];
+		Vector3 dirs[2];
+	};
 	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters);
 	// The radiance along a ray (origin, unit direction, length) with p_bounces diffuse bounces left;
 	// r_hit says whether it met a surface (else the background is returned).
-	static Color _shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit);
+	// p_diff: the primary ray's differentials (nullptr for bounce rays: textures read level 0).
+	static Color _shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit, const RayDifferentials *p_diff = nullptr);
 };
-
-// Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres
-// at (i + 0.5) / size), as the GPU's material sampler. Returns raw texels (no colour conversion).
-Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv);
-// Vulkan NEAREST with REPEAT: the texel holding p_uv * size.
-Color reference_sample_texture_nearest(const Image &p_image, const Vector2 &p_uv);

@@ -206,6 +206,9 @@ void BaseMaterial3D::set_uv1_offset(const Vector3 &p_offset) {
 
 void BaseMaterial3D::set_texture_filter(TextureFilter p_filter) {
 	ERR_FAIL_INDEX_MSG((int)p_filter, TEXTURE_FILTER_MAX, vformat("texture_filter must be 0..%d (Nearest, Linear, Nearest Mipmap, Linear Mipmap, Nearest Mipmap Anisotropic, Linear Mipmap Anisotropic); got %d. The old value is kept.", TEXTURE_FILTER_MAX - 1, (int)p_filter));
+	if (p_filter == TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC || p_filter == TEXTURE_FILTER_LINEAR_WITH_MIPMAPS_ANISOTROPIC) {
+		WARN_PRINT_ONCE("texture_filter Anisotropic is not supported by this renderer; textures are filtered with mipmaps, without anisotropy.");
+	}
 	texture_filter = p_filter;
 	_update_params();
 }

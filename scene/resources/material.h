@@ -66,7 +66,8 @@ public:
 		TEXTURE_CHANNEL_GRAYSCALE = RS::MATERIAL_TEXTURE_CHANNEL_GRAYSCALE,
 		TEXTURE_CHANNEL_MAX
 	};
-	// No mip chains here: the *_WITH_MIPMAPS filters sample the base level (RS::MaterialTextureFilter).
+	// The *_WITH_MIPMAPS filters read the texture's mip chain; the anisotropic ones sample without
+	// anisotropy (warned once; RS::MaterialTextureFilter).
 	enum TextureFilter {
 		TEXTURE_FILTER_NEAREST = RS::MATERIAL_TEXTURE_FILTER_NEAREST,
 		TEXTURE_FILTER_LINEAR = RS::MATERIAL_TEXTURE_FILTER_LINEAR,
