@@ -78,6 +78,14 @@ public:
 		MATERIAL_SPECULAR_DISABLED,
 	};
 
+	// How a material's alpha is used (BaseMaterial3D::Transparency, reduced: ALPHA_HASH draws as
+	// ALPHA_SCISSOR and ALPHA_DEPTH_PRE_PASS as ALPHA, warned by BaseMaterial3D).
+	enum MaterialTransparency {
+		MATERIAL_TRANSPARENCY_DISABLED, // Opaque: alpha is ignored.
+		MATERIAL_TRANSPARENCY_ALPHA, // Blended over what is behind (after the opaque pass, back to front), no depth write.
+		MATERIAL_TRANSPARENCY_ALPHA_SCISSOR, // Opaque where alpha >= alpha_scissor_threshold, a hole elsewhere.
+	};
+
 	// Which channel of a roughness or metallic texture is read (BaseMaterial3D::TextureChannel).
 	enum MaterialTextureChannel {
 		MATERIAL_TEXTURE_CHANNEL_RED,
@@ -129,6 +137,8 @@ public:
 		MaterialSpecularMode specular_mode = MATERIAL_SPECULAR_SCHLICK_GGX;
 		bool unshaded = false; // shading_mode = UNSHADED: output albedo only.
 		bool cull_back = true; // cull_mode = BACK (false = DISABLED, two-sided).
+		MaterialTransparency transparency = MATERIAL_TRANSPARENCY_DISABLED;
+		float alpha_scissor_threshold = 0.5f; // 0..1, ALPHA_SCISSOR only.
 	};
 
 	/* LIGHT API enums */

@@ -70,16 +70,40 @@ struct ReferenceRenderer::Frame {
 // Back-face culling for cull_back materials (primary rays only; shadow rays see both faces, as a
 // closed occluder casts the same shadow either way). A hit is front-facing when the ray runs against
 // the face normal (c - a) x (b - a), which is the GPU's clockwise-front rule.
-static void _reference_cull_filter(const RTCFilterFunctionNArguments *p_args) {
-	const std::vector<Vector3> *face_normals = static_cast<const std::vector<Vector3> *>(p_args->geometryUserPtr);
+float ReferenceRenderer::_surface_alpha(const Surface &p_surface, uint32_t p_prim, float p_b1, float p_b2) {
+	const ShadingMaterial &m = p_surface.material;
+	if (!m.textures[0].image) {
+		return m.alpha;
+	}
+	const uint32_t *tri = &p_surface.indices[p_prim * 3];
+	const Vector2 uv = (p_surface.uvs[tri[0]] * (1.0f - p_b1 - p_b2) + p_surface.uvs[tri[1]] * p_b1 + p_surface.uvs[tri[2]] * p_b2) * m.uv1_scale + m.uv1_offset;
+	const Color texel = m.nearest ? reference_sample_texture_nearest(*m.textures[0].image, uv) : reference_sample_texture_bilinear(*m.textures[0].image, uv);
+	return m.alpha * texel.a;
+}
+
+void ReferenceRenderer::_surface_filter(const RTCFilterFunctionNArguments *p_args, bool p_occlusion) {
+	const Surface &s = *static_cast<const Surface *>(p_args->geometryUserPtr);
 	for (unsigned i = 0; i < p_args->N; i++) {
 		if (p_args->valid[i] != -1) {
 			continue;
 		}
-		unsigned prim = RTCHitN_primID(p_args->hit, p_args->N, i);
-		Vector3 dir(RTCRayN_dir_x(p_args->ray, p_args->N, i), RTCRayN_dir_y(p_args->ray, p_args->N, i), RTCRayN_dir_z(p_args->ray, p_args->N, i));
-		if ((*face_normals)[prim].dot(dir) >= 0.0f) {
-			p_args->valid[i] = 0;
+		const unsigned prim = RTCHitN_primID(p_args->hit, p_args->N, i);
+		if (p_occlusion && s.material.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA) {
+			p_args->valid[i] = 0; // Godot: alpha-blended materials cast no shadow.
+			continue;
+		}
+		if (!p_occlusion && s.material.cull_back) {
+			const Vector3 dir(RTCRayN_dir_x(p_args->ray, p_args->N, i), RTCRayN_dir_y(p_args->ray, p_args->N, i), RTCRayN_dir_z(p_args->ray, p_args->N, i));
+			if (s.face_normals[prim].dot(dir) >= 0.0f) {
+				p_args->valid[i] = 0;
+				continue;
+			}
+		}
+		if (s.material.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR) {
+			const float alpha = _surface_alpha(s, prim, RTCHitN_u(p_args->hit, p_args->N, i), RTCHitN_v(p_args->hit, p_args->N, i));
+			if (alpha < s.material.alpha_scissor_threshold) {
+				p_args->valid[i] = 0; // The shader's discard: a hole for every ray.
+			}
 		}
 	}
 }
@@ -182,6 +206,8 @@ ReferenceRenderer::ShadingMaterial ReferenceRenderer::_resolve_material(RID p_ma
 	m.uv1_scale = Vector2(p.uv1_scale.x, p.uv1_scale.y);
 	m.uv1_offset = Vector2(p.uv1_offset.x, p.uv1_offset.y);
 	m.nearest = RS::material_texture_filter_is_nearest(p.texture_filter);
+	m.transparency = p.transparency;
+	m.alpha_scissor_threshold = p.alpha_scissor_threshold;
 	return m;
 }
 
@@ -423,9 +449,12 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 		for (size_t k = 0; k < s.indices.size(); k++) {
 			ib[k] = s.indices[k];
 		}
-		if (s.material.cull_back) {
-			rtcSetGeometryUserData(geom, &s.face_normals);
-			rtcSetGeometryIntersectFilterFunction(geom, _reference_cull_filter);
+		if (s.material.cull_back || s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+			rtcSetGeometryUserData(geom, &s);
+			rtcSetGeometryIntersectFilterFunction(geom, _surface_intersect_filter);
+			if (s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+				rtcSetGeometryOccludedFilterFunction(geom, _surface_occluded_filter);
+			}
 		}
 		rtcCommitGeometry(geom);
 		rtcAttachGeometryByID(frame.scene, geom, i);
@@ -624,8 +653,21 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 		albedo = albedo * Vector3(Color::srgb_to_linear_channel(texel.r), Color::srgb_to_linear_channel(texel.g), Color::srgb_to_linear_channel(texel.b));
 		alpha *= texel.a;
 	}
+	// ALPHA: Godot's mix blend over the radiance behind the surface (the same ray continued past it).
+	auto composite = [&](const Color &p_color) {
+		if (m.transparency != RS::MATERIAL_TRANSPARENCY_ALPHA) {
+			return p_color;
+		}
+		const float a = glsl_clamp(p_color.a, 0.0f, 1.0f);
+		const float step = 1e-4f * std::max(1.0f, std::max(std::fabs(vertex.x), std::max(std::fabs(vertex.y), std::fabs(vertex.z))));
+		bool behind_hit = false;
+		const Color behind = _shade_ray(p_frame, p_options, vertex + dir * step, dir, seg_len - rh.ray.tfar - step, p_bounces, r_rng, r_counters, behind_hit, p_diff);
+		Color out = p_color * a + behind * (1.0f - a);
+		out.a = a + behind.a * (1.0f - a);
+		return out;
+	};
 	if (m.unshaded) {
-		return Color(albedo.x, albedo.y, albedo.z, alpha);
+		return composite(Color(albedo.x, albedo.y, albedo.z, alpha));
 	}
 
 	Vector3 V = p_frame.orthogonal ? p_frame.world_from_view.basis.get_column(2).normalized() : (p_frame.world_from_view.origin - vertex).normalized();
@@ -786,5 +828,5 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 		specular_light += reference_sky_specular(p_frame.scene, p_options, p_frame.sky, point, r_rng, r_counters.shadow_rays);
 	}
 	Vector3 color = m.emission + (ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
-	return Color(color.x, color.y, color.z, alpha);
+	return composite(Color(color.x, color.y, color.z, alpha));
 }

@@ -87,6 +87,8 @@ struct ReferenceRenderStats {
 	double seconds = 0.0; // Wall time (reported, never asserted).
 };
 
+struct RTCFilterFunctionNArguments; // Embree.
+
 class ReferenceRenderer : public RendererSceneRender {
 public:
 	/*************************************************************************/
@@ -149,6 +151,10 @@ private:
 		Vector2 uv1_offset;
 		bool nearest = false; // texture_filter NEAREST*: Vulkan NEAREST instead of LINEAR.
 		bool mipmaps = false; // texture_filter *_WITH_MIPMAPS*: sampled at the ray differentials' level.
+		// ALPHA_SCISSOR: cut-out geometry (rays pass where alpha < the threshold, shadow rays too).
+		// ALPHA: composited over what the ray meets behind it; casts no shadow (as Godot).
+		RS::MaterialTransparency transparency = RS::MATERIAL_TRANSPARENCY_DISABLED;
+		float alpha_scissor_threshold = 0.5f;
 	};
 
 	// One mesh surface of one instance, in world space (one Embree geometry).
@@ -182,6 +188,13 @@ private:
 	mutable RID_Owner<RenderTarget, true> render_target_owner{ "ReferenceRenderTarget" };
 
 	ShadingMaterial _resolve_material(RID p_material) const;
+	// Embree filter of a surface with back-face culling or transparency (user data: its Surface):
+	// p_occlusion for shadow rays.
+	static void _surface_filter(const RTCFilterFunctionNArguments *p_args, bool p_occlusion);
+	static void _surface_intersect_filter(const RTCFilterFunctionNArguments *p_args) { _surface_filter(p_args, false); }
+	static void _surface_occluded_filter(const RTCFilterFunctionNArguments *p_args) { _surface_filter(p_args, true); }
+	// The material alpha of a surface at barycentrics (b1, b2) of triangle p_prim (level 0 of the texture).
+	static float _surface_alpha(const Surface &p_surface, uint32_t p_prim, float p_b1, float p_b2);
 	bool _build_surface(const RS::SurfaceData &p_data, const Transform3D &p_xform, Surface &r_surface) const;
 	bool _make_light(const RenderSceneData::LightInstance &p_instance, Light &r_light) const;
 	// Counters of one pixel's shading (summed per thread, then per frame).

@@ -52,6 +52,16 @@ public:
 		SPECULAR_DISABLED = RS::MATERIAL_SPECULAR_DISABLED,
 		SPECULAR_MAX
 	};
+	// Godot's values. ALPHA_HASH is drawn as ALPHA_SCISSOR (no dithered hash) and ALPHA_DEPTH_PRE_PASS as
+	// ALPHA (no opaque pre-pass part), each with a warning.
+	enum Transparency {
+		TRANSPARENCY_DISABLED,
+		TRANSPARENCY_ALPHA,
+		TRANSPARENCY_ALPHA_SCISSOR,
+		TRANSPARENCY_ALPHA_HASH,
+		TRANSPARENCY_ALPHA_DEPTH_PRE_PASS,
+		TRANSPARENCY_MAX
+	};
 	enum CullMode {
 		CULL_BACK,
 		CULL_FRONT, // Not supported by the renderer: drawn like CULL_DISABLED (with a warning).
@@ -83,6 +93,8 @@ private:
 	DiffuseMode diffuse_mode = DIFFUSE_BURLEY;
 	SpecularMode specular_mode = SPECULAR_SCHLICK_GGX;
 	CullMode cull_mode = CULL_BACK;
+	Transparency transparency = TRANSPARENCY_DISABLED;
+	float alpha_scissor_threshold = 0.5f;
 	Color albedo = Color(1, 1, 1, 1);
 	Ref<Texture2D> albedo_texture;
 	float metallic = 0.0f;
@@ -119,6 +131,11 @@ public:
 	SpecularMode get_specular_mode() const { return specular_mode; }
 	void set_cull_mode(CullMode p_mode);
 	CullMode get_cull_mode() const { return cull_mode; }
+	void set_transparency(Transparency p_transparency);
+	Transparency get_transparency() const { return transparency; }
+	// 0..1: ALPHA_SCISSOR (and ALPHA_HASH) keep the pixels whose alpha is at least this.
+	void set_alpha_scissor_threshold(float p_threshold);
+	float get_alpha_scissor_threshold() const { return alpha_scissor_threshold; }
 
 	void set_albedo(const Color &p_albedo);
 	Color get_albedo() const { return albedo; }
@@ -193,5 +210,6 @@ VARIANT_ENUM_CAST(BaseMaterial3D::ShadingMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::DiffuseMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::SpecularMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::CullMode);
+VARIANT_ENUM_CAST(BaseMaterial3D::Transparency);
 VARIANT_ENUM_CAST(BaseMaterial3D::TextureChannel);
 VARIANT_ENUM_CAST(BaseMaterial3D::TextureFilter);

@@ -191,7 +191,14 @@ private:
 	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
 	uint64_t frame_counter = 0;
 
-	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
+	// How a colour pipeline treats depth and colour: opaque (depth from the pre-pass), alpha scissor
+	// (not in the pre-pass: writes its own depth), alpha blend (after the opaque pass, no depth write).
+	enum PipelineMode {
+		PIPELINE_MODE_OPAQUE,
+		PIPELINE_MODE_DEPTH_WRITE,
+		PIPELINE_MODE_BLEND,
+	};
+	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0, PipelineMode p_mode = PIPELINE_MODE_OPAQUE);
 	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
 	// The colour shader p_variant of the version for key p_key (area key | SCENE_VERSION_* bits); key 0 is the

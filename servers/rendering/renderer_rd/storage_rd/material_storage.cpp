@@ -138,6 +138,10 @@ MaterialStorage::MaterialUBO MaterialStorage::_make_ubo(const RS::MaterialParams
 	if (p_has_metallic) {
 		ubo.flags |= MATERIAL_FLAG_METALLIC_TEXTURE;
 	}
+	if (p_params.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR) {
+		ubo.flags |= MATERIAL_FLAG_ALPHA_SCISSOR;
+		ubo.alpha_scissor_threshold = p_params.alpha_scissor_threshold;
+	}
 	ubo.uv1[0] = p_params.uv1_scale.x;
 	ubo.uv1[1] = p_params.uv1_scale.y;
 	ubo.uv1[2] = p_params.uv1_offset.x;
@@ -264,6 +268,14 @@ bool MaterialStorage::material_is_cull_back(RID p_material) const {
 		m = material_owner.get_or_null(default_material);
 	}
 	return m ? m->params.cull_back : true;
+}
+
+RS::MaterialTransparency MaterialStorage::material_get_transparency(RID p_material) const {
+	const Material *m = material_owner.get_or_null(p_material);
+	if (!m) {
+		m = material_owner.get_or_null(default_material);
+	}
+	return m ? m->params.transparency : RS::MATERIAL_TRANSPARENCY_DISABLED;
 }
 
 RID MaterialStorage::material_create() {

@@ -28,6 +28,7 @@ public:
 		MATERIAL_FLAG_SPECULAR_DISABLED = 8,
 		MATERIAL_FLAG_ROUGHNESS_TEXTURE = 16,
 		MATERIAL_FLAG_METALLIC_TEXTURE = 32,
+		MATERIAL_FLAG_ALPHA_SCISSOR = 64,
 	};
 
 	// Mirror of MaterialBlock (set 1, binding 0, std140) in
@@ -41,7 +42,7 @@ public:
 		float normal_scale;
 		uint32_t flags; // MaterialFlags.
 		uint32_t diffuse_mode; // BRDF_DIFFUSE_* (brdf_inc.glsl): 0 Burley, 1 Lambert.
-		uint32_t pad0;
+		float alpha_scissor_threshold; // MATERIAL_FLAG_ALPHA_SCISSOR only.
 		uint32_t pad1;
 		float uv1[4]; // uv1_scale.xy, uv1_offset.xy.
 		float roughness_channel[4]; // Weights of the roughness texture's channels (roughness_texture_channel).
@@ -108,6 +109,8 @@ public:
 	RID material_get_uniform_set(RID p_material, RID p_shader);
 	// True when the material draws with back faces culled (MaterialParams::cull_back).
 	bool material_is_cull_back(RID p_material) const;
+	// The material's transparency (MaterialParams::transparency; the default material's for an invalid RID).
+	RS::MaterialTransparency material_get_transparency(RID p_material) const;
 	RID get_default_material() const { return default_material; }
 	RID get_sampler() const { return samplers[SAMPLER_LINEAR]; }
 	// Converts the parameters as the shader reads them (tests).

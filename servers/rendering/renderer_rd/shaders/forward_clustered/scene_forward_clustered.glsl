@@ -180,6 +180,9 @@ void main() {
 	}
 
 	if ((material.flags & MATERIAL_FLAG_UNSHADED) != 0u) {
+		if ((material.flags & MATERIAL_FLAG_ALPHA_SCISSOR) != 0u && alpha < material.alpha_scissor_threshold) {
+			discard; // Godot's ALPHA_SCISSOR_THRESHOLD.
+		}
 		frag_color = vec4(albedo, alpha);
 		return;
 	}
@@ -212,6 +215,10 @@ void main() {
 	}
 	roughness = clamp(roughness, 0.0, 1.0);
 	metallic = clamp(metallic, 0.0, 1.0);
+	// Alpha scissor after the last texture read (derivatives stay defined for the whole quad).
+	if ((material.flags & MATERIAL_FLAG_ALPHA_SCISSOR) != 0u && alpha < material.alpha_scissor_threshold) {
+		discard;
+	}
 	// Godot's f0: dielectrics reflect 0.16 * specular^2 (0.5 -> 4 %), metals their albedo.
 	float dielectric = 0.16 * material.specular * material.specular;
 	vec3 f0 = dielectric * (1.0 - metallic) + albedo * metallic;

@@ -39,6 +39,7 @@
 #define MATERIAL_FLAG_SPECULAR_DISABLED 8u
 #define MATERIAL_FLAG_ROUGHNESS_TEXTURE 16u
 #define MATERIAL_FLAG_METALLIC_TEXTURE 32u
+#define MATERIAL_FLAG_ALPHA_SCISSOR 64u
 
 /*************************************************************************/
 /* Set 0: render pass data                                               */
@@ -136,7 +137,7 @@ layout(set = 1, binding = 0, std140) uniform MaterialBlock { // 112 bytes.
 	float normal_scale; // 44
 	uint flags; // 48: MATERIAL_FLAG_*.
 	uint diffuse_mode; // 52: BRDF_DIFFUSE_*.
-	uint pad0; // 56
+	float alpha_scissor_threshold; // 56: MATERIAL_FLAG_ALPHA_SCISSOR discards alpha below it.
 	uint pad1; // 60
 	vec4 uv1; // 64: uv1_scale.xy, uv1_offset.xy.
 	vec4 roughness_channel; // 80: weights of the roughness texture's channels.
