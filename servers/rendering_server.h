@@ -139,6 +139,8 @@ public:
 		bool cull_back = true; // cull_mode = BACK (false = DISABLED, two-sided).
 		MaterialTransparency transparency = MATERIAL_TRANSPARENCY_DISABLED;
 		float alpha_scissor_threshold = 0.5f; // 0..1, ALPHA_SCISSOR only.
+		bool vertex_color_use_as_albedo = false; // albedo (rgb and alpha) *= the surface's ARRAY_COLOR.
+		bool vertex_color_is_srgb = false; // ARRAY_COLOR rgb is sRGB-encoded (decoded by the renderer).
 	};
 
 	/* LIGHT API enums */

@@ -72,13 +72,17 @@ struct ReferenceRenderer::Frame {
 // the face normal (c - a) x (b - a), which is the GPU's clockwise-front rule.
 float ReferenceRenderer::_surface_alpha(const Surface &p_surface, uint32_t p_prim, float p_b1, float p_b2) {
 	const ShadingMaterial &m = p_surface.material;
-	if (!m.textures[0].image) {
-		return m.alpha;
-	}
 	const uint32_t *tri = &p_surface.indices[p_prim * 3];
+	float alpha = m.alpha;
+	if (m.vertex_color && !p_surface.colors.empty()) {
+		alpha *= p_surface.colors[tri[0]].a * (1.0f - p_b1 - p_b2) + p_surface.colors[tri[1]].a * p_b1 + p_surface.colors[tri[2]].a * p_b2;
+	}
+	if (!m.textures[0].image) {
+		return alpha;
+	}
 	const Vector2 uv = (p_surface.uvs[tri[0]] * (1.0f - p_b1 - p_b2) + p_surface.uvs[tri[1]] * p_b1 + p_surface.uvs[tri[2]] * p_b2) * m.uv1_scale + m.uv1_offset;
 	const Color texel = m.nearest ? reference_sample_texture_nearest(*m.textures[0].image, uv) : reference_sample_texture_bilinear(*m.textures[0].image, uv);
-	return m.alpha * texel.a;
+	return alpha * texel.a;
 }
 
 void ReferenceRenderer::_surface_filter(const RTCFilterFunctionNArguments *p_args, bool p_occlusion) {
@@ -208,6 +212,8 @@ ReferenceRenderer::ShadingMaterial ReferenceRenderer::_resolve_material(RID p_ma
 	m.nearest = RS::material_texture_filter_is_nearest(p.texture_filter);
 	m.transparency = p.transparency;
 	m.alpha_scissor_threshold = p.alpha_scissor_threshold;
+	m.vertex_color = p.vertex_color_use_as_albedo;
+	m.vertex_color_srgb = p.vertex_color_is_srgb;
 	return m;
 }
 
@@ -279,6 +285,9 @@ bool ReferenceRenderer::_build_surface(const RS::SurfaceData &p_data, const Tran
 	}
 	if (p_data.uvs.size() == count) {
 		r_surface.uvs = p_data.uvs;
+	}
+	if (p_data.colors.size() == count) {
+		r_surface.colors = p_data.colors;
 	}
 	r_surface.face_normals.resize(tri_count);
 	for (uint32_t t = 0; t < tri_count; t++) {
@@ -652,6 +661,13 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 		Color texel = sample(m.textures[0], uv);
 		albedo = albedo * Vector3(Color::srgb_to_linear_channel(texel.r), Color::srgb_to_linear_channel(texel.g), Color::srgb_to_linear_channel(texel.b));
 		alpha *= texel.a;
+	}
+	if (m.vertex_color && !s.colors.empty()) {
+		// The rasteriser's interpolation of the vertex colours (scene_forward_clustered.glsl: albedo *= COLOR).
+		const Color c = s.colors[i0] * b0 + s.colors[i1] * b1 + s.colors[i2] * b2;
+		const Color rgb = m.vertex_color_srgb ? c.srgb_to_linear() : c;
+		albedo = albedo * Vector3(rgb.r, rgb.g, rgb.b);
+		alpha *= c.a;
 	}
 	// ALPHA: Godot's mix blend over the radiance behind the surface (the same ray continued past it).
 	auto composite = [&](const Color &p_color) {

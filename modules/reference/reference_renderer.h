@@ -155,6 +155,8 @@ private:
 		// ALPHA: composited over what the ray meets behind it; casts no shadow (as Godot).
 		RS::MaterialTransparency transparency = RS::MATERIAL_TRANSPARENCY_DISABLED;
 		float alpha_scissor_threshold = 0.5f;
+		bool vertex_color = false; // vertex_color_use_as_albedo: albedo and alpha *= the surface's colours.
+		bool vertex_color_srgb = false; // vertex_color_is_srgb: their rgb is decoded first.
 	};
 
 	// One mesh surface of one instance, in world space (one Embree geometry).
@@ -164,6 +166,7 @@ private:
 		std::vector<Vector3> tangents; // world basis * object tangent.
 		std::vector<Vector3> binormals; // cross(normal, tangent) * sign, per vertex (as the GPU).
 		std::vector<Vector2> uvs; // Zero when the surface has none.
+		std::vector<Color> colors; // ARRAY_COLOR; empty when the surface has none (white).
 		std::vector<uint32_t> indices; // 3 per triangle.
 		std::vector<Vector3> face_normals; // (c - a) x (b - a): points to the front (clockwise) side.
 		ShadingMaterial material;

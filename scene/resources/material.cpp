@@ -64,6 +64,8 @@ RS::MaterialParams BaseMaterial3D::get_params() const {
 		RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR, RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR, RS::MATERIAL_TRANSPARENCY_ALPHA };
 	p.transparency = transparencies[transparency];
 	p.alpha_scissor_threshold = alpha_scissor_threshold;
+	p.vertex_color_use_as_albedo = vertex_color_use_as_albedo;
+	p.vertex_color_is_srgb = vertex_color_is_srgb;
 	return p;
 }
 
@@ -119,6 +121,16 @@ void BaseMaterial3D::set_transparency(Transparency p_transparency) {
 void BaseMaterial3D::set_alpha_scissor_threshold(float p_threshold) {
 	ERR_FAIL_COND_MSG(!Math::is_finite(p_threshold) || p_threshold < 0.0f || p_threshold > 1.0f, vformat("alpha_scissor_threshold must be between 0 and 1; got %s. The old value is kept.", rtos(p_threshold).c_str()));
 	alpha_scissor_threshold = p_threshold;
+	_update_params();
+}
+
+void BaseMaterial3D::set_flag_vertex_color_use_as_albedo(bool p_enabled) {
+	vertex_color_use_as_albedo = p_enabled;
+	_update_params();
+}
+
+void BaseMaterial3D::set_flag_vertex_color_is_srgb(bool p_enabled) {
+	vertex_color_is_srgb = p_enabled;
 	_update_params();
 }
 
@@ -299,6 +311,10 @@ void BaseMaterial3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_transparency"), &BaseMaterial3D::get_transparency);
 	ClassDB::bind_method(D_METHOD("set_alpha_scissor_threshold", "threshold"), &BaseMaterial3D::set_alpha_scissor_threshold);
 	ClassDB::bind_method(D_METHOD("get_alpha_scissor_threshold"), &BaseMaterial3D::get_alpha_scissor_threshold);
+	ClassDB::bind_method(D_METHOD("set_flag_vertex_color_use_as_albedo", "enable"), &BaseMaterial3D::set_flag_vertex_color_use_as_albedo);
+	ClassDB::bind_method(D_METHOD("get_flag_vertex_color_use_as_albedo"), &BaseMaterial3D::get_flag_vertex_color_use_as_albedo);
+	ClassDB::bind_method(D_METHOD("set_flag_vertex_color_is_srgb", "enable"), &BaseMaterial3D::set_flag_vertex_color_is_srgb);
+	ClassDB::bind_method(D_METHOD("get_flag_vertex_color_is_srgb"), &BaseMaterial3D::get_flag_vertex_color_is_srgb);
 	ClassDB::bind_method(D_METHOD("set_texture_filter", "mode"), &BaseMaterial3D::set_texture_filter);
 	ClassDB::bind_method(D_METHOD("get_texture_filter"), &BaseMaterial3D::get_texture_filter);
 
@@ -311,6 +327,10 @@ void BaseMaterial3D::_bind_methods() {
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "shading_mode", PROPERTY_HINT_ENUM, "Unshaded,Per-Pixel,Per-Vertex"), "set_shading_mode", "get_shading_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "diffuse_mode", PROPERTY_HINT_ENUM, "Burley,Lambert,Lambert Wrap,Toon"), "set_diffuse_mode", "get_diffuse_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "specular_mode", PROPERTY_HINT_ENUM, "SchlickGGX,Toon,Disabled"), "set_specular_mode", "get_specular_mode");
+
+	ADD_GROUP("Vertex Color", "vertex_color");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "vertex_color_use_as_albedo"), "set_flag_vertex_color_use_as_albedo", "get_flag_vertex_color_use_as_albedo");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "vertex_color_is_srgb"), "set_flag_vertex_color_is_srgb", "get_flag_vertex_color_is_srgb");
 
 	ADD_GROUP("Albedo", "albedo_");
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "albedo_color"), "set_albedo", "get_albedo");

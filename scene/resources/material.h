@@ -95,6 +95,8 @@ private:
 	CullMode cull_mode = CULL_BACK;
 	Transparency transparency = TRANSPARENCY_DISABLED;
 	float alpha_scissor_threshold = 0.5f;
+	bool vertex_color_use_as_albedo = false;
+	bool vertex_color_is_srgb = false;
 	Color albedo = Color(1, 1, 1, 1);
 	Ref<Texture2D> albedo_texture;
 	float metallic = 0.0f;
@@ -136,6 +138,11 @@ public:
 	// 0..1: ALPHA_SCISSOR (and ALPHA_HASH) keep the pixels whose alpha is at least this.
 	void set_alpha_scissor_threshold(float p_threshold);
 	float get_alpha_scissor_threshold() const { return alpha_scissor_threshold; }
+	// Godot's "Vertex Color" group: the mesh's vertex colours multiply the albedo (and its alpha).
+	void set_flag_vertex_color_use_as_albedo(bool p_enabled);
+	bool get_flag_vertex_color_use_as_albedo() const { return vertex_color_use_as_albedo; }
+	void set_flag_vertex_color_is_srgb(bool p_enabled);
+	bool get_flag_vertex_color_is_srgb() const { return vertex_color_is_srgb; }
 
 	void set_albedo(const Color &p_albedo);
 	Color get_albedo() const { return albedo; }

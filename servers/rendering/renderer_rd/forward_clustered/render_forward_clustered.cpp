@@ -631,6 +631,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 				item.view_depth = (centre - p_data.cam_transform.origin).dot(view_forward);
 			}
 			item.pc = pc;
+			item.pc.flags = gpu->has_colors ? DRAW_FLAG_HAS_COLOR : 0u;
 			items.push_back(item);
 		}
 	}

@@ -118,6 +118,9 @@ public:
 	static_assert(sizeof(SceneDataUBO) == 320, "SceneDataUBO must match scene_forward_clustered_inc.glsl.");
 	static_assert(sizeof(SceneDataUBO) % 16 == 0, "SceneDataUBO must stay a multiple of 16 bytes.");
 
+	// DrawData::flags (DRAW_FLAG_* in scene_forward_clustered_inc.glsl).
+	static constexpr uint32_t DRAW_FLAG_HAS_COLOR = 1; // The surface has ARRAY_COLOR (else the shader reads white).
+
 	// Mirror of the DrawData push constant in scene_forward_clustered_inc.glsl.
 	struct DrawPushConstant {
 		float world_from_model[16];

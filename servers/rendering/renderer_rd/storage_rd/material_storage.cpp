@@ -138,6 +138,9 @@ MaterialStorage::MaterialUBO MaterialStorage::_make_ubo(const RS::MaterialParams
 	if (p_has_metallic) {
 		ubo.flags |= MATERIAL_FLAG_METALLIC_TEXTURE;
 	}
+	if (p_params.vertex_color_use_as_albedo) {
+		ubo.flags |= MATERIAL_FLAG_VERTEX_COLOR | (p_params.vertex_color_is_srgb ? uint32_t(MATERIAL_FLAG_VERTEX_COLOR_SRGB) : 0u);
+	}
 	if (p_params.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR) {
 		ubo.flags |= MATERIAL_FLAG_ALPHA_SCISSOR;
 		ubo.alpha_scissor_threshold = p_params.alpha_scissor_threshold;

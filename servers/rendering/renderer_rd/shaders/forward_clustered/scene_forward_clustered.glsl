@@ -39,6 +39,7 @@ layout(location = 0) in vec3 vertex_attrib; // Object space.
 layout(location = 1) in vec3 normal_attrib;
 layout(location = 2) in vec4 tangent_attrib; // xyz, w = binormal sign.
 layout(location = 3) in vec2 uv_attrib;
+layout(location = 4) in vec4 color_attrib; // ARRAY_COLOR (white without one).
 
 // Both variants compute gl_Position with identical code; precise (no FMA contraction or reassociation)
 // makes the depth pre-pass and the colour pass produce bit-identical depths, so the colour pass can
@@ -52,6 +53,7 @@ layout(location = 1) out vec3 normal_interp; // View space.
 layout(location = 2) out vec3 tangent_interp; // View space.
 layout(location = 3) out vec3 binormal_interp; // View space.
 layout(location = 4) out vec2 uv_interp;
+layout(location = 5) out vec4 color_interp;
 #endif
 
 void main() {
@@ -68,6 +70,7 @@ void main() {
 	tangent_interp = view_basis * tangent_world;
 	binormal_interp = cross(normal_interp, tangent_interp) * (tangent_attrib.w < 0.0 ? -1.0 : 1.0);
 	uv_interp = uv_attrib;
+	color_interp = (draw.flags & DRAW_FLAG_HAS_COLOR) != 0u ? color_attrib : vec4(1.0);
 #endif
 }
 
@@ -103,6 +106,7 @@ layout(location = 1) in vec3 normal_interp;
 layout(location = 2) in vec3 tangent_interp;
 layout(location = 3) in vec3 binormal_interp;
 layout(location = 4) in vec2 uv_interp;
+layout(location = 5) in vec4 color_interp;
 
 layout(location = 0) out vec4 frag_color;
 #ifdef USE_SS_RADIOSITY
@@ -177,6 +181,11 @@ void main() {
 		vec4 texel = texture(sampler2D(albedo_texture, material_texture_sampler), uv);
 		albedo *= srgb_to_linear(texel.rgb);
 		alpha *= texel.a;
+	}
+	if ((material.flags & MATERIAL_FLAG_VERTEX_COLOR) != 0u) {
+		// Godot: albedo_tex *= COLOR (vertex_color_is_srgb decodes COLOR.rgb first).
+		albedo *= (material.flags & MATERIAL_FLAG_VERTEX_COLOR_SRGB) != 0u ? srgb_to_linear(color_interp.rgb) : color_interp.rgb;
+		alpha *= color_interp.a;
 	}
 
 	if ((material.flags & MATERIAL_FLAG_UNSHADED) != 0u) {

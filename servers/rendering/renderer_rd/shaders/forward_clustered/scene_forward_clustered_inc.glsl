@@ -40,6 +40,11 @@
 #define MATERIAL_FLAG_ROUGHNESS_TEXTURE 16u
 #define MATERIAL_FLAG_METALLIC_TEXTURE 32u
 #define MATERIAL_FLAG_ALPHA_SCISSOR 64u
+#define MATERIAL_FLAG_VERTEX_COLOR 128u
+#define MATERIAL_FLAG_VERTEX_COLOR_SRGB 256u
+
+// Draw flags. Must match RenderForwardClustered::DRAW_FLAG_*.
+#define DRAW_FLAG_HAS_COLOR 1u
 
 /*************************************************************************/
 /* Set 0: render pass data                                               */
@@ -161,7 +166,7 @@ layout(push_constant, std430) uniform DrawData { // 128 bytes.
 	mat4 world_from_model; // 0
 	vec4 normal_matrix[3]; // 64: columns of inverse(transpose(world_from_model.basis)), xyz used.
 	uint layer_mask; // 112: instance render layers, matched with LightData.cull_mask.
-	uint flags; // 116: unused.
+	uint flags; // 116: DRAW_FLAG_*.
 	uint pad0; // 120
 	uint pad1; // 124
 }
