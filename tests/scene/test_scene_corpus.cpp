@@ -271,6 +271,32 @@ surface_material_override/0 = SubResource("ShaderMaterial_a")
 	delete root;
 }
 
+TEST_CASE("[ResourceFormatText] A default value the file wrote out is written back") {
+	// Godot writes some defaults (alpha_scissor_threshold = 0.5, an identity transform); a load/save
+	// keeps those lines rather than dropping them as defaults (issue 15's survey: 3 + 1 lines).
+	SceneTest::DummyServer server;
+	const char *text = R"([gd_scene format=3]
+
+[sub_resource type="StandardMaterial3D" id="StandardMaterial3D_a"]
+transparency = 2
+alpha_scissor_threshold = 0.5
+
+[node name="Root" type="Node3D"]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0)
+
+[node name="Quad" type="MeshInstance3D" parent="."]
+material_override = SubResource("StandardMaterial3D_a")
+)";
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(text, "defaults.tscn", &error);
+	REQUIRE_MESSAGE(root != nullptr, error.c_str());
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	CHECK(saved.find("transparency = 2\nalpha_scissor_threshold = 0.5\n") != String::npos);
+	CHECK(saved.find("[node name=\"Root\" type=\"Node3D\"]\ntransform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0)\n") != String::npos);
+	CHECK(saved.find("visible") == String::npos); // Defaults the file did not write stay out.
+	delete root;
+}
+
 TEST_CASE("[ResourceFormatText] Warnings: one line per distinct problem with a count") {
 	SceneTest::DummyServer server;
 	String text = "[gd_scene format=3]\n\n[node name=\"Root\" type=\"Node3D\"]\n";
