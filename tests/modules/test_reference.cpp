@@ -615,6 +615,21 @@ struct CrossScene {
 	}
 };
 
+// Draws p_scene with the Forward+ renderer and with the reference, each through its own GodotInstance.
+static void render_gpu_and_reference(const CrossScene &p_scene, int p_w, int p_h, Image &r_gpu, Image &r_ref) {
+	String error;
+	{
+		GodotInstance engine;
+		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 64), error.c_str());
+		r_gpu = p_scene.render(engine.get_rendering_server(), p_w, p_h);
+	}
+	{
+		GodotInstance reference;
+		REQUIRE_MESSAGE(reference.start_with_compositor(new RendererCompositorReference(ReferenceRenderOptions()), &error), error.c_str());
+		r_ref = p_scene.render(reference.get_rendering_server(), p_w, p_h);
+	}
+}
+
 // A UV sphere with smooth normals, front faces clockwise seen from outside.
 static RS::SurfaceData make_sphere(float p_radius, int p_rings, int p_segments) {
 	RS::SurfaceData s;
@@ -684,17 +699,7 @@ TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pix
 	scene.ambient_energy = 0.5f;
 
 	Image gpu, ref;
-	String error;
-	{
-		GodotInstance engine;
-		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 64), error.c_str());
-		gpu = scene.render(engine.get_rendering_server(), W, H);
-	}
-	{
-		GodotInstance reference;
-		REQUIRE_MESSAGE(reference.start_with_compositor(new RendererCompositorReference(ReferenceRenderOptions()), &error), error.c_str());
-		ref = scene.render(reference.get_rendering_server(), W, H);
-	}
+	render_gpu_and_reference(scene, W, H, gpu, ref);
 	REQUIRE(gpu.get_width() == W);
 	REQUIRE(gpu.get_height() == H);
 	REQUIRE(ref.get_width() == W);
@@ -750,17 +755,7 @@ TEST_CASE("[Reference][Render] vertex_color_use_as_albedo: vertex colours multip
 	const int W = 96, H = 48;
 	scene.camera = Transform3D(Basis(), Vector3(0, 0, 1.3f));
 	Image gpu, ref;
-	String error;
-	{
-		GodotInstance engine;
-		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 64), error.c_str());
-		gpu = scene.render(engine.get_rendering_server(), W, H);
-	}
-	{
-		GodotInstance reference;
-		REQUIRE_MESSAGE(reference.start_with_compositor(new RendererCompositorReference(ReferenceRenderOptions()), &error), error.c_str());
-		ref = scene.render(reference.get_rendering_server(), W, H);
-	}
+	render_gpu_and_reference(scene, W, H, gpu, ref);
 	REQUIRE(gpu.get_width() == W);
 	REQUIRE(ref.get_width() == W);
 	int bad = 0, covered = 0;
