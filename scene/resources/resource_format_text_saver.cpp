@@ -57,7 +57,9 @@ struct SaveState {
 		const TextSceneData *d = _data_or_null(p_obj);
 		auto in_file = [d](const String &p_name) { return d && std::find(d->key_order.begin(), d->key_order.end(), p_name) != d->key_order.end(); };
 		for (const PropertyInfo &pi : plist) {
-			if (pi.is_group_marker() || !(pi.usage & PROPERTY_USAGE_STORAGE)) {
+			// A property hidden here (e.g. physical light units, off without project settings) is still
+			// written when the file had it.
+			if (pi.is_group_marker() || (!(pi.usage & PROPERTY_USAGE_STORAGE) && !in_file(pi.name))) {
 				continue;
 			}
 			if (d && std::any_of(d->raw.begin(), d->raw.end(), [&pi](const TextSceneData::StoredProperty &p_sp) { return p_sp.name == pi.name; })) {

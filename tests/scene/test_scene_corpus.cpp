@@ -272,8 +272,8 @@ surface_material_override/0 = SubResource("ShaderMaterial_a")
 }
 
 TEST_CASE("[ResourceFormatText] A default value the file wrote out is written back") {
-	// Godot writes some defaults (alpha_scissor_threshold = 0.5, an identity transform); a load/save
-	// keeps those lines rather than dropping them as defaults (issue 15's survey: 3 + 1 lines).
+	// Godot writes some defaults (alpha_scissor_threshold = 0.5, an identity transform) and properties
+	// we hide; a load/save keeps those lines (issue 15's survey: 3 + 1 + 4 lines).
 	SceneTest::DummyServer server;
 	const char *text = R"([gd_scene format=3]
 
@@ -286,6 +286,10 @@ transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0)
 
 [node name="Quad" type="MeshInstance3D" parent="."]
 material_override = SubResource("StandardMaterial3D_a")
+
+[node name="Lamp" type="OmniLight3D" parent="."]
+light_intensity_lumens = 800.0
+light_temperature = 5000.0
 )";
 	String error;
 	Node *root = ResourceFormatText::load_scene_from_string(text, "defaults.tscn", &error);
@@ -293,6 +297,8 @@ material_override = SubResource("StandardMaterial3D_a")
 	const String saved = ResourceFormatText::save_scene_to_string(root);
 	CHECK(saved.find("transparency = 2\nalpha_scissor_threshold = 0.5\n") != String::npos);
 	CHECK(saved.find("[node name=\"Root\" type=\"Node3D\"]\ntransform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0)\n") != String::npos);
+	// Hidden properties (physical light units are off without project settings) the file had.
+	CHECK(saved.find("light_intensity_lumens = 800.0\nlight_temperature = 5000.0\n") != String::npos);
 	CHECK(saved.find("visible") == String::npos); // Defaults the file did not write stay out.
 	delete root;
 }
