@@ -78,6 +78,14 @@ public:
 		MATERIAL_SPECULAR_DISABLED,
 	};
 
+	// How a material's alpha is used (BaseMaterial3D::Transparency, reduced: ALPHA_HASH draws as
+	// ALPHA_SCISSOR and ALPHA_DEPTH_PRE_PASS as ALPHA, warned by BaseMaterial3D).
+	enum MaterialTransparency {
+		MATERIAL_TRANSPARENCY_DISABLED, // Opaque: alpha is ignored.
+		MATERIAL_TRANSPARENCY_ALPHA, // Blended over what is behind (after the opaque pass, back to front), no depth write.
+		MATERIAL_TRANSPARENCY_ALPHA_SCISSOR, // Opaque where alpha >= alpha_scissor_threshold, a hole elsewhere.
+	};
+
 	// Which channel of a roughness or metallic texture is read (BaseMaterial3D::TextureChannel).
 	enum MaterialTextureChannel {
 		MATERIAL_TEXTURE_CHANNEL_RED,
@@ -87,8 +95,9 @@ public:
 		MATERIAL_TEXTURE_CHANNEL_GRAYSCALE,
 	};
 
-	// BaseMaterial3D::TextureFilter. Textures have no mip chain here: the *_WITH_MIPMAPS filters read
-	// the base level with their nearest or linear filter.
+	// BaseMaterial3D::TextureFilter. The *_WITH_MIPMAPS filters blend the two nearest levels of the
+	// texture's mip chain (servers/rendering/storage/texture_mipmaps.h); the anisotropic ones sample as
+	// their isotropic filter (no anisotropy here; BaseMaterial3D warns).
 	enum MaterialTextureFilter {
 		MATERIAL_TEXTURE_FILTER_NEAREST,
 		MATERIAL_TEXTURE_FILTER_LINEAR,
@@ -128,6 +137,10 @@ public:
 		MaterialSpecularMode specular_mode = MATERIAL_SPECULAR_SCHLICK_GGX;
 		bool unshaded = false; // shading_mode = UNSHADED: output albedo only.
 		bool cull_back = true; // cull_mode = BACK (false = DISABLED, two-sided).
+		MaterialTransparency transparency = MATERIAL_TRANSPARENCY_DISABLED;
+		float alpha_scissor_threshold = 0.5f; // 0..1, ALPHA_SCISSOR only.
+		bool vertex_color_use_as_albedo = false; // albedo (rgb and alpha) *= the surface's ARRAY_COLOR.
+		bool vertex_color_is_srgb = false; // ARRAY_COLOR rgb is sRGB-encoded (decoded by the renderer).
 	};
 
 	/* LIGHT API enums */
@@ -270,7 +283,7 @@ public:
 	enum RenderingInfo {
 		RENDERING_INFO_AREA_SHADOW_MAPS_IN_FRAME, // Shadow maps (sample points) the area lights averaged.
 		RENDERING_INFO_AREA_SHADOW_DRAW_CALLS_IN_FRAME, // Draw calls of the area shadow depth pass.
-		RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME, // Draw calls of the opaque pass (Godot's name).
+		RENDERING_INFO_TOTAL_DRAW_CALLS_IN_FRAME, // Draw calls of the colour passes, opaque and transparent (Godot's name).
 		RENDERING_INFO_AREA_LIGHT_DRAW_CALLS_IN_FRAME, // Of those, drawn with area-light shader code.
 		RENDERING_INFO_MAX,
 	};

@@ -17,14 +17,16 @@
 #include "core/math/math_funcs.h"
 #include "modules/reference/area_light_shapes.h"
 #include "modules/reference/reference_light_sampling.h"
+#include "modules/reference/reference_texture.h"
+#include "servers/rendering/storage/texture_mipmaps.h"
 
 #include <embree3/rtcore.h>
 
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -68,16 +70,44 @@ struct ReferenceRenderer::Frame {
 // Back-face culling for cull_back materials (primary rays only; shadow rays see both faces, as a
 // closed occluder casts the same shadow either way). A hit is front-facing when the ray runs against
 // the face normal (c - a) x (b - a), which is the GPU's clockwise-front rule.
-static void _reference_cull_filter(const RTCFilterFunctionNArguments *p_args) {
-	const std::vector<Vector3> *face_normals = static_cast<const std::vector<Vector3> *>(p_args->geometryUserPtr);
+float ReferenceRenderer::_surface_alpha(const Surface &p_surface, uint32_t p_prim, float p_b1, float p_b2) {
+	const ShadingMaterial &m = p_surface.material;
+	const uint32_t *tri = &p_surface.indices[p_prim * 3];
+	float alpha = m.alpha;
+	if (m.vertex_color && !p_surface.colors.empty()) {
+		alpha *= p_surface.colors[tri[0]].a * (1.0f - p_b1 - p_b2) + p_surface.colors[tri[1]].a * p_b1 + p_surface.colors[tri[2]].a * p_b2;
+	}
+	if (!m.textures[0].image) {
+		return alpha;
+	}
+	const Vector2 uv = (p_surface.uvs[tri[0]] * (1.0f - p_b1 - p_b2) + p_surface.uvs[tri[1]] * p_b1 + p_surface.uvs[tri[2]] * p_b2) * m.uv1_scale + m.uv1_offset;
+	const Color texel = m.nearest ? reference_sample_texture_nearest(*m.textures[0].image, uv) : reference_sample_texture_bilinear(*m.textures[0].image, uv);
+	return alpha * texel.a;
+}
+
+void ReferenceRenderer::_surface_filter(const RTCFilterFunctionNArguments *p_args, bool p_occlusion) {
+	const Surface &s = *static_cast<const Surface *>(p_args->geometryUserPtr);
 	for (unsigned i = 0; i < p_args->N; i++) {
 		if (p_args->valid[i] != -1) {
 			continue;
 		}
-		unsigned prim = RTCHitN_primID(p_args->hit, p_args->N, i);
-		Vector3 dir(RTCRayN_dir_x(p_args->ray, p_args->N, i), RTCRayN_dir_y(p_args->ray, p_args->N, i), RTCRayN_dir_z(p_args->ray, p_args->N, i));
-		if ((*face_normals)[prim].dot(dir) >= 0.0f) {
-			p_args->valid[i] = 0;
+		const unsigned prim = RTCHitN_primID(p_args->hit, p_args->N, i);
+		if (p_occlusion && s.material.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA) {
+			p_args->valid[i] = 0; // Godot: alpha-blended materials cast no shadow.
+			continue;
+		}
+		if (!p_occlusion && s.material.cull_back) {
+			const Vector3 dir(RTCRayN_dir_x(p_args->ray, p_args->N, i), RTCRayN_dir_y(p_args->ray, p_args->N, i), RTCRayN_dir_z(p_args->ray, p_args->N, i));
+			if (s.face_normals[prim].dot(dir) >= 0.0f) {
+				p_args->valid[i] = 0;
+				continue;
+			}
+		}
+		if (s.material.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR) {
+			const float alpha = _surface_alpha(s, prim, RTCHitN_u(p_args->hit, p_args->N, i), RTCHitN_v(p_args->hit, p_args->N, i));
+			if (alpha < s.material.alpha_scissor_threshold) {
+				p_args->valid[i] = 0; // The shader's discard: a hole for every ray.
+			}
 		}
 	}
 }
@@ -165,17 +195,14 @@ ReferenceRenderer::ShadingMaterial ReferenceRenderer::_resolve_material(RID p_ma
 	// Lambert wrap and toon fall back to Lambert, as on the GPU.
 	m.diffuse_mode = p.diffuse_mode == RS::MATERIAL_DIFFUSE_BURLEY ? BRDF_DIFFUSE_BURLEY : BRDF_DIFFUSE_LAMBERT;
 	m.cull_back = p.cull_back;
-	if (p.albedo_texture.is_valid() && material_storage->owns_texture(p.albedo_texture)) {
-		m.albedo_texture = material_storage->texture_get_image(p.albedo_texture);
-	}
-	if (p.normal_texture.is_valid() && material_storage->owns_texture(p.normal_texture)) {
-		m.normal_texture = material_storage->texture_get_image(p.normal_texture);
-	}
-	if (p.roughness_texture.is_valid() && material_storage->owns_texture(p.roughness_texture)) {
-		m.roughness_texture = material_storage->texture_get_image(p.roughness_texture);
-	}
-	if (p.metallic_texture.is_valid() && material_storage->owns_texture(p.metallic_texture)) {
-		m.metallic_texture = material_storage->texture_get_image(p.metallic_texture);
+	// The mip chains (made once per texture, here on the main thread) only for the mipmap filters.
+	m.mipmaps = p.texture_filter != RS::MATERIAL_TEXTURE_FILTER_NEAREST && p.texture_filter != RS::MATERIAL_TEXTURE_FILTER_LINEAR;
+	const RID textures[4] = { p.albedo_texture, p.normal_texture, p.roughness_texture, p.metallic_texture };
+	for (int i = 0; i < 4; i++) {
+		if (textures[i].is_valid() && material_storage->owns_texture(textures[i])) {
+			m.textures[i].image = material_storage->texture_get_image(textures[i]);
+			m.textures[i].levels = m.mipmaps ? material_storage->texture_get_mipmaps(textures[i], i == 0) : nullptr;
+		}
 	}
 	// The GPU's conversions (RendererRD::MaterialStorage::_make_ubo).
 	RS::material_texture_channel_weights(p.roughness_texture_channel, m.roughness_channel);
@@ -183,6 +210,10 @@ ReferenceRenderer::ShadingMaterial ReferenceRenderer::_resolve_material(RID p_ma
 	m.uv1_scale = Vector2(p.uv1_scale.x, p.uv1_scale.y);
 	m.uv1_offset = Vector2(p.uv1_offset.x, p.uv1_offset.y);
 	m.nearest = RS::material_texture_filter_is_nearest(p.texture_filter);
+	m.transparency = p.transparency;
+	m.alpha_scissor_threshold = p.alpha_scissor_threshold;
+	m.vertex_color = p.vertex_color_use_as_albedo;
+	m.vertex_color_srgb = p.vertex_color_is_srgb;
 	return m;
 }
 
@@ -254,6 +285,9 @@ bool ReferenceRenderer::_build_surface(const RS::SurfaceData &p_data, const Tran
 	}
 	if (p_data.uvs.size() == count) {
 		r_surface.uvs = p_data.uvs;
+	}
+	if (p_data.colors.size() == count) {
+		r_surface.colors = p_data.colors;
 	}
 	r_surface.face_normals.resize(tri_count);
 	for (uint32_t t = 0; t < tri_count; t++) {
@@ -330,49 +364,6 @@ bool ReferenceRenderer::_make_light(const RenderSceneData::LightInstance &p_inst
 	d.specular_amount = light_storage->light_get_param(rid, RS::LIGHT_PARAM_SPECULAR);
 	d.cull_mask = light_storage->light_get_cull_mask(rid);
 	return true;
-}
-
-/*************************************************************************/
-/* Texture sampling                                                      */
-/*************************************************************************/
-
-Color reference_sample_texture_nearest(const Image &p_image, const Vector2 &p_uv) {
-	const int w = p_image.get_width();
-	const int h = p_image.get_height();
-	if (w <= 0 || h <= 0) {
-		return Color(1, 1, 1, 1);
-	}
-	auto wrap = [](float p_t, int p_n) { long i = long(std::floor(p_t * float(p_n))) % p_n; return int(i < 0 ? i + p_n : i); };
-	const float *t = p_image.ptr() + (size_t(wrap(p_uv.y, h)) * w + wrap(p_uv.x, w)) * 4;
-	return Color(t[0], t[1], t[2], t[3]);
-}
-
-Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv) {
-	const int w = p_image.get_width();
-	const int h = p_image.get_height();
-	if (w <= 0 || h <= 0) {
-		return Color(1, 1, 1, 1);
-	}
-	const std::vector<float> &data = p_image.get_data();
-	// Vulkan LINEAR: texel space coordinate u * size - 0.5, weights from its fraction, REPEAT wrap.
-	float fx = p_uv.x * float(w) - 0.5f;
-	float fy = p_uv.y * float(h) - 0.5f;
-	float x0f = std::floor(fx);
-	float y0f = std::floor(fy);
-	float ax = fx - x0f;
-	float ay = fy - y0f;
-	auto wrap = [](long p_i, int p_n) { long m = p_i % p_n; return int(m < 0 ? m + p_n : m); };
-	int x0 = wrap(long(x0f), w), x1 = wrap(long(x0f) + 1, w);
-	int y0 = wrap(long(y0f), h), y1 = wrap(long(y0f) + 1, h);
-	float out[4];
-	for (int c = 0; c < 4; c++) {
-		float t00 = data[(size_t(y0) * w + x0) * 4 + c];
-		float t10 = data[(size_t(y0) * w + x1) * 4 + c];
-		float t01 = data[(size_t(y1) * w + x0) * 4 + c];
-		float t11 = data[(size_t(y1) * w + x1) * 4 + c];
-		out[c] = (t00 * (1.0f - ax) + t10 * ax) * (1.0f - ay) + (t01 * (1.0f - ax) + t11 * ax) * ay;
-	}
-	return Color(out[0], out[1], out[2], out[3]);
 }
 
 /*************************************************************************/
@@ -467,9 +458,12 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 		for (size_t k = 0; k < s.indices.size(); k++) {
 			ib[k] = s.indices[k];
 		}
-		if (s.material.cull_back) {
-			rtcSetGeometryUserData(geom, &s.face_normals);
-			rtcSetGeometryIntersectFilterFunction(geom, _reference_cull_filter);
+		if (s.material.cull_back || s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+			rtcSetGeometryUserData(geom, &s);
+			rtcSetGeometryIntersectFilterFunction(geom, _surface_intersect_filter);
+			if (s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+				rtcSetGeometryOccludedFilterFunction(geom, _surface_occluded_filter);
+			}
 		}
 		rtcCommitGeometry(geom);
 		rtcAttachGeometryByID(frame.scene, geom, i);
@@ -578,11 +572,20 @@ Color ReferenceRenderer::_shade_pixel(const Frame &p_frame, int p_x, int p_y, Re
 		return p_frame.clear_color;
 	}
 	Vector3 dir = segment / seg_len;
+	// Ray differentials: the rays through the centres of the pixels right of and below this one.
+	RayDifferentials diff;
+	for (int k = 0; k < 2; k++) {
+		const float nx = ndc_x + (k == 0 ? 2.0f / float(p_frame.width) : 0.0f);
+		const float ny = ndc_y + (k == 1 ? 2.0f / float(p_frame.height) : 0.0f);
+		const Vector3 o = p_frame.world_from_view.xform(p_frame.view_from_clip.xform(Vector3(nx, ny, 0.0f)));
+		diff.origins[k] = o;
+		diff.dirs[k] = (p_frame.world_from_view.xform(p_frame.view_from_clip.xform(Vector3(nx, ny, 1.0f))) - o).normalized();
+	}
 	bool hit = false;
-	return _shade_ray(p_frame, p_frame.options, origin, dir, seg_len, p_frame.options.bounces, r_rng, r_counters, hit);
+	return _shade_ray(p_frame, p_frame.options, origin, dir, seg_len, p_frame.options.bounces, r_rng, r_counters, hit, &diff);
 }
 
-Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit) {
+Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit, const RayDifferentials *p_diff) {
 	const Vector3 &origin = p_origin;
 	const Vector3 &dir = p_dir;
 	const float seg_len = p_tfar;
@@ -629,19 +632,58 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 	Vector3 normal_interp = s.normals[i0] * b0 + s.normals[i1] * b1 + s.normals[i2] * b2;
 	Vector2 uv = s.uvs[i0] * b0 + s.uvs[i1] * b1 + s.uvs[i2] * b2;
 	uv = uv * m.uv1_scale + m.uv1_offset;
-	auto sample = [&m](const Image &p_image, const Vector2 &p_uv) { return m.nearest ? reference_sample_texture_nearest(p_image, p_uv) : reference_sample_texture_bilinear(p_image, p_uv); };
+	// Per-pixel steps of the (scaled) texture coordinate, for the mipmap filters (reference_texture.h).
+	Vector2 duv[2];
+	bool footprint = false;
+	if (m.mipmaps && p_diff) {
+		const Vector3 tri[3] = { s.positions[i0], s.positions[i1], s.positions[i2] };
+		const Vector2 tri_uv[3] = { s.uvs[i0] * m.uv1_scale + m.uv1_offset, s.uvs[i1] * m.uv1_scale + m.uv1_offset, s.uvs[i2] * m.uv1_scale + m.uv1_offset };
+		footprint = true;
+		for (int k = 0; k < 2 && footprint; k++) {
+			Vector2 neighbour;
+			footprint = reference_ray_plane_uv(p_diff->origins[k], p_diff->dirs[k], tri, tri_uv, neighbour);
+			duv[k] = neighbour - uv;
+		}
+	}
+	auto sample = [&](const ShadingMaterial::Texture &p_texture, const Vector2 &p_uv) {
+		if (!footprint) {
+			return m.nearest ? reference_sample_texture_nearest(*p_texture.image, p_uv) : reference_sample_texture_bilinear(*p_texture.image, p_uv);
+		}
+		const float lod = texture_mipmap_lod(duv[0], duv[1], p_texture.image->get_width(), p_texture.image->get_height());
+		return reference_sample_texture_lod(*p_texture.image, p_texture.levels, p_uv, lod, m.nearest);
+	};
 	const bool front_facing = s.face_normals[prim].dot(dir) < 0.0f;
 
 	// Fragment shader (scene_forward_clustered.glsl).
 	Vector3 albedo = m.albedo;
 	float alpha = m.alpha;
-	if (m.albedo_texture) {
-		Color texel = sample(*m.albedo_texture, uv);
+	if (m.textures[0].image) {
+		Color texel = sample(m.textures[0], uv);
 		albedo = albedo * Vector3(Color::srgb_to_linear_channel(texel.r), Color::srgb_to_linear_channel(texel.g), Color::srgb_to_linear_channel(texel.b));
 		alpha *= texel.a;
 	}
+	if (m.vertex_color && !s.colors.empty()) {
+		// The rasteriser's interpolation of the vertex colours (scene_forward_clustered.glsl: albedo *= COLOR).
+		const Color c = s.colors[i0] * b0 + s.colors[i1] * b1 + s.colors[i2] * b2;
+		const Color rgb = m.vertex_color_srgb ? c.srgb_to_linear() : c;
+		albedo = albedo * Vector3(rgb.r, rgb.g, rgb.b);
+		alpha *= c.a;
+	}
+	// ALPHA: Godot's mix blend over the radiance behind the surface (the same ray continued past it).
+	auto composite = [&](const Color &p_color) {
+		if (m.transparency != RS::MATERIAL_TRANSPARENCY_ALPHA) {
+			return p_color;
+		}
+		const float a = glsl_clamp(p_color.a, 0.0f, 1.0f);
+		const float step = 1e-4f * std::max(1.0f, std::max(std::fabs(vertex.x), std::max(std::fabs(vertex.y), std::fabs(vertex.z))));
+		bool behind_hit = false;
+		const Color behind = _shade_ray(p_frame, p_options, vertex + dir * step, dir, seg_len - rh.ray.tfar - step, p_bounces, r_rng, r_counters, behind_hit, p_diff);
+		Color out = p_color * a + behind * (1.0f - a);
+		out.a = a + behind.a * (1.0f - a);
+		return out;
+	};
 	if (m.unshaded) {
-		return Color(albedo.x, albedo.y, albedo.z, alpha);
+		return composite(Color(albedo.x, albedo.y, albedo.z, alpha));
 	}
 
 	Vector3 V = p_frame.orthogonal ? p_frame.world_from_view.basis.get_column(2).normalized() : (p_frame.world_from_view.origin - vertex).normalized();
@@ -649,12 +691,12 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 	if (!front_facing) {
 		N = -N;
 	}
-	if (m.normal_texture) {
+	if (m.textures[1].image) {
 		Vector3 tangent_interp = s.tangents[i0] * b0 + s.tangents[i1] * b1 + s.tangents[i2] * b2;
 		Vector3 binormal_interp = s.binormals[i0] * b0 + s.binormals[i1] * b1 + s.binormals[i2] * b2;
 		Vector3 T = (tangent_interp - N * N.dot(tangent_interp)).normalized();
 		Vector3 B = binormal_interp.normalized();
-		Color t = sample(*m.normal_texture, uv);
+		Color t = sample(m.textures[1], uv);
 		Vector3 nm(t.r * 2.0f - 1.0f, t.g * 2.0f - 1.0f, t.b * 2.0f - 1.0f);
 		nm.x *= m.normal_scale;
 		nm.y *= m.normal_scale;
@@ -663,12 +705,12 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 
 	auto channel = [](const Color &p_texel, const float p_weights[4]) { return p_texel.r * p_weights[0] + p_texel.g * p_weights[1] + p_texel.b * p_weights[2] + p_texel.a * p_weights[3]; };
 	float roughness = m.roughness;
-	if (m.roughness_texture) {
-		roughness *= channel(sample(*m.roughness_texture, uv), m.roughness_channel);
+	if (m.textures[2].image) {
+		roughness *= channel(sample(m.textures[2], uv), m.roughness_channel);
 	}
 	float metallic = m.metallic;
-	if (m.metallic_texture) {
-		metallic *= channel(sample(*m.metallic_texture, uv), m.metallic_channel);
+	if (m.textures[3].image) {
+		metallic *= channel(sample(m.textures[3], uv), m.metallic_channel);
 	}
 	roughness = glsl_clamp(roughness, 0.0f, 1.0f);
 	metallic = glsl_clamp(metallic, 0.0f, 1.0f);
@@ -802,5 +844,5 @@ Color ReferenceRenderer::_shade_ray(const Frame &p_frame, const ReferenceRenderO
 		specular_light += reference_sky_specular(p_frame.scene, p_options, p_frame.sky, point, r_rng, r_counters.shadow_rays);
 	}
 	Vector3 color = m.emission + (ambient_light + diffuse_light) * albedo * (1.0f - metallic) + specular_light + area_light;
-	return Color(color.x, color.y, color.z, alpha);
+	return composite(Color(color.x, color.y, color.z, alpha));
 }

@@ -87,6 +87,8 @@ struct ReferenceRenderStats {
 	double seconds = 0.0; // Wall time (reported, never asserted).
 };
 
+struct RTCFilterFunctionNArguments; // Embree.
+
 class ReferenceRenderer : public RendererSceneRender {
 public:
 	/*************************************************************************/
@@ -135,15 +137,26 @@ private:
 		bool unshaded = false;
 		bool specular_enabled = true;
 		bool cull_back = true;
-		const Image *albedo_texture = nullptr; // Valid during render_scene() only.
-		const Image *normal_texture = nullptr;
-		const Image *roughness_texture = nullptr; // Read through roughness_channel (weights per channel).
-		const Image *metallic_texture = nullptr;
+		// A texture: its base level and, for the mipmap filters, levels 1..n (valid during render_scene()).
+		struct Texture {
+			const Image *image = nullptr;
+			const std::vector<Image> *levels = nullptr;
+		};
+		// Albedo (sRGB chain), normal, roughness, metallic; roughness and metallic are read through their
+		// channel weights.
+		Texture textures[4];
 		float roughness_channel[4] = { 1, 0, 0, 0 };
 		float metallic_channel[4] = { 1, 0, 0, 0 };
 		Vector2 uv1_scale = Vector2(1, 1);
 		Vector2 uv1_offset;
 		bool nearest = false; // texture_filter NEAREST*: Vulkan NEAREST instead of LINEAR.
+		bool mipmaps = false; // texture_filter *_WITH_MIPMAPS*: sampled at the ray differentials' level.
+		// ALPHA_SCISSOR: cut-out geometry (rays pass where alpha < the threshold, shadow rays too).
+		// ALPHA: composited over what the ray meets behind it; casts no shadow (as Godot).
+		RS::MaterialTransparency transparency = RS::MATERIAL_TRANSPARENCY_DISABLED;
+		float alpha_scissor_threshold = 0.5f;
+		bool vertex_color = false; // vertex_color_use_as_albedo: albedo and alpha *= the surface's colours.
+		bool vertex_color_srgb = false; // vertex_color_is_srgb: their rgb is decoded first.
 	};
 
 	// One mesh surface of one instance, in world space (one Embree geometry).
@@ -153,6 +166,7 @@ private:
 		std::vector<Vector3> tangents; // world basis * object tangent.
 		std::vector<Vector3> binormals; // cross(normal, tangent) * sign, per vertex (as the GPU).
 		std::vector<Vector2> uvs; // Zero when the surface has none.
+		std::vector<Color> colors; // ARRAY_COLOR; empty when the surface has none (white).
 		std::vector<uint32_t> indices; // 3 per triangle.
 		std::vector<Vector3> face_normals; // (c - a) x (b - a): points to the front (clockwise) side.
 		ShadingMaterial material;
@@ -177,6 +191,13 @@ private:
 	mutable RID_Owner<RenderTarget, true> render_target_owner{ "ReferenceRenderTarget" };
 
 	ShadingMaterial _resolve_material(RID p_material) const;
+	// Embree filter of a surface with back-face culling or transparency (user data: its Surface):
+	// p_occlusion for shadow rays.
+	static void _surface_filter(const RTCFilterFunctionNArguments *p_args, bool p_occlusion);
+	static void _surface_intersect_filter(const RTCFilterFunctionNArguments *p_args) { _surface_filter(p_args, false); }
+	static void _surface_occluded_filter(const RTCFilterFunctionNArguments *p_args) { _surface_filter(p_args, true); }
+	// The material alpha of a surface at barycentrics (b1, b2) of triangle p_prim (level 0 of the texture).
+	static float _surface_alpha(const Surface &p_surface, uint32_t p_prim, float p_b1, float p_b2);
 	bool _build_surface(const RS::SurfaceData &p_data, const Transform3D &p_xform, Surface &r_surface) const;
 	bool _make_light(const RenderSceneData::LightInstance &p_instance, Light &r_light) const;
 	// Counters of one pixel's shading (summed per thread, then per frame).
@@ -191,14 +212,14 @@ private:
 	};
 
 	static void _render_rows(const Frame &p_frame, int p_thread, std::vector<float> &r_pixels);
+	// The rays through the centres of the next pixel right (0) and down (1) (reference_texture.h).
+	struct RayDifferentials {
+		Vector3 origins[2];
+		Vector3 dirs[2];
+	};
 	static Color _shade_pixel(const Frame &p_frame, int p_x, int p_y, ReferenceRNG &r_rng, PixelCounters &r_counters);
 	// The radiance along a ray (origin, unit direction, length) with p_bounces diffuse bounces left;
 	// r_hit says whether it met a surface (else the background is returned).
-	static Color _shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit);
+	// p_diff: the primary ray's differentials (nullptr for bounce rays: textures read level 0).
+	static Color _shade_ray(const Frame &p_frame, const ReferenceRenderOptions &p_options, const Vector3 &p_origin, const Vector3 &p_dir, float p_tfar, int p_bounces, ReferenceRNG &r_rng, PixelCounters &r_counters, bool &r_hit, const RayDifferentials *p_diff = nullptr);
 };
-
-// Bilinear, repeat-wrapped sample of a float RGBA image at uv (Vulkan's LINEAR filter, texel centres
-// at (i + 0.5) / size), as the GPU's material sampler. Returns raw texels (no colour conversion).
-Color reference_sample_texture_bilinear(const Image &p_image, const Vector2 &p_uv);
-// Vulkan NEAREST with REPEAT: the texel holding p_uv * size.
-Color reference_sample_texture_nearest(const Image &p_image, const Vector2 &p_uv);

@@ -60,6 +60,12 @@ RS::MaterialParams BaseMaterial3D::get_params() const {
 	p.specular_mode = RS::MaterialSpecularMode(specular_mode);
 	p.unshaded = shading_mode == SHADING_MODE_UNSHADED;
 	p.cull_back = cull_mode == CULL_BACK;
+	static const RS::MaterialTransparency transparencies[TRANSPARENCY_MAX] = { RS::MATERIAL_TRANSPARENCY_DISABLED, RS::MATERIAL_TRANSPARENCY_ALPHA,
+		RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR, RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR, RS::MATERIAL_TRANSPARENCY_ALPHA };
+	p.transparency = transparencies[transparency];
+	p.alpha_scissor_threshold = alpha_scissor_threshold;
+	p.vertex_color_use_as_albedo = vertex_color_use_as_albedo;
+	p.vertex_color_is_srgb = vertex_color_is_srgb;
 	return p;
 }
 
@@ -98,6 +104,33 @@ void BaseMaterial3D::set_cull_mode(CullMode p_mode) {
 		WARN_PRINT_ONCE("cull_mode Front is not supported by this renderer; faces are drawn two-sided.");
 	}
 	cull_mode = p_mode;
+	_update_params();
+}
+
+void BaseMaterial3D::set_transparency(Transparency p_transparency) {
+	ERR_FAIL_INDEX_MSG((int)p_transparency, TRANSPARENCY_MAX, vformat("transparency must be 0..%d (Disabled, Alpha, Alpha Scissor, Alpha Hash, Depth Pre-Pass); got %d. The old value is kept.", TRANSPARENCY_MAX - 1, (int)p_transparency));
+	if (p_transparency == TRANSPARENCY_ALPHA_HASH) {
+		WARN_PRINT_ONCE("transparency Alpha Hash is not supported by this renderer; it is drawn as Alpha Scissor (alpha_scissor_threshold).");
+	} else if (p_transparency == TRANSPARENCY_ALPHA_DEPTH_PRE_PASS) {
+		WARN_PRINT_ONCE("transparency Depth Pre-Pass is not supported by this renderer; it is drawn as Alpha (blended, no depth write).");
+	}
+	transparency = p_transparency;
+	_update_params();
+}
+
+void BaseMaterial3D::set_alpha_scissor_threshold(float p_threshold) {
+	ERR_FAIL_COND_MSG(!Math::is_finite(p_threshold) || p_threshold < 0.0f || p_threshold > 1.0f, vformat("alpha_scissor_threshold must be between 0 and 1; got %s. The old value is kept.", rtos(p_threshold).c_str()));
+	alpha_scissor_threshold = p_threshold;
+	_update_params();
+}
+
+void BaseMaterial3D::set_flag_vertex_color_use_as_albedo(bool p_enabled) {
+	vertex_color_use_as_albedo = p_enabled;
+	_update_params();
+}
+
+void BaseMaterial3D::set_flag_vertex_color_is_srgb(bool p_enabled) {
+	vertex_color_is_srgb = p_enabled;
 	_update_params();
 }
 
@@ -206,6 +239,9 @@ void BaseMaterial3D::set_uv1_offset(const Vector3 &p_offset) {
 
 void BaseMaterial3D::set_texture_filter(TextureFilter p_filter) {
 	ERR_FAIL_INDEX_MSG((int)p_filter, TEXTURE_FILTER_MAX, vformat("texture_filter must be 0..%d (Nearest, Linear, Nearest Mipmap, Linear Mipmap, Nearest Mipmap Anisotropic, Linear Mipmap Anisotropic); got %d. The old value is kept.", TEXTURE_FILTER_MAX - 1, (int)p_filter));
+	if (p_filter == TEXTURE_FILTER_NEAREST_WITH_MIPMAPS_ANISOTROPIC || p_filter == TEXTURE_FILTER_LINEAR_WITH_MIPMAPS_ANISOTROPIC) {
+		WARN_PRINT_ONCE("texture_filter Anisotropic is not supported by this renderer; textures are filtered with mipmaps, without anisotropy.");
+	}
 	texture_filter = p_filter;
 	_update_params();
 }
@@ -271,16 +307,30 @@ void BaseMaterial3D::_bind_methods() {
 	ClassDB::bind_method(D_METHOD("get_uv1_scale"), &BaseMaterial3D::get_uv1_scale);
 	ClassDB::bind_method(D_METHOD("set_uv1_offset", "offset"), &BaseMaterial3D::set_uv1_offset);
 	ClassDB::bind_method(D_METHOD("get_uv1_offset"), &BaseMaterial3D::get_uv1_offset);
+	ClassDB::bind_method(D_METHOD("set_transparency", "transparency"), &BaseMaterial3D::set_transparency);
+	ClassDB::bind_method(D_METHOD("get_transparency"), &BaseMaterial3D::get_transparency);
+	ClassDB::bind_method(D_METHOD("set_alpha_scissor_threshold", "threshold"), &BaseMaterial3D::set_alpha_scissor_threshold);
+	ClassDB::bind_method(D_METHOD("get_alpha_scissor_threshold"), &BaseMaterial3D::get_alpha_scissor_threshold);
+	ClassDB::bind_method(D_METHOD("set_flag_vertex_color_use_as_albedo", "enable"), &BaseMaterial3D::set_flag_vertex_color_use_as_albedo);
+	ClassDB::bind_method(D_METHOD("get_flag_vertex_color_use_as_albedo"), &BaseMaterial3D::get_flag_vertex_color_use_as_albedo);
+	ClassDB::bind_method(D_METHOD("set_flag_vertex_color_is_srgb", "enable"), &BaseMaterial3D::set_flag_vertex_color_is_srgb);
+	ClassDB::bind_method(D_METHOD("get_flag_vertex_color_is_srgb"), &BaseMaterial3D::get_flag_vertex_color_is_srgb);
 	ClassDB::bind_method(D_METHOD("set_texture_filter", "mode"), &BaseMaterial3D::set_texture_filter);
 	ClassDB::bind_method(D_METHOD("get_texture_filter"), &BaseMaterial3D::get_texture_filter);
 
 	ADD_GROUP("Transparency", "");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "transparency", PROPERTY_HINT_ENUM, "Disabled,Alpha,Alpha Scissor,Alpha Hash,Depth Pre-Pass"), "set_transparency", "get_transparency");
+	ADD_PROPERTY(PropertyInfo(Variant::FLOAT, "alpha_scissor_threshold", PROPERTY_HINT_RANGE, "0,1,0.001"), "set_alpha_scissor_threshold", "get_alpha_scissor_threshold");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "cull_mode", PROPERTY_HINT_ENUM, "Back,Front,Disabled"), "set_cull_mode", "get_cull_mode");
 
 	ADD_GROUP("Shading", "");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "shading_mode", PROPERTY_HINT_ENUM, "Unshaded,Per-Pixel,Per-Vertex"), "set_shading_mode", "get_shading_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "diffuse_mode", PROPERTY_HINT_ENUM, "Burley,Lambert,Lambert Wrap,Toon"), "set_diffuse_mode", "get_diffuse_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "specular_mode", PROPERTY_HINT_ENUM, "SchlickGGX,Toon,Disabled"), "set_specular_mode", "get_specular_mode");
+
+	ADD_GROUP("Vertex Color", "vertex_color");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "vertex_color_use_as_albedo"), "set_flag_vertex_color_use_as_albedo", "get_flag_vertex_color_use_as_albedo");
+	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "vertex_color_is_srgb"), "set_flag_vertex_color_is_srgb", "get_flag_vertex_color_is_srgb");
 
 	ADD_GROUP("Albedo", "albedo_");
 	ADD_PROPERTY(PropertyInfo(Variant::COLOR, "albedo_color"), "set_albedo", "get_albedo");
@@ -329,6 +379,11 @@ void BaseMaterial3D::_bind_methods() {
 	BIND_ENUM_CONSTANT(SPECULAR_SCHLICK_GGX);
 	BIND_ENUM_CONSTANT(SPECULAR_TOON);
 	BIND_ENUM_CONSTANT(SPECULAR_DISABLED);
+	BIND_ENUM_CONSTANT(TRANSPARENCY_DISABLED);
+	BIND_ENUM_CONSTANT(TRANSPARENCY_ALPHA);
+	BIND_ENUM_CONSTANT(TRANSPARENCY_ALPHA_SCISSOR);
+	BIND_ENUM_CONSTANT(TRANSPARENCY_ALPHA_HASH);
+	BIND_ENUM_CONSTANT(TRANSPARENCY_ALPHA_DEPTH_PRE_PASS);
 	BIND_ENUM_CONSTANT(CULL_BACK);
 	BIND_ENUM_CONSTANT(CULL_FRONT);
 	BIND_ENUM_CONSTANT(CULL_DISABLED);

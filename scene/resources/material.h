@@ -52,6 +52,16 @@ public:
 		SPECULAR_DISABLED = RS::MATERIAL_SPECULAR_DISABLED,
 		SPECULAR_MAX
 	};
+	// Godot's values. ALPHA_HASH is drawn as ALPHA_SCISSOR (no dithered hash) and ALPHA_DEPTH_PRE_PASS as
+	// ALPHA (no opaque pre-pass part), each with a warning.
+	enum Transparency {
+		TRANSPARENCY_DISABLED,
+		TRANSPARENCY_ALPHA,
+		TRANSPARENCY_ALPHA_SCISSOR,
+		TRANSPARENCY_ALPHA_HASH,
+		TRANSPARENCY_ALPHA_DEPTH_PRE_PASS,
+		TRANSPARENCY_MAX
+	};
 	enum CullMode {
 		CULL_BACK,
 		CULL_FRONT, // Not supported by the renderer: drawn like CULL_DISABLED (with a warning).
@@ -66,7 +76,8 @@ public:
 		TEXTURE_CHANNEL_GRAYSCALE = RS::MATERIAL_TEXTURE_CHANNEL_GRAYSCALE,
 		TEXTURE_CHANNEL_MAX
 	};
-	// No mip chains here: the *_WITH_MIPMAPS filters sample the base level (RS::MaterialTextureFilter).
+	// The *_WITH_MIPMAPS filters read the texture's mip chain; the anisotropic ones sample without
+	// anisotropy (warned once; RS::MaterialTextureFilter).
 	enum TextureFilter {
 		TEXTURE_FILTER_NEAREST = RS::MATERIAL_TEXTURE_FILTER_NEAREST,
 		TEXTURE_FILTER_LINEAR = RS::MATERIAL_TEXTURE_FILTER_LINEAR,
@@ -82,6 +93,10 @@ private:
 	DiffuseMode diffuse_mode = DIFFUSE_BURLEY;
 	SpecularMode specular_mode = SPECULAR_SCHLICK_GGX;
 	CullMode cull_mode = CULL_BACK;
+	Transparency transparency = TRANSPARENCY_DISABLED;
+	float alpha_scissor_threshold = 0.5f;
+	bool vertex_color_use_as_albedo = false;
+	bool vertex_color_is_srgb = false;
 	Color albedo = Color(1, 1, 1, 1);
 	Ref<Texture2D> albedo_texture;
 	float metallic = 0.0f;
@@ -118,6 +133,16 @@ public:
 	SpecularMode get_specular_mode() const { return specular_mode; }
 	void set_cull_mode(CullMode p_mode);
 	CullMode get_cull_mode() const { return cull_mode; }
+	void set_transparency(Transparency p_transparency);
+	Transparency get_transparency() const { return transparency; }
+	// 0..1: ALPHA_SCISSOR (and ALPHA_HASH) keep the pixels whose alpha is at least this.
+	void set_alpha_scissor_threshold(float p_threshold);
+	float get_alpha_scissor_threshold() const { return alpha_scissor_threshold; }
+	// Godot's "Vertex Color" group: the mesh's vertex colours multiply the albedo (and its alpha).
+	void set_flag_vertex_color_use_as_albedo(bool p_enabled);
+	bool get_flag_vertex_color_use_as_albedo() const { return vertex_color_use_as_albedo; }
+	void set_flag_vertex_color_is_srgb(bool p_enabled);
+	bool get_flag_vertex_color_is_srgb() const { return vertex_color_is_srgb; }
 
 	void set_albedo(const Color &p_albedo);
 	Color get_albedo() const { return albedo; }
@@ -192,5 +217,6 @@ VARIANT_ENUM_CAST(BaseMaterial3D::ShadingMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::DiffuseMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::SpecularMode);
 VARIANT_ENUM_CAST(BaseMaterial3D::CullMode);
+VARIANT_ENUM_CAST(BaseMaterial3D::Transparency);
 VARIANT_ENUM_CAST(BaseMaterial3D::TextureChannel);
 VARIANT_ENUM_CAST(BaseMaterial3D::TextureFilter);

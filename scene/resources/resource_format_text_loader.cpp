@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <sstream>
 
 using namespace ResourceFormatTextInternal;
@@ -150,6 +151,19 @@ public:
 		d->raw.push_back(sp);
 	}
 
+	// Whether a property read back after a set holds what was set: the same object for a resource, the
+	// same number (to float precision) for a float; other types are taken as set.
+	static bool _value_taken(const Variant &p_set, const Variant &p_got) {
+		if (p_set.get_type() == Variant::OBJECT) {
+			return p_set.get_object() == p_got.get_object();
+		}
+		if (p_set.get_type() == Variant::FLOAT && p_got.get_type() == Variant::FLOAT) {
+			const double a = p_set.to_float(), b = p_got.to_float();
+			return std::fabs(a - b) <= 1e-6 * std::max(1.0, std::fabs(a));
+		}
+		return true;
+	}
+
 	void apply_property(Object *p_target, const String &p_key, const Variant &p_value, const String &p_unsupported, const String &p_raw, int p_line) {
 		TextSceneData *d = _data(p_target);
 		d->key_order.push_back(p_key);
@@ -171,6 +185,13 @@ public:
 			// override of a mesh that could not load): keep it so the save writes it back.
 			keep_raw(p_target, p_key, p_raw);
 			problem(p_line, "notlisted:" + cls + ":" + p_key, vformat("%s.%s does not exist on this object (its mesh or owner did not load); kept as text and written back on save.", cls.c_str(), p_key.c_str()));
+			return;
+		}
+		if (applied && !_value_taken(p_value, p_target->get(p_key))) {
+			// The setter refused the value without failing (a typed property given a placeholder or
+			// another class, a value outside our range): keep the text so nothing is lost on save.
+			keep_raw(p_target, p_key, p_raw);
+			problem(p_line, "refused:" + cls + ":" + p_key, vformat("%s.%s: the value was not accepted here; kept as text and written back on save.", cls.c_str(), p_key.c_str()));
 			return;
 		}
 		if (!applied) {

@@ -52,10 +52,20 @@ struct SaveState {
 		std::vector<PropertyInfo> plist;
 		p_obj->get_property_list(&plist);
 		String cls = p_obj->get_class();
+		// A value the loaded file wrote out is written back even when it equals the default (Godot
+		// writes some defaults, e.g. alpha_scissor_threshold = 0.5): the round trip keeps every line.
+		const TextSceneData *d = _data_or_null(p_obj);
+		auto in_file = [d](const String &p_name) { return d && std::find(d->key_order.begin(), d->key_order.end(), p_name) != d->key_order.end(); };
 		for (const PropertyInfo &pi : plist) {
-			if (pi.is_group_marker() || !(pi.usage & PROPERTY_USAGE_STORAGE)) {
+			// A property hidden here (e.g. physical light units, off without project settings) is still
+			// written when the file had it.
+			if (pi.is_group_marker() || (!(pi.usage & PROPERTY_USAGE_STORAGE) && !in_file(pi.name))) {
 				continue;
 			}
+			if (d && std::any_of(d->raw.begin(), d->raw.end(), [&pi](const TextSceneData::StoredProperty &p_sp) { return p_sp.name == pi.name; })) {
+				continue; // Kept as text (the object refused the file's value): the text is written.
+			}
+			const bool from_file = in_file(pi.name);
 			bool valid = false;
 			Variant value = p_obj->get(pi.name, &valid);
 			if (!valid) {
@@ -67,7 +77,7 @@ struct SaveState {
 			if (p_base) {
 				bool base_valid = false;
 				Variant base = p_base->get(pi.name, &base_valid);
-				if (base_valid && base == value) {
+				if (base_valid && base == value && !from_file) {
 					continue;
 				}
 				if (!base_valid && value.get_type() == Variant::NIL) {
@@ -76,7 +86,7 @@ struct SaveState {
 			} else {
 				bool has_default = false;
 				Variant def = ClassDB::class_get_property_default(cls, pi.name, &has_default);
-				if (has_default && def == value) {
+				if (has_default && def == value && !from_file) {
 					continue;
 				}
 				if (!has_default && value.get_type() == Variant::NIL) {

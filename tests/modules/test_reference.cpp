@@ -616,6 +616,21 @@ struct CrossScene {
 	}
 };
 
+// Draws p_scene with the Forward+ renderer and with the reference, each through its own GodotInstance.
+static void render_gpu_and_reference(const CrossScene &p_scene, int p_w, int p_h, Image &r_gpu, Image &r_ref) {
+	String error;
+	{
+		GodotInstance engine;
+		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 64), error.c_str());
+		r_gpu = p_scene.render(engine.get_rendering_server(), p_w, p_h);
+	}
+	{
+		GodotInstance reference;
+		REQUIRE_MESSAGE(reference.start_with_compositor(new RendererCompositorReference(ReferenceRenderOptions()), &error), error.c_str());
+		r_ref = p_scene.render(reference.get_rendering_server(), p_w, p_h);
+	}
+}
+
 TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pixel by pixel on the same scene") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
@@ -660,17 +675,7 @@ TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pix
 	scene.ambient_energy = 0.5f;
 
 	Image gpu, ref;
-	String error;
-	{
-		GodotInstance engine;
-		REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 64), error.c_str());
-		gpu = scene.render(engine.get_rendering_server(), W, H);
-	}
-	{
-		GodotInstance reference;
-		REQUIRE_MESSAGE(reference.start_with_compositor(new RendererCompositorReference(ReferenceRenderOptions()), &error), error.c_str());
-		ref = scene.render(reference.get_rendering_server(), W, H);
-	}
+	render_gpu_and_reference(scene, W, H, gpu, ref);
 	REQUIRE(gpu.get_width() == W);
 	REQUIRE(gpu.get_height() == H);
 	REQUIRE(ref.get_width() == W);
@@ -702,6 +707,57 @@ TEST_CASE("[Reference][Render] the reference and the Forward+ renderer agree pix
 	MESSAGE(vformat("GPU vs reference: %d of %d pixels differ beyond tolerance", bad, W * H));
 	CHECK(lit > W * H / 4);
 	CHECK(bad <= W * H / 200);
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[Reference][Render] vertex_color_use_as_albedo: vertex colours multiply the albedo on the GPU and in the reference") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	// Two quads facing the camera with corner colours red, green, blue, white: left unshaded (colour as
+	// given, alpha 1), right lit by an omni light with vertex_color_is_srgb.
+	CrossScene scene;
+	const Color corners[4] = { Color(1, 0, 0, 1), Color(0, 1, 0, 1), Color(0, 0, 1, 1), Color(1, 1, 1, 1) };
+	for (int side = 0; side < 2; side++) {
+		CrossScene::Object quad;
+		add_quad(quad.surface, Vector3(side == 0 ? -0.55f : 0.55f, 0, 0), Vector3(0.5f, 0, 0), Vector3(0, 0.5f, 0));
+		quad.surface.colors.assign(corners, corners + 4);
+		quad.material.vertex_color_use_as_albedo = true;
+		quad.material.unshaded = side == 0;
+		quad.material.vertex_color_is_srgb = side == 1;
+		quad.material.albedo = Color(0.8f, 0.8f, 0.8f, 1);
+		scene.objects.push_back(quad);
+	}
+	scene.lights.push_back({ RS::LIGHT_OMNI, Transform3D(Basis(), Vector3(0.6f, 0.3f, 1.0f)), Color(1, 1, 1, 1), 2.0f, 8.0f, 1.0f, 45.0f, 1.0f, 1.0f });
+	const int W = 96, H = 48;
+	scene.camera = Transform3D(Basis(), Vector3(0, 0, 1.3f));
+	Image gpu, ref;
+	render_gpu_and_reference(scene, W, H, gpu, ref);
+	REQUIRE(gpu.get_width() == W);
+	REQUIRE(ref.get_width() == W);
+	int bad = 0, covered = 0;
+	for (int y = 0; y < H; y++) {
+		for (int x = 0; x < W; x++) {
+			const Color g = gpu.get_pixel(x, y), r = ref.get_pixel(x, y);
+			bool ok = true;
+			for (int c = 0; c < 3; c++) {
+				ok = ok && std::fabs(g[c] - r[c]) <= 2e-3f * std::fabs(r[c]) + 5e-4f;
+			}
+			covered += (r.r + r.g + r.b) > 0.0f ? 1 : 0;
+			bad += ok ? 0 : 1;
+		}
+	}
+	MESSAGE(vformat("vertex colours, GPU vs reference: %d of %d pixels differ beyond tolerance", bad, W * H));
+	CHECK(covered > W * H / 3);
+	CHECK(bad <= W * H / 200);
+	// The unshaded quad spans x -1.05..-0.05, y -0.5..0.5 of a 3 m x 1.5 m view at 1.3 m: pixel (16, 38)
+	// lies near its bottom-left vertex (red), (44, 9) near its top-right one (blue); times the albedo
+	// 0.8 (linear 0.604).
+	for (const Image *image : { &gpu, &ref }) {
+		const Color red = image->get_pixel(16, 38), blue = image->get_pixel(44, 9);
+		CHECK(red.r > 3.0f * red.b);
+		CHECK(red.r < 0.61f);
+		CHECK(blue.b > 3.0f * blue.r);
+	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 

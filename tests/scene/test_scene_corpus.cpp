@@ -227,6 +227,82 @@ TEST_CASE("[ResourceFormatText] 1,000 instances of one file load it once and sha
 	std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("[ResourceFormatText] A value a typed property refuses is kept with its sub-resource") {
+	// Issue 15: a MeshInstance3D's ShaderMaterial override and a Sky's PanoramaSkyMaterial were set to
+	// null by their setters (not our classes) and the save lost the lines and the sub-resources.
+	const char *text = R"([gd_scene format=3]
+
+[sub_resource type="ShaderMaterial" id="ShaderMaterial_a"]
+render_priority = 0
+
+[sub_resource type="QuadMesh" id="QuadMesh_a"]
+
+[sub_resource type="PanoramaSkyMaterial" id="PanoramaSkyMaterial_a"]
+energy_multiplier = 2.0
+
+[sub_resource type="Sky" id="Sky_a"]
+sky_material = SubResource("PanoramaSkyMaterial_a")
+
+[sub_resource type="Environment" id="Environment_a"]
+background_mode = 2
+sky = SubResource("Sky_a")
+
+[node name="Root" type="Node3D"]
+
+[node name="WorldEnvironment" type="WorldEnvironment" parent="."]
+environment = SubResource("Environment_a")
+
+[node name="Quad" type="MeshInstance3D" parent="."]
+mesh = SubResource("QuadMesh_a")
+surface_material_override/0 = SubResource("ShaderMaterial_a")
+)";
+	SceneTest::DummyServer server;
+	Capture capture;
+	String err;
+	Node *root = ResourceFormatText::load_scene_from_string(text, "refused.tscn", &err);
+	REQUIRE_MESSAGE(root != nullptr, err.c_str());
+	CHECK(capture.count("refused.tscn:12:", "sky_material") == 1);
+	CHECK(capture.count("refused.tscn:25:", "surface_material_override/0") == 1);
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	CHECK(saved.find("[sub_resource type=\"ShaderMaterial\" id=\"ShaderMaterial_a\"]\nrender_priority = 0\n") != String::npos);
+	CHECK(saved.find("surface_material_override/0 = SubResource(\"ShaderMaterial_a\")\n") != String::npos);
+	CHECK(saved.find("[sub_resource type=\"PanoramaSkyMaterial\" id=\"PanoramaSkyMaterial_a\"]\nenergy_multiplier = 2.0\n") != String::npos);
+	CHECK(saved.find("sky_material = SubResource(\"PanoramaSkyMaterial_a\")\n") != String::npos);
+	delete root;
+}
+
+TEST_CASE("[ResourceFormatText] A default value the file wrote out is written back") {
+	// Godot writes some defaults (alpha_scissor_threshold = 0.5, an identity transform) and properties
+	// we hide; a load/save keeps those lines (issue 15's survey: 3 + 1 + 4 lines).
+	SceneTest::DummyServer server;
+	const char *text = R"([gd_scene format=3]
+
+[sub_resource type="StandardMaterial3D" id="StandardMaterial3D_a"]
+transparency = 2
+alpha_scissor_threshold = 0.5
+
+[node name="Root" type="Node3D"]
+transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0)
+
+[node name="Quad" type="MeshInstance3D" parent="."]
+material_override = SubResource("StandardMaterial3D_a")
+
+[node name="Lamp" type="OmniLight3D" parent="."]
+light_intensity_lumens = 800.0
+light_temperature = 5000.0
+)";
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(text, "defaults.tscn", &error);
+	REQUIRE_MESSAGE(root != nullptr, error.c_str());
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	CHECK(saved.find("transparency = 2\nalpha_scissor_threshold = 0.5\n") != String::npos);
+	CHECK(saved.find("[node name=\"Root\" type=\"Node3D\"]\ntransform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0)\n") != String::npos);
+	// Hidden properties (physical light units are off without project settings) the file had.
+	CHECK(saved.find("light_intensity_lumens = 800.0\nlight_temperature = 5000.0\n") != String::npos);
+	CHECK(saved.find("visible") == String::npos); // Defaults the file did not write stay out.
+	delete root;
+}
+
 TEST_CASE("[ResourceFormatText] Warnings: one line per distinct problem with a count") {
 	SceneTest::DummyServer server;
 	String text = "[gd_scene format=3]\n\n[node name=\"Root\" type=\"Node3D\"]\n";

@@ -310,7 +310,7 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	using MU = RendererRD::MaterialStorage::MaterialUBO;
 	check_block(scene_fragment, "MaterialBlock",
 			{ MEMBER(MU, albedo), MEMBER(MU, emission), MEMBER(MU, roughness), MEMBER(MU, metallic), MEMBER(MU, specular), MEMBER(MU, normal_scale),
-					MEMBER(MU, flags), MEMBER(MU, diffuse_mode), MEMBER(MU, pad0), MEMBER(MU, pad1), MEMBER(MU, uv1), MEMBER(MU, roughness_channel),
+					MEMBER(MU, flags), MEMBER(MU, diffuse_mode), MEMBER(MU, alpha_scissor_threshold), MEMBER(MU, pad1), MEMBER(MU, uv1), MEMBER(MU, roughness_channel),
 					MEMBER(MU, metallic_channel) });
 	using SA = SkyRD::SkyAmbientUBO;
 	check_block(scene_fragment, "SkyAmbient", { MEMBER(SA, sh), MEMBER(SA, pad) });

@@ -38,6 +38,10 @@ public:
 	virtual int texture_get_height(RID p_texture) const = 0;
 	// Returns the CPU copy of the texels, or nullptr. Valid only during the current call.
 	virtual const Image *texture_get_image(RID p_texture) const = 0;
+	// Levels 1..n of the texture's mip chain (texture_mipmaps_generate; level 0 is texture_get_image),
+	// made on first call and kept with the texture; p_srgb: the chain of the sRGB-encoded colour use
+	// (albedo), averaged in linear space. nullptr for an invalid RID. Not thread-safe on first call.
+	virtual const std::vector<Image> *texture_get_mipmaps(RID p_texture, bool p_srgb) const = 0;
 
 	virtual ~RendererMaterialStorage() {}
 };

@@ -5,6 +5,7 @@
 #include "servers/rendering/dummy/storage/material_storage.h"
 
 #include "core/error/error_macros.h"
+#include "servers/rendering/storage/texture_mipmaps.h"
 
 using namespace RendererDummy;
 
@@ -37,7 +38,9 @@ RS::MaterialParams MaterialStorage::material_get_params(RID p_material) const {
 
 RID MaterialStorage::texture_2d_create(const Image &p_image) {
 	ERR_FAIL_COND_V_MSG(p_image.is_empty(), RID(), "Cannot create a texture from an empty image.");
-	return texture_owner.make_rid(p_image);
+	Texture t;
+	t.image = p_image;
+	return texture_owner.make_rid(t);
 }
 
 bool MaterialStorage::texture_free(RID p_rid) {
@@ -49,19 +52,29 @@ bool MaterialStorage::texture_free(RID p_rid) {
 }
 
 int MaterialStorage::texture_get_width(RID p_texture) const {
-	const Image *image = texture_owner.get_or_null(p_texture);
-	ERR_FAIL_NULL_V_MSG(image, 0, "Invalid texture RID.");
-	return image->get_width();
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, 0, "Invalid texture RID.");
+	return t->image.get_width();
 }
 
 int MaterialStorage::texture_get_height(RID p_texture) const {
-	const Image *image = texture_owner.get_or_null(p_texture);
-	ERR_FAIL_NULL_V_MSG(image, 0, "Invalid texture RID.");
-	return image->get_height();
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, 0, "Invalid texture RID.");
+	return t->image.get_height();
 }
 
 const Image *MaterialStorage::texture_get_image(RID p_texture) const {
-	const Image *image = texture_owner.get_or_null(p_texture);
-	ERR_FAIL_NULL_V_MSG(image, nullptr, "Invalid texture RID.");
-	return image;
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, nullptr, "Invalid texture RID.");
+	return &t->image;
+}
+
+const std::vector<Image> *MaterialStorage::texture_get_mipmaps(RID p_texture, bool p_srgb) const {
+	const Texture *t = texture_owner.get_or_null(p_texture);
+	ERR_FAIL_NULL_V_MSG(t, nullptr, "Invalid texture RID.");
+	if (!t->mipmaps_made[p_srgb]) {
+		texture_mipmaps_generate(t->image, p_srgb, t->mipmaps[p_srgb]);
+		t->mipmaps_made[p_srgb] = true;
+	}
+	return &t->mipmaps[p_srgb];
 }

@@ -12,7 +12,12 @@ namespace RendererDummy {
 
 class MaterialStorage : public RendererMaterialStorage {
 	mutable RID_Owner<RS::MaterialParams, true> material_owner{ "Material" };
-	mutable RID_Owner<Image, true> texture_owner{ "Texture" };
+	struct Texture {
+		Image image;
+		mutable std::vector<Image> mipmaps[2]; // Data, sRGB colour: levels 1..n, made on first use.
+		mutable bool mipmaps_made[2] = { false, false };
+	};
+	mutable RID_Owner<Texture, true> texture_owner{ "Texture" };
 
 public:
 	RID material_create() override;
@@ -27,6 +32,7 @@ public:
 	int texture_get_width(RID p_texture) const override;
 	int texture_get_height(RID p_texture) const override;
 	const Image *texture_get_image(RID p_texture) const override;
+	const std::vector<Image> *texture_get_mipmaps(RID p_texture, bool p_srgb) const override;
 };
 
 } // namespace RendererDummy

@@ -317,10 +317,10 @@ RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVaria
 	return shader;
 }
 
-RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods) {
+RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods, PipelineMode p_mode) {
 	// The whole 32-bit version key: every area and feature bit selects a different shader.
 	ERR_FAIL_COND_V_MSG(p_format < 0 || p_format > 0xFFFF, RID(), vformat("RenderForwardClustered: framebuffer format id %d does not fit the pipeline key.", int(p_format)));
-	const uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_format) << 16) | (uint64_t(p_area_methods) << 32);
+	const uint64_t key = uint64_t(p_variant) | (uint64_t(p_cull) << 8) | (uint64_t(p_mode) << 12) | (uint64_t(p_format) << 16) | (uint64_t(p_area_methods) << 32);
 	auto it = pipelines.find(key);
 	if (it != pipelines.end()) {
 		return it->second;
@@ -338,12 +338,27 @@ RID RenderForwardClustered::_get_pipeline(SceneShaderVariant p_variant, RD::Poly
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS;
 	} else {
 		// Depth comes from the pre-pass (invariant gl_Position makes it bit-identical).
-		depth.enable_depth_write = false;
+		// Alpha scissor surfaces are not in the pre-pass (their holes would hide what is behind): they write
+		// their own depth.
+		depth.enable_depth_write = p_mode == PIPELINE_MODE_DEPTH_WRITE;
 		depth.depth_compare_operator = RD::COMPARE_OP_LESS_OR_EQUAL;
 	}
 	// The SSIL/SSAO version writes colour plus the three image-space radiosity inputs.
 	const int color_attachments = p_variant == SCENE_SHADER_DEPTH ? 0 : ((p_area_methods & SCENE_VERSION_SS_RADIOSITY) ? 4 : 1);
 	RD::PipelineColorBlendState blend = RD::PipelineColorBlendState::create_disabled(color_attachments);
+	if (p_mode == PIPELINE_MODE_BLEND && color_attachments > 0) {
+		// Godot's BLEND_MODE_MIX: colour = src * src.a + dst * (1 - src.a); alpha = src.a + dst.a * (1 - src.a).
+		// The image-space radiosity inputs keep the opaque surfaces' values.
+		RD::PipelineColorBlendState::Attachment &a = blend.attachments[0];
+		a.enable_blend = true;
+		a.src_color_blend_factor = RD::BLEND_FACTOR_SRC_ALPHA;
+		a.dst_color_blend_factor = RD::BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+		a.src_alpha_blend_factor = RD::BLEND_FACTOR_ONE;
+		a.dst_alpha_blend_factor = RD::BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+		for (int i = 1; i < color_attachments; i++) {
+			blend.attachments[i].write_r = blend.attachments[i].write_g = blend.attachments[i].write_b = blend.attachments[i].write_a = false;
+		}
+	}
 	RID shader = p_variant == SCENE_SHADER_DEPTH ? scene_shader.version_get_shader(p_variant) : _get_version_shader(p_area_methods, p_variant);
 	ERR_FAIL_COND_V_MSG(!shader.is_valid(), RID(), "RenderForwardClustered: the scene shader for this pipeline failed to compile: " + scene_shader.get_last_error());
 	RID pipeline = rd->render_pipeline_create(shader, p_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, blend);
@@ -590,9 +605,12 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		RID material_set;
 		RD::PolygonCullMode cull;
 		bool area; // Drawn with the area-light version (color_variant, area_methods).
+		RS::MaterialTransparency transparency;
+		float view_depth; // Of the surface's AABB centre (sorts the blended surfaces back to front).
 		DrawPushConstant pc;
 	};
 	std::vector<DrawItem> items;
+	const Vector3 view_forward = -p_data.cam_transform.basis.get_column(2);
 	// Material sets (set 1) are made against the plain colour variant: set 1 is declared identically in
 	// both colour variants, so the sets are compatible with either pipeline and are not rebuilt per variant.
 	RID color_shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR);
@@ -632,7 +650,15 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 			ERR_CONTINUE_MSG(!item.material_set.is_valid(), "render_scene: material uniform set creation failed; surface skipped.");
 			item.cull = material_storage->material_is_cull_back(material) ? RD::POLYGON_CULL_BACK : RD::POLYGON_CULL_DISABLED;
 			item.area = area;
+			item.transparency = material_storage->material_get_transparency(material);
+			item.view_depth = 0.0f;
+			if (item.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA) {
+				const RS::SurfaceData *data = mesh_storage->mesh_get_surface(g.mesh, s);
+				const Vector3 centre = g.transform.xform(data ? data->aabb.get_center() : Vector3());
+				item.view_depth = (centre - p_data.cam_transform.origin).dot(view_forward);
+			}
 			item.pc = pc;
+			item.pc.flags = gpu->has_colors ? DRAW_FLAG_HAS_COLOR : 0u;
 			items.push_back(item);
 		}
 	}
@@ -681,6 +707,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RD::DrawListID list = rd->draw_list_begin(rt->fb_depth, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f);
 	rd->draw_list_bind_uniform_set(list, scene_set_depth, 0);
 	for (const DrawItem &item : items) {
+		if (item.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+			continue; // Scissored surfaces write depth in the opaque pass; blended ones never.
+		}
 		rd->draw_list_bind_render_pipeline(list, _get_pipeline(SCENE_SHADER_DEPTH, item.cull, depth_format));
 		rd->draw_list_bind_uniform_set(list, scene_set_depth, 0);
 		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);
@@ -721,20 +750,28 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	list = rd->draw_list_begin(fb_opaque, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_LOAD, clear_colors, 1.0f);
 	last_draw_calls = 0;
 	last_area_draw_calls = 0;
-	for (const DrawItem &item : items) {
-		const bool plain = use_area && !item.area;
-		rd->draw_list_bind_render_pipeline(list, plain ? _get_pipeline(SCENE_SHADER_COLOR, item.cull, color_format, plain_methods) : _get_pipeline(color_variant, item.cull, color_format, area_methods));
+	auto draw_color_item = [&](const DrawItem &p_item, PipelineMode p_mode) {
+		const bool plain = use_area && !p_item.area;
+		rd->draw_list_bind_render_pipeline(list, plain ? _get_pipeline(SCENE_SHADER_COLOR, p_item.cull, color_format, plain_methods, p_mode) : _get_pipeline(color_variant, p_item.cull, color_format, area_methods, p_mode));
 		rd->draw_list_bind_uniform_set(list, plain ? plain_set : color_set, 0);
 		last_draw_calls++;
-		last_area_draw_calls += item.area ? 1 : 0;
-		rd->draw_list_bind_uniform_set(list, item.material_set, 1);
-		rd->draw_list_bind_vertex_array(list, item.gpu->vertex_array);
-		rd->draw_list_set_push_constant(list, &item.pc, sizeof(item.pc));
-		if (item.gpu->index_array.is_valid()) {
-			rd->draw_list_bind_index_array(list, item.gpu->index_array);
+		last_area_draw_calls += p_item.area ? 1 : 0;
+		rd->draw_list_bind_uniform_set(list, p_item.material_set, 1);
+		rd->draw_list_bind_vertex_array(list, p_item.gpu->vertex_array);
+		rd->draw_list_set_push_constant(list, &p_item.pc, sizeof(p_item.pc));
+		if (p_item.gpu->index_array.is_valid()) {
+			rd->draw_list_bind_index_array(list, p_item.gpu->index_array);
 			rd->draw_list_draw(list, true);
 		} else {
 			rd->draw_list_draw(list, false);
+		}
+	};
+	std::vector<const DrawItem *> blended;
+	for (const DrawItem &item : items) {
+		if (item.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA) {
+			blended.push_back(&item);
+		} else {
+			draw_color_item(item, item.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR ? PIPELINE_MODE_DEPTH_WRITE : PIPELINE_MODE_OPAQUE);
 		}
 	}
 	rd->draw_list_end();
@@ -758,6 +795,20 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		rd->capture_timestamp(prefix + "sky");
 	}
 
+	// 5. Alpha-blended surfaces (transparency ALPHA), back to front by their AABB centre's view depth as
+	// Godot sorts its transparent list, over the opaque pass and the sky; depth tested, not written.
+	if (!blended.empty()) {
+		rd->draw_command_begin_label("Render Transparent Pass");
+		std::stable_sort(blended.begin(), blended.end(), [](const DrawItem *p_a, const DrawItem *p_b) { return p_a->view_depth > p_b->view_depth; });
+		list = rd->draw_list_begin(fb_opaque, RD::INITIAL_ACTION_LOAD, RD::INITIAL_ACTION_LOAD);
+		for (const DrawItem *item : blended) {
+			draw_color_item(*item, PIPELINE_MODE_BLEND);
+		}
+		rd->draw_list_end();
+		rd->draw_command_end_label();
+		rd->capture_timestamp(prefix + "transparent");
+	}
+
 	rd->submit_and_sync();
 	_read_profile(prefix);
 }
@@ -765,9 +816,9 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 void RenderForwardClustered::_read_profile(const String &p_prefix) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
-	const int pass_count = 11;
-	const char *names[pass_count] = { "begin", "area_shadows", "directional_shadows", "sky_radiance", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky" };
-	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
+	const int pass_count = 12;
+	const char *names[pass_count] = { "begin", "area_shadows", "directional_shadows", "sky_radiance", "depth_prepass", "area_reprojection", "area_banding", "cluster_build", "opaque", "ss_radiosity", "sky", "transparent" };
+	int64_t found[pass_count] = { -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1 };
 	uint32_t count = rd->get_captured_timestamps_count();
 	for (uint32_t i = 0; i < count; i++) {
 		String name = rd->get_captured_timestamp_name(i);

@@ -118,6 +118,9 @@ public:
 	static_assert(sizeof(SceneDataUBO) == 320, "SceneDataUBO must match scene_forward_clustered_inc.glsl.");
 	static_assert(sizeof(SceneDataUBO) % 16 == 0, "SceneDataUBO must stay a multiple of 16 bytes.");
 
+	// DrawData::flags (DRAW_FLAG_* in scene_forward_clustered_inc.glsl).
+	static constexpr uint32_t DRAW_FLAG_HAS_COLOR = 1; // The surface has ARRAY_COLOR (else the shader reads white).
+
 	// Mirror of the DrawData push constant in scene_forward_clustered_inc.glsl.
 	struct DrawPushConstant {
 		float world_from_model[16];
@@ -188,11 +191,18 @@ private:
 	bool initialized = false;
 	std::vector<std::pair<String, double>> last_profile;
 	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
-	uint64_t last_draw_calls = 0; // Opaque-pass draws of the last render_scene().
+	uint64_t last_draw_calls = 0; // Colour-pass draws (opaque and transparent) of the last render_scene().
 	uint64_t last_area_draw_calls = 0; // Of those, drawn with the area-light shader version.
 	uint64_t frame_counter = 0;
 
-	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0);
+	// How a colour pipeline treats depth and colour: opaque (depth from the pre-pass), alpha scissor
+	// (not in the pre-pass: writes its own depth), alpha blend (after the opaque pass, no depth write).
+	enum PipelineMode {
+		PIPELINE_MODE_OPAQUE,
+		PIPELINE_MODE_DEPTH_WRITE,
+		PIPELINE_MODE_BLEND,
+	};
+	RID _get_pipeline(SceneShaderVariant p_variant, RD::PolygonCullMode p_cull, RD::FramebufferFormatID p_format, uint32_t p_area_methods = 0, PipelineMode p_mode = PIPELINE_MODE_OPAQUE);
 	// p_area_methods: 0 = no area lights, else the area version key of the view (method mask | shadow bits).
 	bool _ensure_scene_sets(uint32_t p_area_methods);
 	// The colour shader p_variant of the version for key p_key (area key | SCENE_VERSION_* bits); key 0 is the

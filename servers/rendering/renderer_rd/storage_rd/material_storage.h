@@ -5,7 +5,10 @@
 /* RendererRD::MaterialStorage + TextureStorage, reduced to the built-in  */
 /* StandardMaterial3D subset). A material owns a uniform buffer           */
 /* (MaterialUBO) and, created on first use by the renderer, the uniform   */
-/* set 1 of the scene shader. Textures are RGBA32F copies of the Image.   */
+/* set 1 of the scene shader. Textures are RGBA32F copies of the Image    */
+/* with their full mip chain (texture_mipmaps.h), uploaded on first use:  */
+/* one copy for colour (albedo, mips averaged in linear space) and one    */
+/* for data (normal, roughness, metallic), each only when used so.        */
 
 #pragma once
 
@@ -25,6 +28,9 @@ public:
 		MATERIAL_FLAG_SPECULAR_DISABLED = 8,
 		MATERIAL_FLAG_ROUGHNESS_TEXTURE = 16,
 		MATERIAL_FLAG_METALLIC_TEXTURE = 32,
+		MATERIAL_FLAG_ALPHA_SCISSOR = 64,
+		MATERIAL_FLAG_VERTEX_COLOR = 128,
+		MATERIAL_FLAG_VERTEX_COLOR_SRGB = 256,
 	};
 
 	// Mirror of MaterialBlock (set 1, binding 0, std140) in
@@ -38,7 +44,7 @@ public:
 		float normal_scale;
 		uint32_t flags; // MaterialFlags.
 		uint32_t diffuse_mode; // BRDF_DIFFUSE_* (brdf_inc.glsl): 0 Burley, 1 Lambert.
-		uint32_t pad0;
+		float alpha_scissor_threshold; // MATERIAL_FLAG_ALPHA_SCISSOR only.
 		uint32_t pad1;
 		float uv1[4]; // uv1_scale.xy, uv1_offset.xy.
 		float roughness_channel[4]; // Weights of the roughness texture's channels (roughness_texture_channel).
@@ -55,12 +61,29 @@ private:
 		RID uniform_set_shader; // Shader the set was made for.
 		// RD textures bound in uniform_set (to notice freed textures): albedo, normal, roughness, metallic.
 		RID set_textures[4];
-		bool set_nearest = false; // The sampler bound in uniform_set.
+		int set_sampler = -1; // The SamplerKind bound in uniform_set.
 		bool ubo_dirty = true;
+	};
+	// A texture's two uses: sRGB-encoded colour (albedo) and linear data (normal, roughness, metallic).
+	enum TextureUse {
+		TEXTURE_USE_DATA,
+		TEXTURE_USE_COLOR,
+		TEXTURE_USE_MAX
 	};
 	struct Texture {
 		Image image;
-		RID rd_texture;
+		RID rd_texture[TEXTURE_USE_MAX]; // Made on first use (material_get_uniform_set), every mip level.
+		mutable std::vector<Image> mipmaps[TEXTURE_USE_MAX]; // Levels 1..n, made on first use.
+		mutable bool mipmaps_made[TEXTURE_USE_MAX] = { false, false };
+	};
+	// The material sampler per texture_filter (Godot's: the *_WITH_MIPMAPS filters blend two levels,
+	// rendering/textures/default_filters/use_nearest_mipmap_filter = false); all repeat.
+	enum SamplerKind {
+		SAMPLER_NEAREST,
+		SAMPLER_LINEAR,
+		SAMPLER_NEAREST_MIPMAPS,
+		SAMPLER_LINEAR_MIPMAPS,
+		SAMPLER_MAX
 	};
 
 	mutable RID_Owner<Material, true> material_owner{ "RendererRD::Material" };
@@ -69,11 +92,13 @@ private:
 	RID default_material;
 	RID white_texture; // RD texture (1, 1, 1, 1).
 	RID normal_texture; // RD texture (0.5, 0.5, 1, 1): flat normal.
-	RID sampler; // Linear, repeat.
-	RID nearest_sampler; // Nearest, repeat (texture_filter NEAREST*).
+	RID samplers[SAMPLER_MAX];
 
 	static MaterialUBO _make_ubo(const RS::MaterialParams &p_params, bool p_has_albedo, bool p_has_normal, bool p_has_roughness = false, bool p_has_metallic = false);
-	RID _rd_texture_for(RID p_texture, RID p_fallback) const;
+	static SamplerKind _sampler_kind(RS::MaterialTextureFilter p_filter);
+	const std::vector<Image> &_mipmaps(const Texture &p_texture, TextureUse p_use) const;
+	// The RD texture of p_texture for p_use (uploaded with its mip chain on first use), or RID().
+	RID _rd_texture_for(RID p_texture, TextureUse p_use);
 
 public:
 	// Creates default textures, the sampler and the default material (needs a RenderingDevice).
@@ -86,8 +111,10 @@ public:
 	RID material_get_uniform_set(RID p_material, RID p_shader);
 	// True when the material draws with back faces culled (MaterialParams::cull_back).
 	bool material_is_cull_back(RID p_material) const;
+	// The material's transparency (MaterialParams::transparency; the default material's for an invalid RID).
+	RS::MaterialTransparency material_get_transparency(RID p_material) const;
 	RID get_default_material() const { return default_material; }
-	RID get_sampler() const { return sampler; }
+	RID get_sampler() const { return samplers[SAMPLER_LINEAR]; }
 	// Converts the parameters as the shader reads them (tests).
 	static MaterialUBO make_material_ubo(const RS::MaterialParams &p_params) {
 		return _make_ubo(p_params, p_params.albedo_texture.is_valid(), p_params.normal_texture.is_valid(), p_params.roughness_texture.is_valid(), p_params.metallic_texture.is_valid());
@@ -105,6 +132,7 @@ public:
 	int texture_get_width(RID p_texture) const override;
 	int texture_get_height(RID p_texture) const override;
 	const Image *texture_get_image(RID p_texture) const override;
+	const std::vector<Image> *texture_get_mipmaps(RID p_texture, bool p_srgb) const override;
 
 	MaterialStorage() {}
 	~MaterialStorage();

@@ -13,7 +13,7 @@ using namespace RendererRD;
 RD::VertexFormatID MeshStorage::get_vertex_format() {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	if (vertex_format == RD::INVALID_FORMAT_ID && rd && rd->is_initialized()) {
-		std::vector<RD::VertexAttribute> attribs(4);
+		std::vector<RD::VertexAttribute> attribs(5);
 		attribs[0].location = 0;
 		attribs[0].format = RD::DATA_FORMAT_R32G32B32_SFLOAT;
 		attribs[0].stride = 12;
@@ -26,6 +26,9 @@ RD::VertexFormatID MeshStorage::get_vertex_format() {
 		attribs[3].location = 3;
 		attribs[3].format = RD::DATA_FORMAT_R32G32_SFLOAT;
 		attribs[3].stride = 8;
+		attribs[4].location = 4; // ARRAY_COLOR.
+		attribs[4].format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
+		attribs[4].stride = 16;
 		vertex_format = rd->vertex_format_create(attribs);
 	}
 	return vertex_format;
@@ -102,8 +105,22 @@ void MeshStorage::_create_surface_gpu(Surface &r_surface) {
 	r_surface.buffers[1] = rd->vertex_buffer_create(uint32_t(normals.size() * sizeof(float)), normals.data());
 	r_surface.buffers[2] = rd->vertex_buffer_create(uint32_t(tangents.size() * sizeof(float)), tangents.data());
 	r_surface.buffers[3] = rd->vertex_buffer_create(uint32_t(uvs.size() * sizeof(float)), uvs.data());
+	// Vertex colours only when the surface has them; otherwise the tangent stream (the same size and
+	// format) stands in and the shader reads white (DRAW_FLAG_HAS_COLOR unset): no memory for a feature
+	// the surface does not use.
+	r_surface.gpu.has_colors = d.colors.size() == count;
+	if (r_surface.gpu.has_colors) {
+		std::vector<float> colors(count * 4);
+		for (uint32_t i = 0; i < count; i++) {
+			colors[i * 4 + 0] = d.colors[i].r;
+			colors[i * 4 + 1] = d.colors[i].g;
+			colors[i * 4 + 2] = d.colors[i].b;
+			colors[i * 4 + 3] = d.colors[i].a;
+		}
+		r_surface.buffers[4] = rd->vertex_buffer_create(uint32_t(colors.size() * sizeof(float)), colors.data());
+	}
 	r_surface.gpu.vertex_count = count;
-	r_surface.gpu.vertex_array = rd->vertex_array_create(count, get_vertex_format(), { r_surface.buffers[0], r_surface.buffers[1], r_surface.buffers[2], r_surface.buffers[3] });
+	r_surface.gpu.vertex_array = rd->vertex_array_create(count, get_vertex_format(), { r_surface.buffers[0], r_surface.buffers[1], r_surface.buffers[2], r_surface.buffers[3], r_surface.gpu.has_colors ? r_surface.buffers[4] : r_surface.buffers[2] });
 	if (!d.indices.empty()) {
 		r_surface.index_buffer = rd->index_buffer_create(uint32_t(d.indices.size()), RD::INDEX_BUFFER_FORMAT_UINT32, d.indices.data());
 		r_surface.gpu.index_array = rd->index_array_create(r_surface.index_buffer, 0, uint32_t(d.indices.size()));
@@ -121,7 +138,7 @@ void MeshStorage::_free_surface_gpu(Surface &r_surface) {
 		if (r_surface.gpu.index_array.is_valid()) {
 			rd->free(r_surface.gpu.index_array);
 		}
-		for (int i = 0; i < 4; i++) {
+		for (int i = 0; i < 5; i++) {
 			if (r_surface.buffers[i].is_valid()) {
 				rd->free(r_surface.buffers[i]);
 			}
@@ -131,7 +148,7 @@ void MeshStorage::_free_surface_gpu(Surface &r_surface) {
 		}
 	}
 	r_surface.gpu = SurfaceGPU();
-	for (int i = 0; i < 4; i++) {
+	for (int i = 0; i < 5; i++) {
 		r_surface.buffers[i] = RID();
 	}
 	r_surface.index_buffer = RID();

@@ -27,13 +27,14 @@ public:
 		RID index_array; // Invalid for non-indexed surfaces.
 		uint32_t vertex_count = 0;
 		uint32_t index_count = 0;
+		bool has_colors = false; // ARRAY_COLOR given; without it the colour stream is a stand-in (unread).
 	};
 
 private:
 	struct Surface {
 		RS::SurfaceData data;
 		RID material;
-		RID buffers[4]; // position, normal, tangent, uv
+		RID buffers[5]; // position, normal, tangent, uv, colour (invalid without ARRAY_COLOR)
 		RID index_buffer;
 		SurfaceGPU gpu;
 	};

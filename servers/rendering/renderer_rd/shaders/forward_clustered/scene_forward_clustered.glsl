@@ -39,6 +39,7 @@ layout(location = 0) in vec3 vertex_attrib; // Object space.
 layout(location = 1) in vec3 normal_attrib;
 layout(location = 2) in vec4 tangent_attrib; // xyz, w = binormal sign.
 layout(location = 3) in vec2 uv_attrib;
+layout(location = 4) in vec4 color_attrib; // ARRAY_COLOR (white without one).
 
 // Both variants compute gl_Position with identical code; precise (no FMA contraction or reassociation)
 // makes the depth pre-pass and the colour pass produce bit-identical depths, so the colour pass can
@@ -52,6 +53,7 @@ layout(location = 1) out vec3 normal_interp; // View space.
 layout(location = 2) out vec3 tangent_interp; // View space.
 layout(location = 3) out vec3 binormal_interp; // View space.
 layout(location = 4) out vec2 uv_interp;
+layout(location = 5) out vec4 color_interp;
 #endif
 
 void main() {
@@ -68,6 +70,7 @@ void main() {
 	tangent_interp = view_basis * tangent_world;
 	binormal_interp = cross(normal_interp, tangent_interp) * (tangent_attrib.w < 0.0 ? -1.0 : 1.0);
 	uv_interp = uv_attrib;
+	color_interp = (draw.flags & DRAW_FLAG_HAS_COLOR) != 0u ? color_attrib : vec4(1.0);
 #endif
 }
 
@@ -103,6 +106,7 @@ layout(location = 1) in vec3 normal_interp;
 layout(location = 2) in vec3 tangent_interp;
 layout(location = 3) in vec3 binormal_interp;
 layout(location = 4) in vec2 uv_interp;
+layout(location = 5) in vec4 color_interp;
 
 layout(location = 0) out vec4 frag_color;
 #ifdef USE_SS_RADIOSITY
@@ -178,8 +182,16 @@ void main() {
 		albedo *= srgb_to_linear(texel.rgb);
 		alpha *= texel.a;
 	}
+	if ((material.flags & MATERIAL_FLAG_VERTEX_COLOR) != 0u) {
+		// Godot: albedo_tex *= COLOR (vertex_color_is_srgb decodes COLOR.rgb first).
+		albedo *= (material.flags & MATERIAL_FLAG_VERTEX_COLOR_SRGB) != 0u ? srgb_to_linear(color_interp.rgb) : color_interp.rgb;
+		alpha *= color_interp.a;
+	}
 
 	if ((material.flags & MATERIAL_FLAG_UNSHADED) != 0u) {
+		if ((material.flags & MATERIAL_FLAG_ALPHA_SCISSOR) != 0u && alpha < material.alpha_scissor_threshold) {
+			discard; // Godot's ALPHA_SCISSOR_THRESHOLD.
+		}
 		frag_color = vec4(albedo, alpha);
 		return;
 	}
@@ -212,6 +224,10 @@ void main() {
 	}
 	roughness = clamp(roughness, 0.0, 1.0);
 	metallic = clamp(metallic, 0.0, 1.0);
+	// Alpha scissor after the last texture read (derivatives stay defined for the whole quad).
+	if ((material.flags & MATERIAL_FLAG_ALPHA_SCISSOR) != 0u && alpha < material.alpha_scissor_threshold) {
+		discard;
+	}
 	// Godot's f0: dielectrics reflect 0.16 * specular^2 (0.5 -> 4 %), metals their albedo.
 	float dielectric = 0.16 * material.specular * material.specular;
 	vec3 f0 = dielectric * (1.0 - metallic) + albedo * metallic;

@@ -39,6 +39,12 @@
 #define MATERIAL_FLAG_SPECULAR_DISABLED 8u
 #define MATERIAL_FLAG_ROUGHNESS_TEXTURE 16u
 #define MATERIAL_FLAG_METALLIC_TEXTURE 32u
+#define MATERIAL_FLAG_ALPHA_SCISSOR 64u
+#define MATERIAL_FLAG_VERTEX_COLOR 128u
+#define MATERIAL_FLAG_VERTEX_COLOR_SRGB 256u
+
+// Draw flags. Must match RenderForwardClustered::DRAW_FLAG_*.
+#define DRAW_FLAG_HAS_COLOR 1u
 
 /*************************************************************************/
 /* Set 0: render pass data                                               */
@@ -136,7 +142,7 @@ layout(set = 1, binding = 0, std140) uniform MaterialBlock { // 112 bytes.
 	float normal_scale; // 44
 	uint flags; // 48: MATERIAL_FLAG_*.
 	uint diffuse_mode; // 52: BRDF_DIFFUSE_*.
-	uint pad0; // 56
+	float alpha_scissor_threshold; // 56: MATERIAL_FLAG_ALPHA_SCISSOR discards alpha below it.
 	uint pad1; // 60
 	vec4 uv1; // 64: uv1_scale.xy, uv1_offset.xy.
 	vec4 roughness_channel; // 80: weights of the roughness texture's channels.
@@ -160,7 +166,7 @@ layout(push_constant, std430) uniform DrawData { // 128 bytes.
 	mat4 world_from_model; // 0
 	vec4 normal_matrix[3]; // 64: columns of inverse(transpose(world_from_model.basis)), xyz used.
 	uint layer_mask; // 112: instance render layers, matched with LightData.cull_mask.
-	uint flags; // 116: unused.
+	uint flags; // 116: DRAW_FLAG_*.
 	uint pad0; // 120
 	uint pad1; // 124
 }
