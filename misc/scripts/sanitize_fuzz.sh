@@ -2,12 +2,16 @@
 # CI's robustness job (doc/reliability.md): one clang build with ASan+UBSan and libFuzzer
 # (`scons fuzz=yes`, a subset of the engine: core, drivers, servers, scene, modules/gltf), then
 #  1. the unit tests that build into it (tests/core, tests/scene, the glTF tests) under the sanitizers,
-#  2. each libFuzzer harness for FUZZ_SECONDS (default 45) from the committed seed corpus.
+#  2. each libFuzzer harness for FUZZ_SECONDS (default 45) from the committed seed corpus; with
+#     FUZZ_RUNS=N instead, exactly N inputs from the fixed seed FUZZ_SEED (default 1): the same inputs on
+#     every run, so a finding is reproducible and never fails an unrelated change at random (CI's form).
 # Any sanitizer report, test failure or fuzzer crash fails the job. Prints the time of each step.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 JOBS="$(nproc 2>/dev/null || echo 2)"
 FUZZ_SECONDS="${FUZZ_SECONDS:-45}"
+FUZZ_RUNS="${FUZZ_RUNS:-}"
+FUZZ_SEED="${FUZZ_SEED:-1}"
 step() { echo "sanitize_fuzz: $1: $(( $(date +%s) - T0 )) s"; T0=$(date +%s); }
 T0=$(date +%s)
 
@@ -23,7 +27,14 @@ export GODOT_AREA_DEVICE="${GODOT_AREA_DEVICE:-llvmpipe}"
 ./bin/godot-area-tests.fuzz
 step "unit tests under ASan+UBSan"
 
-if [ "$FUZZ_SECONDS" = "0" ]; then
+if [ -n "$FUZZ_RUNS" ]; then
+	budget=(-runs="$FUZZ_RUNS" -seed="$FUZZ_SEED")
+	what="$FUZZ_RUNS inputs, seed $FUZZ_SEED"
+else
+	budget=(-max_total_time="$FUZZ_SECONDS")
+	what="$FUZZ_SECONDS s"
+fi
+if [ -z "$FUZZ_RUNS" ] && [ "$FUZZ_SECONDS" = "0" ]; then
 	echo "sanitize_fuzz: fuzzing skipped (FUZZ_SECONDS=0)"
 	exit 0
 fi
@@ -36,7 +47,7 @@ for harness in resource_format_text:tscn gltf_document:gltf; do
 	mkdir -p "$work/$kind"
 	ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:abort_on_error=1" \
 		./bin/fuzz_"$name" "$work/$kind" "tests/fuzz/corpus/$kind" -dict="tests/fuzz/$kind.dict" \
-		-max_total_time="$FUZZ_SECONDS" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+		"${budget[@]}" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
 		-artifact_prefix="$work/" > "$work/$name.log" 2>&1 || true
 	grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done|==[0-9]+==ERROR|SUMMARY)" "$work/$name.log" || true
 	# A crash, leak, timeout or OOM: an artifact, or libFuzzer's own report (a deadly signal may leave none).
@@ -46,5 +57,5 @@ for harness in resource_format_text:tscn gltf_document:gltf; do
 		grep -E -A30 "==[0-9]+==ERROR|deadly signal" "$work/$name.log" | head -60 || true
 		exit 1
 	fi
-	step "fuzz_$name ($FUZZ_SECONDS s)"
+	step "fuzz_$name ($what)"
 done
