@@ -18,9 +18,9 @@
 #include <imgui_stdlib.h>
 
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <string>
 
 std::function<void(const String &, int, float, float)> EditorProperties::layer_cell_callback;

@@ -76,11 +76,11 @@ bool _ends_with(const String &p_s, const String &p_suffix) {
 }
 
 void _get_glyph(const String &p_icon_path, const GlyphShape **r_shapes, int *r_count) {
-#define GLYPH_CASE(m_file, m_table)                                   \
-	if (_ends_with(p_icon_path, m_file)) {                            \
-		*r_shapes = m_table;                                          \
-		*r_count = int(sizeof(m_table) / sizeof(m_table[0]));         \
-		return;                                                       \
+#define GLYPH_CASE(m_file, m_table)                           \
+	if (_ends_with(p_icon_path, m_file)) {                    \
+		*r_shapes = m_table;                                  \
+		*r_count = int(sizeof(m_table) / sizeof(m_table[0])); \
+		return;                                               \
 	}
 	GLYPH_CASE("GizmoAreaLight.svg", GLYPH_AREA);
 	GLYPH_CASE("GizmoLight.svg", GLYPH_OMNI);

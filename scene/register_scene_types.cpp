@@ -4,6 +4,8 @@
 
 #include "scene/register_scene_types.h"
 
+#include "core/io/image_loader.h"
+#include "core/io/missing_resource.h"
 #include "core/object/class_db.h"
 #include "scene/3d/camera_3d.h"
 #include "scene/3d/geometry_instance_3d.h"
@@ -12,17 +14,15 @@
 #include "scene/3d/node_3d.h"
 #include "scene/3d/visual_instance_3d.h"
 #include "scene/3d/world_environment.h"
-#include "core/io/image_loader.h"
-#include "core/io/missing_resource.h"
 #include "scene/main/missing_node.h"
 #include "scene/main/node.h"
 #include "scene/resources/environment.h"
-#include "scene/resources/sky.h"
-#include "scene/resources/sky_material.h"
 #include "scene/resources/material.h"
 #include "scene/resources/mesh.h"
 #include "scene/resources/primitive_meshes.h"
 #include "scene/resources/resource_format_text.h"
+#include "scene/resources/sky.h"
+#include "scene/resources/sky_material.h"
 #include "scene/resources/texture.h"
 #include "scene/resources/world_3d.h"
 

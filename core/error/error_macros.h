@@ -34,87 +34,87 @@ void set_error_print_silenced(bool p_silenced);
 
 #define ERR_PRINT(m_msg) _err_print_error(__FUNCTION__, __FILE__, __LINE__, String(m_msg))
 #define WARN_PRINT(m_msg) _err_print_error(__FUNCTION__, __FILE__, __LINE__, String(m_msg), String(), ERR_HANDLER_WARNING)
-#define WARN_PRINT_ONCE(m_msg)                                                                                  \
-	do {                                                                                                        \
-		static bool _warned = false;                                                                            \
-		if (!_warned) {                                                                                         \
+#define WARN_PRINT_ONCE(m_msg)                                                                                \
+	do {                                                                                                      \
+		static bool _warned = false;                                                                          \
+		if (!_warned) {                                                                                       \
 			_err_print_error(__FUNCTION__, __FILE__, __LINE__, String(m_msg), String(), ERR_HANDLER_WARNING); \
-			_warned = true;                                                                                     \
-		}                                                                                                       \
+			_warned = true;                                                                                   \
+		}                                                                                                     \
 	} while (0)
 
-#define ERR_FAIL_COND_MSG(m_cond, m_msg)                                                                               \
-	if (__builtin_expect(!!(m_cond), 0)) {                                                                             \
+#define ERR_FAIL_COND_MSG(m_cond, m_msg)                                                                              \
+	if (__builtin_expect(!!(m_cond), 0)) {                                                                            \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Condition \"" _STR(m_cond) "\" is true.", String(m_msg)); \
-		return;                                                                                                        \
-	} else                                                                                                             \
+		return;                                                                                                       \
+	} else                                                                                                            \
 		((void)0)
 #define ERR_FAIL_COND(m_cond) ERR_FAIL_COND_MSG(m_cond, "")
 
-#define ERR_FAIL_COND_V_MSG(m_cond, m_retval, m_msg)                                                                                            \
-	if (__builtin_expect(!!(m_cond), 0)) {                                                                                                      \
+#define ERR_FAIL_COND_V_MSG(m_cond, m_retval, m_msg)                                                                                             \
+	if (__builtin_expect(!!(m_cond), 0)) {                                                                                                       \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Condition \"" _STR(m_cond) "\" is true. Returning: " _STR(m_retval), String(m_msg)); \
-		return m_retval;                                                                                                                        \
-	} else                                                                                                                                      \
+		return m_retval;                                                                                                                         \
+	} else                                                                                                                                       \
 		((void)0)
 #define ERR_FAIL_COND_V(m_cond, m_retval) ERR_FAIL_COND_V_MSG(m_cond, m_retval, "")
 
-#define ERR_FAIL_NULL_MSG(m_param, m_msg)                                                                            \
-	if (__builtin_expect(!(m_param), 0)) {                                                                           \
+#define ERR_FAIL_NULL_MSG(m_param, m_msg)                                                                              \
+	if (__builtin_expect(!(m_param), 0)) {                                                                             \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Parameter \"" _STR(m_param) "\" is null.", String(m_msg)); \
-		return;                                                                                                      \
-	} else                                                                                                           \
+		return;                                                                                                        \
+	} else                                                                                                             \
 		((void)0)
 #define ERR_FAIL_NULL(m_param) ERR_FAIL_NULL_MSG(m_param, "")
 
-#define ERR_FAIL_NULL_V_MSG(m_param, m_retval, m_msg)                                                                \
-	if (__builtin_expect(!(m_param), 0)) {                                                                           \
+#define ERR_FAIL_NULL_V_MSG(m_param, m_retval, m_msg)                                                                  \
+	if (__builtin_expect(!(m_param), 0)) {                                                                             \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Parameter \"" _STR(m_param) "\" is null.", String(m_msg)); \
-		return m_retval;                                                                                             \
-	} else                                                                                                           \
+		return m_retval;                                                                                               \
+	} else                                                                                                             \
 		((void)0)
 #define ERR_FAIL_NULL_V(m_param, m_retval) ERR_FAIL_NULL_V_MSG(m_param, m_retval, "")
 
-#define ERR_FAIL_INDEX_MSG(m_index, m_size, m_msg)                                                                                                                   \
-	if (__builtin_expect((m_index) < 0 || (m_index) >= (m_size), 0)) {                                                                                               \
+#define ERR_FAIL_INDEX_MSG(m_index, m_size, m_msg)                                                                                                                                                           \
+	if (__builtin_expect((m_index) < 0 || (m_index) >= (m_size), 0)) {                                                                                                                                       \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, vformat("Index " _STR(m_index) " = %lld is out of bounds (" _STR(m_size) " = %lld).", (long long)(m_index), (long long)(m_size)), String(m_msg)); \
-		return;                                                                                                                                                      \
-	} else                                                                                                                                                           \
+		return;                                                                                                                                                                                              \
+	} else                                                                                                                                                                                                   \
 		((void)0)
 #define ERR_FAIL_INDEX(m_index, m_size) ERR_FAIL_INDEX_MSG(m_index, m_size, "")
 
-#define ERR_FAIL_INDEX_V_MSG(m_index, m_size, m_retval, m_msg)                                                                                                       \
-	if (__builtin_expect((m_index) < 0 || (m_index) >= (m_size), 0)) {                                                                                               \
+#define ERR_FAIL_INDEX_V_MSG(m_index, m_size, m_retval, m_msg)                                                                                                                                               \
+	if (__builtin_expect((m_index) < 0 || (m_index) >= (m_size), 0)) {                                                                                                                                       \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, vformat("Index " _STR(m_index) " = %lld is out of bounds (" _STR(m_size) " = %lld).", (long long)(m_index), (long long)(m_size)), String(m_msg)); \
-		return m_retval;                                                                                                                                             \
-	} else                                                                                                                                                           \
+		return m_retval;                                                                                                                                                                                     \
+	} else                                                                                                                                                                                                   \
 		((void)0)
 #define ERR_FAIL_INDEX_V(m_index, m_size, m_retval) ERR_FAIL_INDEX_V_MSG(m_index, m_size, m_retval, "")
 
-#define ERR_FAIL_MSG(m_msg)                                                                     \
-	do {                                                                                        \
+#define ERR_FAIL_MSG(m_msg)                                                                  \
+	do {                                                                                     \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Method failed.", String(m_msg)); \
-		return;                                                                                 \
+		return;                                                                              \
 	} while (0)
-#define ERR_FAIL_V_MSG(m_retval, m_msg)                                                                                    \
-	do {                                                                                                                   \
+#define ERR_FAIL_V_MSG(m_retval, m_msg)                                                                                 \
+	do {                                                                                                                \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Method failed. Returning: " _STR(m_retval), String(m_msg)); \
-		return m_retval;                                                                                                   \
+		return m_retval;                                                                                                \
 	} while (0)
 #define ERR_FAIL_V(m_retval) ERR_FAIL_V_MSG(m_retval, "")
 
-#define ERR_CONTINUE_MSG(m_cond, m_msg)                                                                                        \
-	if (__builtin_expect(!!(m_cond), 0)) {                                                                                     \
+#define ERR_CONTINUE_MSG(m_cond, m_msg)                                                                                           \
+	if (__builtin_expect(!!(m_cond), 0)) {                                                                                        \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Condition \"" _STR(m_cond) "\" is true. Continuing.", String(m_msg)); \
-		continue;                                                                                                              \
-	} else                                                                                                                     \
+		continue;                                                                                                                 \
+	} else                                                                                                                        \
 		((void)0)
 #define ERR_CONTINUE(m_cond) ERR_CONTINUE_MSG(m_cond, "")
 
-#define ERR_BREAK_MSG(m_cond, m_msg)                                                                                        \
-	if (__builtin_expect(!!(m_cond), 0)) {                                                                                  \
+#define ERR_BREAK_MSG(m_cond, m_msg)                                                                                            \
+	if (__builtin_expect(!!(m_cond), 0)) {                                                                                      \
 		_err_print_error(__FUNCTION__, __FILE__, __LINE__, "Condition \"" _STR(m_cond) "\" is true. Breaking.", String(m_msg)); \
-		break;                                                                                                              \
-	} else                                                                                                                  \
+		break;                                                                                                                  \
+	} else                                                                                                                      \
 		((void)0)
 #define ERR_BREAK(m_cond) ERR_BREAK_MSG(m_cond, "")

@@ -37,4 +37,6 @@ struct Vector2 {
 			x(p_x), y(p_y) {}
 };
 
-inline Vector2 operator*(real_t p_s, const Vector2 &p_v) { return p_v * p_s; }
+inline Vector2 operator*(real_t p_s, const Vector2 &p_v) {
+	return p_v * p_s;
+}

@@ -59,4 +59,6 @@ struct Vector3 {
 			x(p_x), y(p_y), z(p_z) {}
 };
 
-inline Vector3 operator*(real_t p_s, const Vector3 &p_v) { return p_v * p_s; }
+inline Vector3 operator*(real_t p_s, const Vector3 &p_v) {
+	return p_v * p_s;
+}

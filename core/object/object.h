@@ -32,57 +32,69 @@ class ClassDB;
 // Implemented in class_db.cpp; called by GDCLASS's initialize_class().
 void _classdb_add_class(const String &p_class, const String &p_inherits);
 
-#define GDCLASS(m_class, m_inherits)                                                                                                      \
-private:                                                                                                                                  \
-	friend class ::ClassDB;                                                                                                               \
-                                                                                                                                          \
-public:                                                                                                                                   \
-	typedef m_class self_type;                                                                                                            \
-	typedef m_inherits super_type;                                                                                                        \
-	static String get_class_static() { return String(#m_class); }                                                                         \
-	static String get_parent_class_static() { return m_inherits::get_class_static(); }                                                    \
-	virtual String get_class() const override { return String(#m_class); }                                                               \
-	virtual bool is_class(const String &p_class) const override { return p_class == #m_class || m_inherits::is_class(p_class); }         \
-	static void initialize_class() {                                                                                                      \
-		static bool initialized = false;                                                                                                  \
-		if (initialized) {                                                                                                                \
-			return;                                                                                                                       \
-		}                                                                                                                                 \
-		m_inherits::initialize_class();                                                                                                   \
-		::_classdb_add_class(String(#m_class), m_inherits::get_class_static());                                                           \
-		initialized = true;                                                                                                               \
-		if (m_class::_get_bind_methods() != m_inherits::_get_bind_methods()) {                                                            \
-			m_class::_bind_methods();                                                                                                     \
-		}                                                                                                                                 \
-	}                                                                                                                                     \
-                                                                                                                                          \
-protected:                                                                                                                                \
-	virtual void _initialize_classv() override { initialize_class(); }                                                                    \
-	static void (*_get_bind_methods())() { return &m_class::_bind_methods; }                                                              \
-	static void (Object::*_get_validate_property())(PropertyInfo &) const {                                                               \
-		return static_cast<void (Object::*)(PropertyInfo &) const>(&m_class::_validate_property);                                        \
-	}                                                                                                                                     \
-	static void (Object::*_get_notification())(int) {                                                                                     \
-		return static_cast<void (Object::*)(int)>(&m_class::_notification);                                                              \
-	}                                                                                                                                     \
-	virtual void _validate_propertyv(PropertyInfo &p_property) const override {                                                          \
-		m_inherits::_validate_propertyv(p_property);                                                                                      \
-		if (m_class::_get_validate_property() != m_inherits::_get_validate_property()) {                                                  \
-			m_class::_validate_property(p_property);                                                                                      \
-		}                                                                                                                                 \
-	}                                                                                                                                     \
-	virtual void _notificationv(int p_what, bool p_reversed) override {                                                                   \
-		if (!p_reversed) {                                                                                                                \
-			m_inherits::_notificationv(p_what, p_reversed);                                                                               \
-		}                                                                                                                                 \
-		if (m_class::_get_notification() != m_inherits::_get_notification()) {                                                            \
-			m_class::_notification(p_what);                                                                                               \
-		}                                                                                                                                 \
-		if (p_reversed) {                                                                                                                 \
-			m_inherits::_notificationv(p_what, p_reversed);                                                                               \
-		}                                                                                                                                 \
-	}                                                                                                                                     \
-                                                                                                                                          \
+#define GDCLASS(m_class, m_inherits)                                                              \
+private:                                                                                          \
+	friend class ::ClassDB;                                                                       \
+                                                                                                  \
+public:                                                                                           \
+	typedef m_class self_type;                                                                    \
+	typedef m_inherits super_type;                                                                \
+	static String get_class_static() {                                                            \
+		return String(#m_class);                                                                  \
+	}                                                                                             \
+	static String get_parent_class_static() {                                                     \
+		return m_inherits::get_class_static();                                                    \
+	}                                                                                             \
+	virtual String get_class() const override {                                                   \
+		return String(#m_class);                                                                  \
+	}                                                                                             \
+	virtual bool is_class(const String &p_class) const override {                                 \
+		return p_class == #m_class || m_inherits::is_class(p_class);                              \
+	}                                                                                             \
+	static void initialize_class() {                                                              \
+		static bool initialized = false;                                                          \
+		if (initialized) {                                                                        \
+			return;                                                                               \
+		}                                                                                         \
+		m_inherits::initialize_class();                                                           \
+		::_classdb_add_class(String(#m_class), m_inherits::get_class_static());                   \
+		initialized = true;                                                                       \
+		if (m_class::_get_bind_methods() != m_inherits::_get_bind_methods()) {                    \
+			m_class::_bind_methods();                                                             \
+		}                                                                                         \
+	}                                                                                             \
+                                                                                                  \
+protected:                                                                                        \
+	virtual void _initialize_classv() override {                                                  \
+		initialize_class();                                                                       \
+	}                                                                                             \
+	static void (*_get_bind_methods())() {                                                        \
+		return &m_class::_bind_methods;                                                           \
+	}                                                                                             \
+	static void (Object::*_get_validate_property())(PropertyInfo &) const {                       \
+		return static_cast<void (Object::*)(PropertyInfo &) const>(&m_class::_validate_property); \
+	}                                                                                             \
+	static void (Object::*_get_notification())(int) {                                             \
+		return static_cast<void (Object::*)(int)>(&m_class::_notification);                       \
+	}                                                                                             \
+	virtual void _validate_propertyv(PropertyInfo &p_property) const override {                   \
+		m_inherits::_validate_propertyv(p_property);                                              \
+		if (m_class::_get_validate_property() != m_inherits::_get_validate_property()) {          \
+			m_class::_validate_property(p_property);                                              \
+		}                                                                                         \
+	}                                                                                             \
+	virtual void _notificationv(int p_what, bool p_reversed) override {                           \
+		if (!p_reversed) {                                                                        \
+			m_inherits::_notificationv(p_what, p_reversed);                                       \
+		}                                                                                         \
+		if (m_class::_get_notification() != m_inherits::_get_notification()) {                    \
+			m_class::_notification(p_what);                                                       \
+		}                                                                                         \
+		if (p_reversed) {                                                                         \
+			m_inherits::_notificationv(p_what, p_reversed);                                       \
+		}                                                                                         \
+	}                                                                                             \
+                                                                                                  \
 private:
 
 // Data a file format keeps for an object without interpreting it (the text

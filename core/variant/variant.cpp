@@ -179,9 +179,8 @@ Variant::Variant(const Object *p_object) {
 	_set_object(p_object);
 }
 
-#define _VARIANT_CONVERT_FAIL(m_to, m_ret)                                                                                          \
-	_err_print_error(__FUNCTION__, __FILE__, __LINE__, vformat("Cannot convert Variant of type %s to %s.", get_type_name(type).c_str(), \
-															   get_type_name(m_to).c_str()));                                              \
+#define _VARIANT_CONVERT_FAIL(m_to, m_ret)                                                                                                                             \
+	_err_print_error(__FUNCTION__, __FILE__, __LINE__, vformat("Cannot convert Variant of type %s to %s.", get_type_name(type).c_str(), get_type_name(m_to).c_str())); \
 	return m_ret;
 
 Variant::operator bool() const {

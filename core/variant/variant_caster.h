@@ -19,13 +19,13 @@ class Object;
 template <class T, class = void>
 struct VariantCaster; // Unsupported argument type: add a specialization.
 
-#define _VARIANT_CASTER_SIMPLE(m_type, m_vtype, m_getter)                                                 \
-	template <>                                                                                           \
-	struct VariantCaster<m_type> {                                                                        \
-		static constexpr Variant::Type TYPE = m_vtype;                                                    \
-		static bool check(const Variant &p_v) { return Variant::can_convert(p_v.get_type(), TYPE); }      \
-		static m_type cast(const Variant &p_v) { return p_v.m_getter(); }                                 \
-		static Variant to_variant(const m_type &p_value) { return Variant(p_value); }                     \
+#define _VARIANT_CASTER_SIMPLE(m_type, m_vtype, m_getter)                                            \
+	template <>                                                                                      \
+	struct VariantCaster<m_type> {                                                                   \
+		static constexpr Variant::Type TYPE = m_vtype;                                               \
+		static bool check(const Variant &p_v) { return Variant::can_convert(p_v.get_type(), TYPE); } \
+		static m_type cast(const Variant &p_v) { return p_v.m_getter(); }                            \
+		static Variant to_variant(const m_type &p_value) { return Variant(p_value); }                \
 	};
 
 _VARIANT_CASTER_SIMPLE(bool, Variant::BOOL, operator bool)

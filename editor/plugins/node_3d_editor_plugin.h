@@ -23,10 +23,10 @@
 
 #include "core/io/image.h"
 #include "core/io/tonemap.h"
-#include "core/templates/rid.h"
 #include "core/math/vector2.h"
 #include "core/math/vector3.h"
 #include "core/object/ref_counted.h"
+#include "core/templates/rid.h"
 #include "core/variant/variant.h"
 
 #include <functional>

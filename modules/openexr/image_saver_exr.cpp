@@ -9,12 +9,12 @@
 
 #include "core/error/error_macros.h"
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfOutputFile.h>
-#include <Imath/half.h>
 
 #include <cstring>
 #include <exception>

@@ -373,50 +373,55 @@ void bind_objects(py::module_ &m) {
 	py::class_<EngineObject>(m, "Object", "An engine object. Its ClassDB properties read and write as attributes or with get()/set().")
 			.def("get_class", [](EngineObject &self) { return self.get_checked()->get_class(); })
 			.def("is_class", [](EngineObject &self, const String &p_class) { return self.get_checked()->is_class(p_class); })
-			.def("is_valid", [](EngineObject &self) { return self.object != nullptr; }, "False once the engine freed the object.")
+			.def(
+					"is_valid", [](EngineObject &self) { return self.object != nullptr; }, "False once the engine freed the object.")
 			.def("get", &_get_property, py::arg("property"), "Reads a property by name (AttributeError for unknown names).")
 			.def("set", &_set_property, py::arg("property"), py::arg("value"), "Writes a property by name (AttributeError, TypeError or ValueError with the engine's message).")
 			.def("has_property", [](EngineObject &self, const String &p_name) { return self.get_checked()->has_property(p_name); })
-			.def("get_property_list", [](EngineObject &self) {
-				std::vector<PropertyInfo> list;
-				self.get_checked()->get_property_list(&list);
-				return _property_list(list);
-			}, "Dicts with name, type, type_name, class_name, hint, hint_string, usage (group markers included, flagged in usage).")
+			.def(
+					"get_property_list", [](EngineObject &self) {
+						std::vector<PropertyInfo> list;
+						self.get_checked()->get_property_list(&list);
+						return _property_list(list);
+					},
+					"Dicts with name, type, type_name, class_name, hint, hint_string, usage (group markers included, flagged in usage).")
 			.def("has_method", [](EngineObject &self, const String &p_name) { return self.get_checked()->has_method(p_name); })
-			.def("call", [](EngineObject &self, const String &p_method, py::args p_args) {
-				Object *object = self.get_checked();
-				// The bound method's argument types guide the conversion (2 -> 2.0 for a float, a
-				// 3-tuple -> Color for a Color argument).
-				const MethodBind *bind = ClassDB::get_method(object->get_class(), p_method);
-				std::vector<Variant> args;
-				int index = 0;
-				for (py::handle a : p_args) {
-					const Variant::Type hint = bind && index < bind->get_argument_count() ? bind->get_argument_type(index) : Variant::NIL;
-					try {
-						args.push_back(python_to_variant(a, hint));
-					} catch (const py::type_error &e) {
-						throw py::type_error(vformat("%s.%s(): argument %d ('%s'): %s", object->get_class().c_str(), p_method.c_str(), index + 1,
-								bind && index < (int)bind->get_argument_names().size() ? bind->get_argument_names()[index].c_str() : "?", e.what()));
-					}
-					index++;
-				}
-				bool valid = false;
-				Variant ret;
-				{
-					ErrorCapture capture;
-					ret = object->call(p_method, args, &valid);
-					if (!valid) {
-						if (!object->has_method(p_method)) {
-							throw py::attribute_error(capture.joined());
+			.def(
+					"call", [](EngineObject &self, const String &p_method, py::args p_args) {
+						Object *object = self.get_checked();
+						// The bound method's argument types guide the conversion (2 -> 2.0 for a float, a
+						// 3-tuple -> Color for a Color argument).
+						const MethodBind *bind = ClassDB::get_method(object->get_class(), p_method);
+						std::vector<Variant> args;
+						int index = 0;
+						for (py::handle a : p_args) {
+							const Variant::Type hint = bind && index < bind->get_argument_count() ? bind->get_argument_type(index) : Variant::NIL;
+							try {
+								args.push_back(python_to_variant(a, hint));
+							} catch (const py::type_error &e) {
+								throw py::type_error(vformat("%s.%s(): argument %d ('%s'): %s", object->get_class().c_str(), p_method.c_str(), index + 1,
+										bind && index < (int)bind->get_argument_names().size() ? bind->get_argument_names()[index].c_str() : "?", e.what()));
+							}
+							index++;
 						}
-						throw py::type_error(capture.joined());
-					}
-					if (!capture.errors.empty()) {
-						throw py::value_error(capture.joined());
-					}
-				}
-				return variant_to_python(ret);
-			}, py::arg("method"), "Calls a bound method by name.")
+						bool valid = false;
+						Variant ret;
+						{
+							ErrorCapture capture;
+							ret = object->call(p_method, args, &valid);
+							if (!valid) {
+								if (!object->has_method(p_method)) {
+									throw py::attribute_error(capture.joined());
+								}
+								throw py::type_error(capture.joined());
+							}
+							if (!capture.errors.empty()) {
+								throw py::value_error(capture.joined());
+							}
+						}
+						return variant_to_python(ret);
+					},
+					py::arg("method"), "Calls a bound method by name.")
 			.def("__getattr__", [](EngineObject &self, const String &p_name) -> py::object {
 				if (p_name.size() > 4 && p_name.compare(0, 2, "__") == 0) {
 					throw py::attribute_error(p_name);
@@ -441,34 +446,42 @@ void bind_objects(py::module_ &m) {
 			.def("__repr__", &_repr);
 
 	py::class_<EngineNode, EngineObject>(m, "Node", "A scene node. Orphan nodes belong to Python; a parent or the tree owns the others.")
-			.def("get_node", [](EngineNode &self, const String &p_path) {
-				Node *found = self.get_node_checked()->get_node_or_null(p_path);
-				if (!found) {
-					throw py::key_error(vformat("Node not found: '%s' (relative to %s).", p_path.c_str(), _repr(self).c_str()));
-				}
-				return wrap_object(found);
-			}, py::arg("path"), "Finds a node by relative path ('A/B', '..') or absolute path ('/root/...'); KeyError if missing.")
-			.def("get_node_or_null", [](EngineNode &self, const String &p_path) { return wrap_object(self.get_node_checked()->get_node_or_null(p_path)); }, py::arg("path"))
-			.def("has_node", [](EngineNode &self, const String &p_path) { return self.get_node_checked()->has_node(p_path); }, py::arg("path"))
-			.def("add_child", [](EngineNode &self, py::object p_child) {
-				Node *parent = self.get_node_checked();
-				Node *child = _as_node(p_child, "child").get_node_checked();
-				ErrorCapture capture;
-				parent->add_child(child);
-				if (child->get_parent() != parent) {
-					throw py::value_error(capture.errors.empty() ? String("add_child() failed.") : capture.joined());
-				}
-				return p_child;
-			}, py::arg("child"), "Adds (and gives ownership of) an orphan node; returns it.")
-			.def("remove_child", [](EngineNode &self, py::object p_child) {
-				Node *parent = self.get_node_checked();
-				Node *child = _as_node(p_child, "child").get_node_checked();
-				if (child->get_parent() != parent) {
-					throw py::value_error(vformat("%s is not a child of %s.", _repr(*p_child.cast<EngineNode *>()).c_str(), _repr(self).c_str()));
-				}
-				parent->remove_child(child);
-				return p_child;
-			}, py::arg("child"), "Removes a child; Python owns it afterwards.")
+			.def(
+					"get_node", [](EngineNode &self, const String &p_path) {
+						Node *found = self.get_node_checked()->get_node_or_null(p_path);
+						if (!found) {
+							throw py::key_error(vformat("Node not found: '%s' (relative to %s).", p_path.c_str(), _repr(self).c_str()));
+						}
+						return wrap_object(found);
+					},
+					py::arg("path"), "Finds a node by relative path ('A/B', '..') or absolute path ('/root/...'); KeyError if missing.")
+			.def(
+					"get_node_or_null", [](EngineNode &self, const String &p_path) { return wrap_object(self.get_node_checked()->get_node_or_null(p_path)); }, py::arg("path"))
+			.def(
+					"has_node", [](EngineNode &self, const String &p_path) { return self.get_node_checked()->has_node(p_path); }, py::arg("path"))
+			.def(
+					"add_child", [](EngineNode &self, py::object p_child) {
+						Node *parent = self.get_node_checked();
+						Node *child = _as_node(p_child, "child").get_node_checked();
+						ErrorCapture capture;
+						parent->add_child(child);
+						if (child->get_parent() != parent) {
+							throw py::value_error(capture.errors.empty() ? String("add_child() failed.") : capture.joined());
+						}
+						return p_child;
+					},
+					py::arg("child"), "Adds (and gives ownership of) an orphan node; returns it.")
+			.def(
+					"remove_child", [](EngineNode &self, py::object p_child) {
+						Node *parent = self.get_node_checked();
+						Node *child = _as_node(p_child, "child").get_node_checked();
+						if (child->get_parent() != parent) {
+							throw py::value_error(vformat("%s is not a child of %s.", _repr(*p_child.cast<EngineNode *>()).c_str(), _repr(self).c_str()));
+						}
+						parent->remove_child(child);
+						return p_child;
+					},
+					py::arg("child"), "Removes a child; Python owns it afterwards.")
 			.def("get_children", [](EngineNode &self) {
 				Node *node = self.get_node_checked();
 				py::list out;
@@ -482,39 +495,44 @@ void bind_objects(py::module_ &m) {
 			.def("get_path", [](EngineNode &self) { return self.get_node_checked()->get_path(); })
 			.def("is_inside_tree", [](EngineNode &self) { return self.get_node_checked()->is_inside_tree(); })
 			.def("get_tree_string", [](EngineNode &self) { return self.get_node_checked()->get_tree_string(); })
-			.def("get_groups", [](EngineNode &self) {
-				py::list out;
-				for (const String &g : self.get_node_checked()->get_groups()) {
-					out.append(py::str(g));
-				}
-				return out;
-			}, "The node's groups, in the order they were added (add_to_group).")
-			.def("find_children", [](EngineNode &self, const String &p_pattern, const String &p_class, bool p_recursive) {
-				py::list out;
-				std::vector<Node *> stack = { self.get_node_checked() };
-				while (!stack.empty()) {
-					Node *node = stack.back();
-					stack.pop_back();
-					for (int i = node->get_child_count() - 1; i >= 0; i--) {
-						Node *child = node->get_child(i);
-						if ((p_class.empty() || child->is_class(p_class)) && fnmatch(p_pattern.c_str(), child->get_name().c_str(), 0) == 0) {
-							out.append(wrap_object(child));
+			.def(
+					"get_groups", [](EngineNode &self) {
+						py::list out;
+						for (const String &g : self.get_node_checked()->get_groups()) {
+							out.append(py::str(g));
 						}
-						if (p_recursive) {
-							stack.push_back(child);
+						return out;
+					},
+					"The node's groups, in the order they were added (add_to_group).")
+			.def(
+					"find_children", [](EngineNode &self, const String &p_pattern, const String &p_class, bool p_recursive) {
+						py::list out;
+						std::vector<Node *> stack = { self.get_node_checked() };
+						while (!stack.empty()) {
+							Node *node = stack.back();
+							stack.pop_back();
+							for (int i = node->get_child_count() - 1; i >= 0; i--) {
+								Node *child = node->get_child(i);
+								if ((p_class.empty() || child->is_class(p_class)) && fnmatch(p_pattern.c_str(), child->get_name().c_str(), 0) == 0) {
+									out.append(wrap_object(child));
+								}
+								if (p_recursive) {
+									stack.push_back(child);
+								}
+							}
 						}
-					}
-				}
-				return out;
-			}, py::arg("pattern") = "*", py::arg("type") = "", py::arg("recursive") = true,
-					"Descendants whose name matches pattern (* and ?) and whose class is type or a subclass ('' for any), in tree order.")
-			.def("free", [](EngineNode &self) {
-				Node *node = self.get_node_checked();
-				if (node->is_inside_tree() && !node->get_parent()) {
-					throw py::value_error("The tree's root node cannot be freed.");
-				}
-				_free_node(node);
-			}, "Deletes the node and its subtree now; their wrappers become invalid.");
+						return out;
+					},
+					py::arg("pattern") = "*", py::arg("type") = "", py::arg("recursive") = true, "Descendants whose name matches pattern (* and ?) and whose class is type or a subclass ('' for any), in tree order.")
+			.def(
+					"free", [](EngineNode &self) {
+						Node *node = self.get_node_checked();
+						if (node->is_inside_tree() && !node->get_parent()) {
+							throw py::value_error("The tree's root node cannot be freed.");
+						}
+						_free_node(node);
+					},
+					"Deletes the node and its subtree now; their wrappers become invalid.");
 }
 
 } // namespace godot_area_py

@@ -22,19 +22,19 @@ bool ProceduralSkyMaterial::_check(float p_value, float p_min, float p_max, cons
 	return true;
 }
 
-#define SKY_COLOR_SETTER(m_name, m_field, m_property)                                                                                 \
-	void ProceduralSkyMaterial::m_name(const Color &p_color) {                                                                        \
+#define SKY_COLOR_SETTER(m_name, m_field, m_property)                                                                            \
+	void ProceduralSkyMaterial::m_name(const Color &p_color) {                                                                   \
 		ERR_FAIL_COND_MSG(!p_color.is_finite(), "ProceduralSkyMaterial: " m_property " must be finite; the old value is kept."); \
-		params.m_field = p_color;                                                                                                     \
-		_push();                                                                                                                      \
+		params.m_field = p_color;                                                                                                \
+		_push();                                                                                                                 \
 	}
 
 #define SKY_FLOAT_SETTER(m_name, m_field, m_min, m_max, m_property) \
-	void ProceduralSkyMaterial::m_name(float p_value) {              \
-		if (_check(p_value, m_min, m_max, m_property)) {             \
-			params.m_field = p_value;                                \
-			_push();                                                 \
-		}                                                            \
+	void ProceduralSkyMaterial::m_name(float p_value) {             \
+		if (_check(p_value, m_min, m_max, m_property)) {            \
+			params.m_field = p_value;                               \
+			_push();                                                \
+		}                                                           \
 	}
 
 SKY_COLOR_SETTER(set_sky_top_color, sky_top_color, "sky_top_color")
@@ -148,19 +148,19 @@ bool PhysicalSkyMaterial::_check(float p_value, float p_min, float p_max, const 
 	return true;
 }
 
-#define PHYSICAL_COLOR_SETTER(m_name, m_field, m_property)                                                                          \
-	void PhysicalSkyMaterial::m_name(const Color &p_color) {                                                                        \
+#define PHYSICAL_COLOR_SETTER(m_name, m_field, m_property)                                                                     \
+	void PhysicalSkyMaterial::m_name(const Color &p_color) {                                                                   \
 		ERR_FAIL_COND_MSG(!p_color.is_finite(), "PhysicalSkyMaterial: " m_property " must be finite; the old value is kept."); \
-		params.m_field = p_color;                                                                                                   \
-		_push();                                                                                                                    \
+		params.m_field = p_color;                                                                                              \
+		_push();                                                                                                               \
 	}
 
 #define PHYSICAL_FLOAT_SETTER(m_name, m_field, m_min, m_max, m_property) \
-	void PhysicalSkyMaterial::m_name(float p_value) {                     \
-		if (_check(p_value, m_min, m_max, m_property)) {                  \
-			params.m_field = p_value;                                     \
-			_push();                                                      \
-		}                                                                 \
+	void PhysicalSkyMaterial::m_name(float p_value) {                    \
+		if (_check(p_value, m_min, m_max, m_property)) {                 \
+			params.m_field = p_value;                                    \
+			_push();                                                     \
+		}                                                                \
 	}
 
 // Ranges: Godot's inspector hints (values outside them are refused with an error, as above).

@@ -131,7 +131,7 @@ RenderingDevice::DrawListID RenderingDevice::draw_list_begin(RID p_framebuffer, 
 	return DRAW_LIST_ID;
 }
 
-#define DRAW_LIST_CHECK(m_list)                                                                                          \
+#define DRAW_LIST_CHECK(m_list) \
 	ERR_FAIL_COND_MSG(!impl->list.active || impl->list.is_compute || (m_list) != DRAW_LIST_ID, "Invalid or closed draw list.")
 
 void RenderingDevice::draw_list_bind_render_pipeline(DrawListID p_list, RID p_render_pipeline) {
@@ -261,7 +261,7 @@ RenderingDevice::ComputeListID RenderingDevice::compute_list_begin() {
 	return COMPUTE_LIST_ID;
 }
 
-#define COMPUTE_LIST_CHECK(m_list)                                                                                      \
+#define COMPUTE_LIST_CHECK(m_list) \
 	ERR_FAIL_COND_MSG(!impl->list.active || !impl->list.is_compute || (m_list) != COMPUTE_LIST_ID, "Invalid or closed compute list.")
 
 void RenderingDevice::compute_list_bind_compute_pipeline(ComputeListID p_list, RID p_compute_pipeline) {

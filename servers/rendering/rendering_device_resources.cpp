@@ -474,4 +474,3 @@ RID RenderingDevice::sampler_create(const SamplerState &p_state) {
 	ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, RID(), vformat("vkCreateSampler failed (VkResult %d).", res));
 	return s->sampler_owner.make_rid(smp);
 }
-

@@ -26,14 +26,14 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <sstream>
-#include <thread>
-#include <fcntl.h>
 #include <spawn.h>
+#include <sstream>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 extern char **environ;
@@ -309,7 +309,9 @@ TEST_CASE("[Editor][Window] under Xvfb: select the area light, drag its width ha
 			{ "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
 	REQUIRE(p.editor > 0);
 	int ready = p.wait_line("ready");
-	REQUIRE_MESSAGE(ready >= 0, "the editor did not start; its output:\n" << _read_file(p.output) << "\nlog:\n" << _read_file(p.log));
+	REQUIRE_MESSAGE(ready >= 0, "the editor did not start; its output:\n"
+					<< _read_file(p.output) << "\nlog:\n"
+					<< _read_file(p.log));
 	REQUIRE(p.wait_line("select TVPanel") >= 0);
 
 	// Handle positions (window pixels) as the editor reports them.
@@ -410,7 +412,8 @@ TEST_CASE("[Editor][Window] under Xvfb: select the area light, drag its width ha
 	REQUIRE(p.xdotool("key ctrl+q"));
 	int exit_line = p.wait_line("exit ", mark);
 	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
+																					   << _read_file(p.output));
 	for (int i = 0; i < 600 && p.alive(); i++) {
 		std::this_thread::sleep_for(std::chrono::milliseconds(100));
 	}
@@ -504,7 +507,9 @@ TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows)
 			{ "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
 	REQUIRE(p.editor > 0);
 	const int ready = p.wait_line("ready");
-	REQUIRE_MESSAGE(ready >= 0, "the editor did not start; its output:\n" << _read_file(p.output) << "\nlog:\n" << _read_file(p.log));
+	REQUIRE_MESSAGE(ready >= 0, "the editor did not start; its output:\n"
+					<< _read_file(p.output) << "\nlog:\n"
+					<< _read_file(p.log));
 	CHECK(p.line(ready) == "ready viewport 240 0 480 360 window 1040 600");
 
 	// Resize the window as a window manager would; the viewport takes the new room.
@@ -512,7 +517,8 @@ TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows)
 	const int new_w = 1200, new_h = 720;
 	REQUIRE(p.xdotool(vformat("search --name \"godot-area editor\" windowsize %%1 %d %d", new_w, new_h)));
 	const int resized = p.wait_line("resize window", mark);
-	REQUIRE_MESSAGE(resized >= 0, _read_file(p.log) << "\n" << _read_file(p.output));
+	REQUIRE_MESSAGE(resized >= 0, _read_file(p.log) << "\n"
+													<< _read_file(p.output));
 	const EditorNode::Layout layout = EditorNode::compute_layout(new_w, new_h);
 	const EditorNode::Rect &v = layout.viewport;
 	CHECK(p.line(resized) == vformat("resize window %d %d viewport %d %d %d %d", new_w, new_h, v.x, v.y, v.width, v.height));
@@ -571,7 +577,8 @@ TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows)
 	REQUIRE(p.xdotool("key ctrl+q"));
 	const int exit_line = p.wait_line("exit ", mark);
 	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
+																					   << _read_file(p.output));
 	for (int i = 0; i < 600 && p.alive(); i++) {
 		std::this_thread::sleep_for(std::chrono::milliseconds(100));
 	}
@@ -619,14 +626,16 @@ TEST_CASE("[Editor][Window] under Xvfb: the GPU-sampled viewport shows what `ren
 	const String shot = (dir / "shot").string();
 	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--test-log", p.log, "--screenshot", shot }, { "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
 	REQUIRE(p.editor > 0);
-	REQUIRE_MESSAGE(p.wait_line("ready viewport 240 0 480 360") >= 0, _read_file(p.output) << "\n" << _read_file(p.log));
+	REQUIRE_MESSAGE(p.wait_line("ready viewport 240 0 480 360") >= 0, _read_file(p.output) << "\n"
+																						   << _read_file(p.log));
 	size_t mark = p.line_count();
 	REQUIRE(p.xdotool("mousemove 5 590 key F12"));
 	REQUIRE_MESSAGE(p.wait_line("screenshot " + shot + "_0.png", mark) >= 0, _read_file(p.log));
 	REQUIRE(p.xdotool("key ctrl+q"));
 	const int exit_line = p.wait_line("exit ", mark);
 	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
+																					   << _read_file(p.output));
 
 	// The same frame through the CPU path: readback, CPU gizmos, Tonemap::apply.
 	const String cpu_png = (dir / "cpu.png").string();
@@ -716,7 +725,9 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
 	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--test-log", p.log }, { "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
 	REQUIRE(p.editor > 0);
-	REQUIRE_MESSAGE(p.wait_line("ready") >= 0, "the editor did not start; its output:\n" << _read_file(p.output) << "\nlog:\n" << _read_file(p.log));
+	REQUIRE_MESSAGE(p.wait_line("ready") >= 0, "the editor did not start; its output:\n"
+					<< _read_file(p.output) << "\nlog:\n"
+					<< _read_file(p.log));
 	// The report lines come before "ready": each names the file and what was kept.
 	bool reported = false;
 	for (size_t i = 0; i < p.line_count(); i++) {
@@ -728,7 +739,8 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 	REQUIRE(p.xdotool("key ctrl+q"));
 	const int exit_line = p.wait_line("exit ", mark);
 	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n" << _read_file(p.output));
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
+																					   << _read_file(p.output));
 	for (int i = 0; i < 600 && p.alive(); i++) {
 		std::this_thread::sleep_for(std::chrono::milliseconds(100));
 	}

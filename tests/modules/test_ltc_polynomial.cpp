@@ -18,9 +18,9 @@
 #include "modules/ltc_fit/ltc_polynomial.h"
 #include "modules/ltc_fit/ltc_table_io.h"
 #include "scene/main/godot_instance.h"
-#include "servers/rendering_server.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
+#include "servers/rendering_server.h"
 #include "tests/servers/rd_test_fixture.h"
 #include "tests/servers/render_scene_helpers.h"
 

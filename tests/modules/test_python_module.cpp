@@ -58,7 +58,8 @@ TEST_CASE("[Python] the godot_area module passes the pytest suite tests/python (
 		summary.pop_back();
 	}
 	summary = summary.substr(summary.rfind('\n') == String::npos ? 0 : summary.rfind('\n') + 1);
-	INFO("pytest output:\n" << output);
+	INFO("pytest output:\n"
+			<< output);
 	CHECK(code == 0);
 	CHECK(summary.find(" passed") != String::npos);
 	CHECK(summary.find(" failed") == String::npos); // "1 xfailed" (a known engine bug, marked strict) is fine.

@@ -316,7 +316,6 @@ area_normalize_energy = false
 	delete root;
 }
 
-
 TEST_CASE("[AreaLight3D] an upstream-style Godot 4.7 scene loads with upstream's values, and saves them back") {
 	DummyServer server;
 	// Written as upstream Godot 4.7 writes area lights: only non-default values appear, light_size

@@ -20,9 +20,9 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
-#include <unistd.h>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace TestSceneCorpus {
 

@@ -304,7 +304,6 @@ static ErrorStats compare(const std::vector<float> &p_image, const std::vector<f
 	return s;
 }
 
-
 TEST_CASE("[AreaLight3D][LTC] a long thin light close to a glossy plane: the 5.4.4 edge split cuts the max error against the reference at least 10x") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");

@@ -13,9 +13,9 @@
 #include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
-#include "servers/rendering/rendering_server_default.h"
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "servers/rendering/rendering_server_default.h"
 #include "tests/servers/rd_test_fixture.h"
 #include "tests/servers/render_test_fixture.h"
 

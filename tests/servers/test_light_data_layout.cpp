@@ -12,11 +12,11 @@
 /* other passes' blocks are read from the production shaders' SPIR-V.     */
 
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
-#include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/effects/sky_rd.h"
 #include "servers/rendering/renderer_rd/forward_clustered/render_forward_clustered.h"
+#include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "tests/servers/rd_test_fixture.h"
@@ -122,7 +122,8 @@ void main() {
 	return p_rd->shader_compile_spirv_from_source(RenderingDevice::SHADER_STAGE_COMPUTE, source, "light_data_layout_probe", &r_error);
 }
 
-#define MEMBER(m_struct, m_name) { #m_name, uint32_t(offsetof(m_struct, m_name)) }
+#define MEMBER(m_struct, m_name) \
+	{ #m_name, uint32_t(offsetof(m_struct, m_name)) }
 
 static void check_layout(const SPIRVStructLayout &p_layout, const char *p_name, const std::vector<std::pair<String, uint32_t>> &p_members, size_t p_sizeof) {
 	INFO("struct ", p_name);
@@ -283,8 +284,11 @@ static std::vector<uint32_t> compile_production_stage(RenderingDevice *p_rd, con
 	return spirv;
 }
 
-#define PAD4(m_struct, m_array, m_prefix) { m_prefix "0", uint32_t(offsetof(m_struct, m_array)) }, { m_prefix "1", uint32_t(offsetof(m_struct, m_array) + 4) }, \
-		{ m_prefix "2", uint32_t(offsetof(m_struct, m_array) + 8) }, { m_prefix "3", uint32_t(offsetof(m_struct, m_array) + 12) }
+#define PAD4(m_struct, m_array, m_prefix)                                                                                 \
+	{ m_prefix "0", uint32_t(offsetof(m_struct, m_array)) }, { m_prefix "1", uint32_t(offsetof(m_struct, m_array) + 4) }, \
+			{ m_prefix "2", uint32_t(offsetof(m_struct, m_array) + 8) }, {                                                \
+		m_prefix "3", uint32_t(offsetof(m_struct, m_array) + 12)                                                          \
+	}
 
 TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other pass blocks match the production shaders' SPIR-V") {
 	RenderingDevice *rd = rd_test_get_device();

@@ -11,10 +11,10 @@
 #include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/renderer_compositor_rd.h"
-#include "servers/rendering/rendering_server_default.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/material_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
+#include "servers/rendering/rendering_server_default.h"
 #include "tests/servers/rd_test_fixture.h"
 #include "tests/servers/render_test_fixture.h"
 
@@ -34,10 +34,10 @@ using RenderTest::add_geometry;
 using RenderTest::add_light;
 using RenderTest::add_quad;
 using RenderTest::camera_looking_down;
-using RenderTest::make_scene;
-using RenderTest::pixel_on_ground;
 using RenderTest::make_box;
 using RenderTest::make_plane;
+using RenderTest::make_scene;
+using RenderTest::pixel_on_ground;
 
 static Color pixel(const std::vector<float> &p_img, int p_w, int p_x, int p_y) {
 	const float *p = &p_img[(size_t(p_y) * p_w + p_x) * 4];

@@ -535,11 +535,13 @@ TEST_CASE("[RenderingDevice] buffer_get_data_async delivers after the frame comp
 	const uint64_t submitted = rd->get_frames_submitted();
 	std::vector<uint32_t> got;
 	int calls = 0;
-	CHECK(rd->buffer_get_data_async(buf, [&](const std::vector<uint8_t> &p_bytes) {
-		calls++;
-		got.resize(p_bytes.size() / 4);
-		memcpy(got.data(), p_bytes.data(), got.size() * 4);
-	}, 4, 8));
+	CHECK(rd->buffer_get_data_async(
+			buf, [&](const std::vector<uint8_t> &p_bytes) {
+				calls++;
+				got.resize(p_bytes.size() / 4);
+				memcpy(got.data(), p_bytes.data(), got.size() * 4);
+			},
+			4, 8));
 	// Written after the copy was recorded: the readback holds the old values.
 	const uint32_t later = 99;
 	rd->buffer_update(buf, 4, 4, &later);
@@ -558,7 +560,8 @@ TEST_CASE("[RenderingDevice] buffer_get_data_async delivers after the frame comp
 	CHECK(calls == 1); // Delivered once.
 	set_error_print_silenced(true);
 	CHECK_FALSE(rd->buffer_get_data_async(RID(), [](const std::vector<uint8_t> &) {}));
-	CHECK_FALSE(rd->buffer_get_data_async(buf, [](const std::vector<uint8_t> &) {}, 16, 4));
+	CHECK_FALSE(rd->buffer_get_data_async(
+			buf, [](const std::vector<uint8_t> &) {}, 16, 4));
 	CHECK_FALSE(rd->buffer_get_data_async(buf, nullptr));
 	set_error_print_silenced(false);
 	rd->free(buf);

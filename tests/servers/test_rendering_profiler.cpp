@@ -10,9 +10,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <cmath>
 
 namespace TestRenderingProfiler {
 

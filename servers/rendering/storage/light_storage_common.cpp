@@ -19,18 +19,17 @@ LightStorageCommon::LightRecord *LightStorageCommon::_get_light(RID p_light, con
 	return light;
 }
 
-#define GET_LIGHT_OR_FAIL(m_var)                           \
+#define GET_LIGHT_OR_FAIL(m_var)                            \
 	LightRecord *m_var = _get_light(p_light, __FUNCTION__); \
 	if (!m_var) {                                           \
 		return;                                             \
 	}
 
-#define GET_LIGHT_OR_FAIL_V(m_var, m_ret)                        \
+#define GET_LIGHT_OR_FAIL_V(m_var, m_ret)                         \
 	const LightRecord *m_var = _get_light(p_light, __FUNCTION__); \
 	if (!m_var) {                                                 \
 		return m_ret;                                             \
 	}
-
 
 RID LightStorageCommon::light_create(RS::LightType p_type) {
 	ERR_FAIL_INDEX_V_MSG((int)p_type, (int)RS::LIGHT_AREA + 1, RID(), "light_create: type is not a LightType value.");

@@ -49,12 +49,12 @@
 #pragma once
 
 #include "core/templates/rid_owner.h"
-#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/cluster_builder_rd.h"
 #include "servers/rendering/renderer_rd/directional_shadow_rd.h"
+#include "servers/rendering/renderer_rd/effects/area_shadow_renderer.h"
 #include "servers/rendering/renderer_rd/effects/ltc_lut_rd.h"
-#include "servers/rendering/renderer_rd/effects/ss_radiosity_rd.h"
 #include "servers/rendering/renderer_rd/effects/sky_rd.h"
+#include "servers/rendering/renderer_rd/effects/ss_radiosity_rd.h"
 #include "servers/rendering/renderer_rd/shader_rd.h"
 #include "servers/rendering/renderer_scene_render.h"
 
