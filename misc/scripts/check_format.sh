@@ -5,8 +5,8 @@
 #   misc/scripts/check_format.sh --strict   the same, exits 1 when any file would change
 #   misc/scripts/check_format.sh --base REV only the files changed since REV (git diff REV --name-only)
 #
-# CI (.ci/run) runs the report, so formatting never blocks a merge; run --strict --base main before a
-# commit to keep the files you touch clean. Without clang-format it says so and exits 0.
+# CI (.ci/run) runs --strict over every file: run `--strict --base main` before a commit (or
+# `clang-format -i FILE` on what it names). Without clang-format it says so and exits 0.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 strict=0
