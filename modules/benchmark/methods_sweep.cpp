@@ -201,6 +201,60 @@ MethodsSweep::Row time_scene(RenderingServer *p_rs, const MethodsSweep::Options 
 	return row;
 }
 
+// The Embree reference images of p_scenes (shadows off, seed 0), from a server of their own.
+bool render_references(const std::vector<AccuracyScenes::Scene> &p_scenes, int p_resolution, bool p_progress, std::vector<Image> *r_images, String *r_error) {
+	if (p_scenes.empty()) {
+		return true;
+	}
+	ReferenceRenderOptions options;
+	options.shadows = false;
+	options.seed = 0;
+	GodotInstance reference;
+	if (!reference.start_with_compositor(new RendererCompositorReference(options), r_error)) {
+		return false;
+	}
+	for (size_t i = 0; i < p_scenes.size(); i++) {
+		Image img = render_accuracy_scene(reference.get_rendering_server(), p_scenes[i], p_resolution, RS::LIGHT_AREA_SHADING_LTC, 1, r_error);
+		if (img.is_empty()) {
+			*r_error = "Reference: " + *r_error;
+			return false;
+		}
+		r_images->push_back(img);
+		if (p_progress) {
+			printf("[reference %zu/%zu] %s\n", i + 1, p_scenes.size(), p_scenes[i].id.c_str());
+			fflush(stdout);
+		}
+	}
+	return true;
+}
+
+// The engine for timing and errors, with room for the largest light count (at least 64).
+bool start_engine(const MethodsSweep::Options &p_options, GodotInstance &r_engine, String *r_error) {
+	int max_lights = 64;
+	for (int n : p_options.light_counts) {
+		max_lights = std::max(max_lights, n);
+	}
+	return r_engine.start(GodotInstance::BACKEND_RD, r_error, uint32_t(max_lights));
+}
+
+// An error row of p_config on scene p_scene (p_resolution squared) with metrics p_m.
+MethodsSweep::Row error_row(const MethodsSweep::Config &p_config, int p_resolution, const String &p_scene, const ImageMetrics::Result &p_m) {
+	MethodsSweep::Row row;
+	row.section = "error";
+	row.config = p_config.name;
+	row.method = p_config.method;
+	row.samples = p_config.samples;
+	row.lights = 1;
+	row.width = p_resolution;
+	row.height = p_resolution;
+	row.scene = p_scene;
+	row.flip = p_m.flip;
+	row.rmse = p_m.rmse;
+	row.ssim = p_m.ssim;
+	row.hdr_flip = p_m.has_hdr_flip ? p_m.hdr_flip : 0.0;
+	return row;
+}
+
 bool wanted(const MethodsSweep::Options &p_options, const MethodsSweep::Config &p_config) {
 	return p_options.only_configs.empty() || std::find(p_options.only_configs.begin(), p_options.only_configs.end(), p_config.name) != p_options.only_configs.end();
 }
@@ -233,33 +287,11 @@ bool run_shape_axis(const MethodsSweep::Options &p_options, std::vector<MethodsS
 	const std::vector<AccuracyScenes::Scene> scenes = p_options.errors ? shape_error_scenes() : std::vector<AccuracyScenes::Scene>();
 	const int res = p_options.error_resolution;
 	std::vector<Image> references;
-	if (!scenes.empty()) {
-		ReferenceRenderOptions options;
-		options.shadows = false;
-		options.seed = 0;
-		GodotInstance reference;
-		if (!reference.start_with_compositor(new RendererCompositorReference(options), r_error)) {
-			return false;
-		}
-		for (size_t i = 0; i < scenes.size(); i++) {
-			Image img = render_accuracy_scene(reference.get_rendering_server(), scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, 1, r_error);
-			if (img.is_empty()) {
-				*r_error = "Reference: " + *r_error;
-				return false;
-			}
-			references.push_back(img);
-			if (p_options.progress) {
-				printf("[reference %zu/%zu] %s\n", i + 1, scenes.size(), scenes[i].id.c_str());
-				fflush(stdout);
-			}
-		}
-	}
-	int max_lights = 64;
-	for (int n : p_options.light_counts) {
-		max_lights = std::max(max_lights, n);
+	if (!render_references(scenes, res, p_options.progress, &references, r_error)) {
+		return false;
 	}
 	GodotInstance engine;
-	if (!engine.start(GodotInstance::BACKEND_RD, r_error, uint32_t(max_lights))) {
+	if (!start_engine(p_options, engine, r_error)) {
 		return false;
 	}
 	RenderingServer *rs = engine.get_rendering_server();
@@ -329,18 +361,8 @@ bool run_shape_axis(const MethodsSweep::Options &p_options, std::vector<MethodsS
 				*r_error = config.name + " on " + scenes[i].id + ": " + *r_error;
 				return false;
 			}
-			MS::Row row;
+			MS::Row row = error_row(config, res, scenes[i].id, m);
 			row.section = "shape_error";
-			row.config = config.name;
-			row.method = config.method;
-			row.samples = config.samples;
-			row.width = res;
-			row.height = res;
-			row.scene = scenes[i].id;
-			row.flip = m.flip;
-			row.rmse = m.rmse;
-			row.ssim = m.ssim;
-			row.hdr_flip = m.has_hdr_flip ? m.hdr_flip : 0.0;
 			row.shape = MS::shape_name(scenes[i].shape);
 			row.relative_rmse = m.relative_rmse;
 			row.brightness_ratio = m.brightness_ratio;
@@ -458,34 +480,13 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 				scenes.push_back(f);
 			}
 		}
-		ReferenceRenderOptions options;
-		options.shadows = false;
-		options.seed = 0;
-		RendererCompositorReference *compositor = new RendererCompositorReference(options);
-		GodotInstance reference;
-		if (!reference.start_with_compositor(compositor, &error)) {
+		if (!render_references(scenes, res, p_options.progress, &references, &error)) {
 			return fail(error);
-		}
-		RenderingServer *rs = reference.get_rendering_server();
-		for (size_t i = 0; i < scenes.size(); i++) {
-			Image img = render_accuracy_scene(rs, scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, 1, &error);
-			if (img.is_empty()) {
-				return fail("Reference: " + error);
-			}
-			references.push_back(img);
-			if (p_options.progress) {
-				printf("[reference %zu/%zu] %s\n", i + 1, scenes.size(), scenes[i].id.c_str());
-				fflush(stdout);
-			}
 		}
 	}
 
-	int max_lights = 64;
-	for (int n : p_options.light_counts) {
-		max_lights = std::max(max_lights, n);
-	}
 	GodotInstance engine;
-	if (!engine.start(GodotInstance::BACKEND_RD, &error, uint32_t(max_lights))) {
+	if (!start_engine(p_options, engine, &error)) {
 		return fail(error);
 	}
 	RenderingServer *rs = engine.get_rendering_server();
@@ -541,20 +542,7 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 				ok = false;
 				break;
 			}
-			Row row;
-			row.section = "error";
-			row.config = config.name;
-			row.method = config.method;
-			row.samples = config.samples;
-			row.lights = 1;
-			row.width = res;
-			row.height = res;
-			row.scene = scenes[i].id;
-			row.flip = m.flip;
-			row.rmse = m.rmse;
-			row.ssim = m.ssim;
-			row.hdr_flip = m.has_hdr_flip ? m.hdr_flip : 0.0;
-			r_rows->push_back(row);
+			r_rows->push_back(error_row(config, res, scenes[i].id, m));
 			if (p_options.progress) {
 				printf("[error %s] %s: FLIP %.4f\n", config.name.c_str(), scenes[i].id.c_str(), m.flip);
 				fflush(stdout);
