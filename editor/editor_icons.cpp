@@ -9,9 +9,11 @@
 #include "core/object/class_db.h"
 #include "core/object/object.h"
 #include "editor/editor_icons.gen.h"
+#include "scene/3d/light_3d.h"
 
 #include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <map>
 #include <memory>
 
@@ -337,5 +339,15 @@ String EditorIcons::get_object_icon_name(const Object *p_object, const String &p
 	if (p_object->is_class("MissingNode")) {
 		return has_icon("MissingNode") ? String("MissingNode") : get_class_icon_name("Node3D", p_fallback);
 	}
-	return get_class_icon_name(p_object->get_class(), p_fallback);
+	const String name = get_class_icon_name(p_object->get_class(), p_fallback);
+	// An AreaLight3D shows the icon of its area_shape (issue 21) where there is one.
+	const AreaLight3D *area = dynamic_cast<const AreaLight3D *>(p_object);
+	if (area && name == "AreaLight3D") {
+		static const char *suffixes[] = { "", "Disk", "Sphere", "Tube" };
+		const int shape = int(area->get_area_shape());
+		if (shape > 0 && shape < int(std::size(suffixes)) && has_icon(name + suffixes[shape])) {
+			return name + suffixes[shape];
+		}
+	}
+	return name;
 }

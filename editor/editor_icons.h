@@ -18,7 +18,9 @@
 /* VisualInstance3D -> Node3D has one), and a class with no icon on the   */
 /* way to Object shows the fallback ("Node"). A MissingNode shows its own */
 /* placeholder icon ("MissingNode"), never the icon of the class it      */
-/* stands in for, since that class is not available.                     */
+/* stands in for, since that class is not available. An AreaLight3D      */
+/* shows the icon of its area_shape (AreaLight3D<Disk|Sphere|Tube>; the   */
+/* rectangle keeps AreaLight3D), so the scene tree tells shapes apart.    */
 
 #pragma once
 
@@ -68,6 +70,7 @@ public:
 	// (empty when p_fallback has no icon either).
 	static String get_class_icon_name(const String &p_class, const String &p_fallback = "Node");
 	// The icon an object shows in the scene tree: MissingNode's placeholder for a MissingNode,
-	// otherwise its class icon.
+	// otherwise its class icon; an AreaLight3D whose area_shape is not the rectangle shows
+	// AreaLight3DDisk / AreaLight3DSphere / AreaLight3DTube.
 	static String get_object_icon_name(const Object *p_object, const String &p_fallback = "Node");
 };

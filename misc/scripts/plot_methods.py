@@ -7,6 +7,9 @@
 # OUT/methods_lights.png (GPU ms of the opaque pass vs number of lights), and, with --maps,
 # OUT/methods_failure_<scene>.png (engine | reference | FLIP strips of each method on a failure scene).
 # Prints the closing numbers of doc/methods.md as markdown.
+# A CSV of the shape axis (`bench --sweep methods --shapes`, sections shape_timing / shape_error) gives
+# OUT/methods_shapes_pareto.png instead (per shape: GPU ms per light vs mean relative RMSE, the Pareto
+# front dashed) and the per-shape table of doc/methods.md §11 (cost, relative RMSE, FLIP, front).
 import argparse
 import csv
 import os
@@ -23,16 +26,29 @@ ORDER = ["LTC", "LTC_POLYNOMIAL", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI"]
 LABEL = {"LTC": "LTC (LUT)", "LTC_POLYNOMIAL": "LTC poly", "MRP": "MRP", "MC1": "MC 1", "MC4": "MC 4", "MC16": "MC 16", "SPOT": "spot", "OMNI": "omni"}
 
 
+SHAPES = ["rectangle", "disk", "sphere", "tube"]
+SHAPE_ORDER = ["LTC", "MRP", "MC8"]
+SHAPE_LABEL = {"LTC": "LTC", "MRP": "MRP", "MC8": "MC 8"}
+
+
 def load(path):
 	timing, errors = {}, {}
+	shape_timing, shape_errors = {}, {}
 	res = None
-	for row in csv.DictReader(open(path)):
-		if row["section"] == "timing":
+	with open(path) as f:
+		rows = list(csv.DictReader(f))
+	for row in rows:
+		if row["section"] == "shape_timing":
+			shape_timing.setdefault((row["shape"], row["config"]), {})[int(row["lights"])] = float(row["gpu_ms_opaque"])
+			res = (row["width"], row["height"])
+		elif row["section"] == "shape_error":
+			shape_errors.setdefault((row["shape"], row["config"]), []).append((float(row["rel_rmse"]), float(row["flip"])))
+		elif row["section"] == "timing":
 			timing.setdefault(row["config"], {})[int(row["lights"])] = float(row["gpu_ms_opaque"])
 			res = (row["width"], row["height"])
 		else:
 			errors.setdefault(row["config"], {})[row["scene"]] = float(row["flip"])
-	return timing, errors, res
+	return timing, errors, res, shape_timing, shape_errors
 
 
 def per_light(t):
@@ -45,14 +61,75 @@ def per_light(t):
 	return sum((x - mx) * (t[x] - my) for x in xs) / sum((x - mx) ** 2 for x in xs)
 
 
+def cost_per_light(t):
+	# The slope over two or more light counts; one count: its time divided by the lights.
+	if len(t) >= 2:
+		return per_light(t)
+	(n, ms), = t.items()
+	return ms / n
+
+
+def pareto(points):
+	# points: (cost, error, name); the names no other point beats in both cost and error.
+	front, best = [], float("inf")
+	for x, y, c in sorted(points):
+		if y < best:
+			front.append(c)
+			best = y
+	return front
+
+
+def shapes_chart(shape_timing, shape_errors, res, out):
+	fig, axes = plt.subplots(2, 2, figsize=(8.0, 6.0), dpi=100)
+	table = []
+	for ax, shape in zip(axes.flat, SHAPES):
+		pts = []
+		for c in SHAPE_ORDER:
+			if (shape, c) in shape_timing and (shape, c) in shape_errors:
+				errs = shape_errors[(shape, c)]
+				x = cost_per_light(shape_timing[(shape, c)])
+				y = statistics.mean(e[0] for e in errs)
+				flip = statistics.mean(e[1] for e in errs)
+				pts.append((x, y, c))
+				table.append((shape, c, x, y, flip, len(errs)))
+				ax.scatter([x], [y], s=30)
+				ax.annotate("%s (FLIP %.3f)" % (SHAPE_LABEL[c], flip), (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
+		front = pareto(pts)
+		fp = sorted((x, y) for x, y, c in pts if c in front)
+		if fp:
+			ax.plot([p[0] for p in fp], [p[1] for p in fp], "k--", lw=0.8, label="Pareto front")
+			ax.legend(fontsize=7)
+		for i, row in enumerate(table):
+			if row[0] == shape:
+				table[i] = row + (row[1] in front,)
+		ax.set_title(shape, fontsize=9)
+		ax.set_xlabel("GPU ms per light (opaque pass)", fontsize=8)
+		ax.set_ylabel("mean relative RMSE vs reference", fontsize=8)
+		ax.grid(True, alpha=0.3)
+	fig.suptitle("Shape x method: speed vs accuracy (%sx%s, lavapipe)" % res if res else "Shape x method: speed vs accuracy", fontsize=10)
+	fig.tight_layout()
+	save_figure(fig, os.path.join(out, "methods_shapes_pareto.png"))
+	plt.close(fig)
+	print("| shape | method | GPU ms per light | mean relative RMSE | mean LDR-FLIP | scenes | Pareto front |")
+	print("|---|---|---|---|---|---|---|")
+	for shape, c, x, y, flip, n, on_front in table:
+		print("| %s | %s | %.3f | %.4f | %.4f | %d | %s |" % (shape, SHAPE_LABEL[c], x, y, flip, n, "yes" if on_front else "no"))
+
+
 def main():
 	ap = argparse.ArgumentParser()
 	ap.add_argument("csv")
 	ap.add_argument("--maps", default="")
 	ap.add_argument("--out", default="doc/results")
 	a = ap.parse_args()
-	timing, errors, res = load(a.csv)
+	timing, errors, res, shape_timing, shape_errors = load(a.csv)
 	os.makedirs(a.out, exist_ok=True)
+	if shape_timing or shape_errors:
+		if not shape_timing or not shape_errors:
+			raise SystemExit("plot_methods.py: the shape chart needs both shape_timing and shape_error rows in %s" % a.csv)
+		shapes_chart(shape_timing, shape_errors, res, a.out)
+		if not timing:
+			return
 	configs = [c for c in ORDER if c in timing]
 
 	# (b) GPU ms vs number of lights.

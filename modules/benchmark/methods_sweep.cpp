@@ -37,7 +37,8 @@ struct TimingScene {
 	RID mesh, material, environment, scenario, camera, viewport, mesh_instance;
 	std::vector<RID> lights, light_instances;
 
-	bool build(RenderingServer *p_rs, const MethodsSweep::Config &p_config, int p_lights, int p_width, int p_height) {
+	// p_shape / p_size: the area lights' shape and size (the default sweep: rectangles of 1 x 0.5).
+	bool build(RenderingServer *p_rs, const MethodsSweep::Config &p_config, int p_lights, int p_width, int p_height, int p_shape = RS::LIGHT_AREA_SHAPE_RECTANGLE, const Vector2 &p_size = Vector2(1.0f, 0.5f)) {
 		RS::SurfaceData surface;
 		PlaneMesh::create_plane_arrays(surface, Vector2(24, 24), 0, 0, Vector3(), PlaneMesh::FACE_Y);
 		mesh = p_rs->mesh_create();
@@ -67,7 +68,10 @@ struct TimingScene {
 			RID l;
 			if (p_config.kind == MethodsSweep::KIND_AREA) {
 				l = p_rs->area_light_create();
-				p_rs->light_area_set_size(l, Vector2(1.0f, 0.5f));
+				if (p_shape != RS::LIGHT_AREA_SHAPE_RECTANGLE) {
+					p_rs->light_area_set_shape(l, RS::LightAreaShape(p_shape));
+				}
+				p_rs->light_area_set_size(l, p_size);
 				p_rs->light_area_set_shading_method(l, RS::LightAreaShadingMethod(p_config.method));
 				p_rs->light_area_set_stochastic_samples(l, p_config.samples);
 				if (int(p_rs->light_area_get_shading_method(l)) != p_config.method) {
@@ -153,8 +157,224 @@ Image render_accuracy_scene(RenderingServer *p_rs, const AccuracyScenes::Scene &
 	return image;
 }
 
+// One draw: GPU ms of the opaque pass and of all passes (RD timestamps), wall ms of draw().
+struct FrameTime {
+	double opaque = 0.0, total = 0.0, wall = 0.0;
+};
+
+FrameTime time_frame(RenderingServer *p_rs) {
+	FrameTime t;
+	auto begin = std::chrono::steady_clock::now();
+	p_rs->draw();
+	t.wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+	for (const auto &pass : p_rs->get_frame_profile()) {
+		t.total += pass.second;
+		if (pass.first == "opaque") {
+			t.opaque = pass.second;
+		}
+	}
+	return t;
+}
+
+// Draws the built scene warmup_frames + frames times; a timing row of the medians.
+MethodsSweep::Row time_scene(RenderingServer *p_rs, const MethodsSweep::Options &p_options, const MethodsSweep::Config &p_config, int p_lights) {
+	std::vector<double> opaque, total, wall;
+	for (int f = 0; f < p_options.warmup_frames + p_options.frames; f++) {
+		const FrameTime t = time_frame(p_rs);
+		if (f >= p_options.warmup_frames) {
+			opaque.push_back(t.opaque);
+			total.push_back(t.total);
+			wall.push_back(t.wall);
+		}
+	}
+	MethodsSweep::Row row;
+	row.section = "timing";
+	row.config = p_config.name;
+	row.method = p_config.method;
+	row.samples = p_config.samples;
+	row.lights = p_lights;
+	row.width = p_options.width;
+	row.height = p_options.height;
+	row.gpu_ms_opaque = median(opaque);
+	row.gpu_ms_total = median(total);
+	row.wall_ms = median(wall);
+	return row;
+}
+
+// The Embree reference images of p_scenes (shadows off, seed 0), from a server of their own.
+bool render_references(const std::vector<AccuracyScenes::Scene> &p_scenes, int p_resolution, bool p_progress, std::vector<Image> *r_images, String *r_error) {
+	if (p_scenes.empty()) {
+		return true;
+	}
+	ReferenceRenderOptions options;
+	options.shadows = false;
+	options.seed = 0;
+	GodotInstance reference;
+	if (!reference.start_with_compositor(new RendererCompositorReference(options), r_error)) {
+		return false;
+	}
+	for (size_t i = 0; i < p_scenes.size(); i++) {
+		Image img = render_accuracy_scene(reference.get_rendering_server(), p_scenes[i], p_resolution, RS::LIGHT_AREA_SHADING_LTC, 1, r_error);
+		if (img.is_empty()) {
+			*r_error = "Reference: " + *r_error;
+			return false;
+		}
+		r_images->push_back(img);
+		if (p_progress) {
+			printf("[reference %zu/%zu] %s\n", i + 1, p_scenes.size(), p_scenes[i].id.c_str());
+			fflush(stdout);
+		}
+	}
+	return true;
+}
+
+// The engine for timing and errors, with room for the largest light count (at least 64).
+bool start_engine(const MethodsSweep::Options &p_options, GodotInstance &r_engine, String *r_error) {
+	int max_lights = 64;
+	for (int n : p_options.light_counts) {
+		max_lights = std::max(max_lights, n);
+	}
+	return r_engine.start(GodotInstance::BACKEND_RD, r_error, uint32_t(max_lights));
+}
+
+// An error row of p_config on scene p_scene (p_resolution squared) with metrics p_m.
+MethodsSweep::Row error_row(const MethodsSweep::Config &p_config, int p_resolution, const String &p_scene, const ImageMetrics::Result &p_m) {
+	MethodsSweep::Row row;
+	row.section = "error";
+	row.config = p_config.name;
+	row.method = p_config.method;
+	row.samples = p_config.samples;
+	row.lights = 1;
+	row.width = p_resolution;
+	row.height = p_resolution;
+	row.scene = p_scene;
+	row.flip = p_m.flip;
+	row.rmse = p_m.rmse;
+	row.ssim = p_m.ssim;
+	row.hdr_flip = p_m.has_hdr_flip ? p_m.hdr_flip : 0.0;
+	return row;
+}
+
 bool wanted(const MethodsSweep::Options &p_options, const MethodsSweep::Config &p_config) {
 	return p_options.only_configs.empty() || std::find(p_options.only_configs.begin(), p_options.only_configs.end(), p_config.name) != p_options.only_configs.end();
+}
+
+// The shape axis (issue 21; see the header): one server for the reference images, then the engine for
+// the timing (per light count, all shape x method scenes interleaved frame by frame) and the errors.
+std::vector<AccuracyScenes::Scene> shape_error_scenes() {
+	typedef AccuracyScenes S;
+	std::vector<S::Scene> scenes;
+	scenes.push_back(S::make_scene(S::RECEIVER_PLANE, 1.0f, 0.0f, Vector2(1, 1), S::PLACEMENT_FACING));
+	scenes.push_back(S::make_scene(S::RECEIVER_PLANE, 0.5f, 1.0f, Vector2(1, 1), S::PLACEMENT_TILTED));
+	for (const S::Scene &s : S::shape_ci_subset()) {
+		scenes.push_back(s);
+	}
+	return scenes;
+}
+
+bool run_shape_axis(const MethodsSweep::Options &p_options, std::vector<MethodsSweep::Row> *r_rows, String *r_error) {
+	typedef MethodsSweep MS;
+	std::vector<MS::Config> configs;
+	for (const MS::Config &c : MS::shape_configs()) {
+		if (wanted(p_options, c)) {
+			configs.push_back(c);
+		}
+	}
+	if (configs.empty()) {
+		*r_error = "None of the requested configurations is on the shape axis (LTC, MRP, MC8).";
+		return false;
+	}
+	const std::vector<AccuracyScenes::Scene> scenes = p_options.errors ? shape_error_scenes() : std::vector<AccuracyScenes::Scene>();
+	const int res = p_options.error_resolution;
+	std::vector<Image> references;
+	if (!render_references(scenes, res, p_options.progress, &references, r_error)) {
+		return false;
+	}
+	GodotInstance engine;
+	if (!start_engine(p_options, engine, r_error)) {
+		return false;
+	}
+	RenderingServer *rs = engine.get_rendering_server();
+	// Per light count, every shape x method scene is built (each its own viewport, inactive) and the
+	// frames are interleaved: round k draws each scene once, so the load of a shared machine falls on
+	// all configurations alike.
+	for (int n : p_options.timing ? p_options.light_counts : std::vector<int>()) {
+		std::vector<TimingScene> built;
+		std::vector<std::pair<int, MS::Config>> what;
+		bool ok = true;
+		for (int shape = 0; shape < RS::LIGHT_AREA_SHAPE_MAX && ok; shape++) {
+			for (const MS::Config &config : configs) {
+				built.emplace_back();
+				what.emplace_back(shape, config);
+				if (!built.back().build(rs, config, n, p_options.width, p_options.height, shape, MS::shape_size(shape))) {
+					*r_error = vformat("Could not build the timing scene for %s lights of shape %s.", config.name.c_str(), MS::shape_name(shape));
+					ok = false;
+					break;
+				}
+				rs->viewport_set_active(built.back().viewport, false);
+			}
+		}
+		std::vector<std::vector<double>> opaque(built.size()), total(built.size()), wall(built.size());
+		for (int f = 0; ok && f < p_options.warmup_frames + p_options.frames; f++) {
+			for (size_t c = 0; c < built.size(); c++) {
+				rs->viewport_set_active(built[c].viewport, true);
+				const FrameTime t = time_frame(rs);
+				rs->viewport_set_active(built[c].viewport, false);
+				if (f >= p_options.warmup_frames) {
+					opaque[c].push_back(t.opaque);
+					total[c].push_back(t.total);
+					wall[c].push_back(t.wall);
+				}
+			}
+		}
+		for (TimingScene &scene : built) {
+			scene.free(rs);
+		}
+		if (!ok) {
+			return false;
+		}
+		for (size_t c = 0; c < built.size(); c++) {
+			MS::Row row;
+			row.section = "shape_timing";
+			row.config = what[c].second.name;
+			row.method = what[c].second.method;
+			row.samples = what[c].second.samples;
+			row.lights = n;
+			row.width = p_options.width;
+			row.height = p_options.height;
+			row.gpu_ms_opaque = median(opaque[c]);
+			row.gpu_ms_total = median(total[c]);
+			row.wall_ms = median(wall[c]);
+			row.shape = MS::shape_name(what[c].first);
+			r_rows->push_back(row);
+			if (p_options.progress) {
+				printf("[shape timing %s %s] %d lights: opaque %.3f ms, wall %.1f ms\n", row.shape.c_str(), row.config.c_str(), n, row.gpu_ms_opaque, row.wall_ms);
+				fflush(stdout);
+			}
+		}
+	}
+	for (size_t i = 0; i < scenes.size(); i++) {
+		for (const MS::Config &config : configs) {
+			Image image = render_accuracy_scene(rs, scenes[i], res, config.method, config.samples, r_error);
+			ImageMetrics::Result m;
+			if (image.is_empty() || !ImageMetrics::compare(image, references[i], &m, r_error)) {
+				*r_error = config.name + " on " + scenes[i].id + ": " + *r_error;
+				return false;
+			}
+			MS::Row row = error_row(config, res, scenes[i].id, m);
+			row.section = "shape_error";
+			row.shape = MS::shape_name(scenes[i].shape);
+			row.relative_rmse = m.relative_rmse;
+			row.brightness_ratio = m.brightness_ratio;
+			r_rows->push_back(row);
+			if (p_options.progress) {
+				printf("[shape error %s] %s: rel-RMSE %.4f, FLIP %.4f\n", config.name.c_str(), scenes[i].id.c_str(), m.relative_rmse, m.flip);
+				fflush(stdout);
+			}
+		}
+	}
+	engine.stop();
+	return true;
 }
 
 } // namespace
@@ -170,6 +390,34 @@ std::vector<MethodsSweep::Config> MethodsSweep::default_configs() {
 	c.push_back({ "SPOT", KIND_SPOT, -1, 1 });
 	c.push_back({ "OMNI", KIND_OMNI, -1, 1 });
 	return c;
+}
+
+std::vector<MethodsSweep::Config> MethodsSweep::shape_configs() {
+	return {
+		{ "LTC", KIND_AREA, int(RS::LIGHT_AREA_SHADING_LTC), 1 },
+		{ "MRP", KIND_AREA, int(RS::LIGHT_AREA_SHADING_MRP), 1 },
+		{ "MC8", KIND_AREA, int(RS::LIGHT_AREA_SHADING_STOCHASTIC), 8 },
+	};
+}
+
+Vector2 MethodsSweep::shape_size(int p_shape) {
+	static const Vector2 sizes[RS::LIGHT_AREA_SHAPE_MAX] = { Vector2(1.0f, 0.5f), Vector2(1.0f, 0.5f), Vector2(0.5f, 0.5f), Vector2(1.0f, 0.15f) };
+	ERR_FAIL_INDEX_V(p_shape, int(RS::LIGHT_AREA_SHAPE_MAX), Vector2());
+	return sizes[p_shape];
+}
+
+const char *MethodsSweep::shape_name(int p_shape) {
+	static const char *names[RS::LIGHT_AREA_SHAPE_MAX] = { "rectangle", "disk", "sphere", "tube" };
+	ERR_FAIL_INDEX_V(p_shape, int(RS::LIGHT_AREA_SHAPE_MAX), "");
+	return names[p_shape];
+}
+
+std::vector<String> MethodsSweep::shape_error_scene_ids() {
+	std::vector<String> ids;
+	for (const AccuracyScenes::Scene &s : shape_error_scenes()) {
+		ids.push_back(s.id);
+	}
+	return ids;
 }
 
 std::vector<String> MethodsSweep::failure_scene_ids() {
@@ -205,8 +453,17 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 			return fail(vformat("Light counts must be in 1..512, got %d.", n));
 		}
 	}
-	const std::vector<Config> configs = default_configs();
 	String error;
+	if (p_options.shapes) {
+		if (!run_shape_axis(p_options, r_rows, &error)) {
+			return fail(error);
+		}
+		if (!p_options.csv_path.empty() && !write_csv(p_options.csv_path, *r_rows, &error)) {
+			return fail(error);
+		}
+		return true;
+	}
+	const std::vector<Config> configs = default_configs();
 
 	// Error part, reference first (its own server), then the engine.
 	std::vector<AccuracyScenes::Scene> scenes;
@@ -223,34 +480,13 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 				scenes.push_back(f);
 			}
 		}
-		ReferenceRenderOptions options;
-		options.shadows = false;
-		options.seed = 0;
-		RendererCompositorReference *compositor = new RendererCompositorReference(options);
-		GodotInstance reference;
-		if (!reference.start_with_compositor(compositor, &error)) {
+		if (!render_references(scenes, res, p_options.progress, &references, &error)) {
 			return fail(error);
-		}
-		RenderingServer *rs = reference.get_rendering_server();
-		for (size_t i = 0; i < scenes.size(); i++) {
-			Image img = render_accuracy_scene(rs, scenes[i], res, RS::LIGHT_AREA_SHADING_LTC, 1, &error);
-			if (img.is_empty()) {
-				return fail("Reference: " + error);
-			}
-			references.push_back(img);
-			if (p_options.progress) {
-				printf("[reference %zu/%zu] %s\n", i + 1, scenes.size(), scenes[i].id.c_str());
-				fflush(stdout);
-			}
 		}
 	}
 
-	int max_lights = 64;
-	for (int n : p_options.light_counts) {
-		max_lights = std::max(max_lights, n);
-	}
 	GodotInstance engine;
-	if (!engine.start(GodotInstance::BACKEND_RD, &error, uint32_t(max_lights))) {
+	if (!start_engine(p_options, engine, &error)) {
 		return fail(error);
 	}
 	RenderingServer *rs = engine.get_rendering_server();
@@ -276,37 +512,8 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 				ok = false;
 				break;
 			}
-			std::vector<double> opaque, total, wall;
-			for (int f = 0; f < p_options.warmup_frames + p_options.frames; f++) {
-				auto begin = std::chrono::steady_clock::now();
-				rs->draw();
-				const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
-				if (f < p_options.warmup_frames) {
-					continue;
-				}
-				double sum = 0.0, op = 0.0;
-				for (const auto &pass : rs->get_frame_profile()) {
-					sum += pass.second;
-					if (pass.first == "opaque") {
-						op = pass.second;
-					}
-				}
-				opaque.push_back(op);
-				total.push_back(sum);
-				wall.push_back(ms);
-			}
+			Row row = time_scene(rs, p_options, config, n);
 			scene.free(rs);
-			Row row;
-			row.section = "timing";
-			row.config = config.name;
-			row.method = config.method;
-			row.samples = config.samples;
-			row.lights = n;
-			row.width = p_options.width;
-			row.height = p_options.height;
-			row.gpu_ms_opaque = median(opaque);
-			row.gpu_ms_total = median(total);
-			row.wall_ms = median(wall);
 			r_rows->push_back(row);
 			if (p_options.progress) {
 				printf("[timing %s] %d lights: opaque %.3f ms, GPU %.3f ms, wall %.1f ms\n", config.name.c_str(), n, row.gpu_ms_opaque, row.gpu_ms_total, row.wall_ms);
@@ -335,20 +542,7 @@ bool MethodsSweep::run(const Options &p_options, std::vector<Row> *r_rows, Strin
 				ok = false;
 				break;
 			}
-			Row row;
-			row.section = "error";
-			row.config = config.name;
-			row.method = config.method;
-			row.samples = config.samples;
-			row.lights = 1;
-			row.width = res;
-			row.height = res;
-			row.scene = scenes[i].id;
-			row.flip = m.flip;
-			row.rmse = m.rmse;
-			row.ssim = m.ssim;
-			row.hdr_flip = m.has_hdr_flip ? m.hdr_flip : 0.0;
-			r_rows->push_back(row);
+			r_rows->push_back(error_row(config, res, scenes[i].id, m));
 			if (p_options.progress) {
 				printf("[error %s] %s: FLIP %.4f\n", config.name.c_str(), scenes[i].id.c_str(), m.flip);
 				fflush(stdout);
@@ -381,10 +575,19 @@ bool MethodsSweep::write_csv(const String &p_path, const std::vector<Row> &p_row
 		}
 		return false;
 	}
-	fprintf(f, "section,config,method,samples,lights,width,height,gpu_ms_opaque,gpu_ms_total,wall_ms,scene,flip,rmse,ssim,hdr_flip\n");
+	// The shape columns only when there are shape rows: the default sweep's CSV is as before.
+	bool shapes = false;
 	for (const Row &r : p_rows) {
-		fprintf(f, "%s,%s,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%s,%.6g,%.6g,%.6g,%.6g\n", r.section.c_str(), r.config.c_str(), r.method, r.samples, r.lights, r.width, r.height,
+		shapes = shapes || !r.shape.empty();
+	}
+	fprintf(f, "section,config,method,samples,lights,width,height,gpu_ms_opaque,gpu_ms_total,wall_ms,scene,flip,rmse,ssim,hdr_flip%s\n", shapes ? ",shape,rel_rmse,brightness_ratio" : "");
+	for (const Row &r : p_rows) {
+		fprintf(f, "%s,%s,%d,%d,%d,%d,%d,%.4f,%.4f,%.3f,%s,%.6g,%.6g,%.6g,%.6g", r.section.c_str(), r.config.c_str(), r.method, r.samples, r.lights, r.width, r.height,
 				r.gpu_ms_opaque, r.gpu_ms_total, r.wall_ms, r.scene.c_str(), r.flip, r.rmse, r.ssim, r.hdr_flip);
+		if (shapes) {
+			fprintf(f, ",%s,%.6g,%.6g", r.shape.c_str(), r.relative_rmse, r.brightness_ratio);
+		}
+		fprintf(f, "\n");
 	}
 	return out.commit(p_path, r_error);
 }

@@ -17,9 +17,19 @@
 /* Optionally writes engine | reference | FLIP strips of the failure      */
 /* scenes per method (maps_dir), which misc/scripts/plot_methods.py puts  */
 /* into grids. No RenderingServer may exist when run() is called.         */
+/*                                                                        */
+/* Shape axis (Options::shapes, `--shapes`; issue 21): instead of the     */
+/* above, shape_configs() (LTC, MRP, MC 8) x the four area_shapes         */
+/* (rectangle, disk, sphere, tube): timing rows "shape_timing" in the     */
+/* same scene with lights of that shape (shape_size()), the twelve        */
+/* configurations interleaved frame by frame per light count, and error   */
+/* rows "shape_error" on shape_error_scenes() (relative RMSE, brightness  */
+/* ratio and LDR-FLIP vs the Embree reference). The CSV then has three    */
+/* more columns: shape, rel_rmse, brightness_ratio.                       */
 
 #pragma once
 
+#include "core/math/vector2.h"
 #include "core/string/ustring.h"
 
 #include <vector>
@@ -55,6 +65,8 @@ public:
 		// A configuration whose median frame (wall) exceeds this at one light count is not timed at
 		// larger counts (0 = no cap), so a slow path cannot stall the sweep on a software rasteriser.
 		double frame_cap_ms = 2500.0;
+		// The shape axis instead of the default sweep (see the banner); maps_dir is not used.
+		bool shapes = false;
 	};
 
 	struct Row {
@@ -73,9 +85,22 @@ public:
 		double rmse = 0.0;
 		double ssim = 1.0;
 		double hdr_flip = 0.0;
+		String shape; // Shape rows only: "rectangle", "disk", "sphere", "tube".
+		double relative_rmse = 0.0; // Shape error rows: sqrt(sum (a - b)^2 / sum b^2).
+		double brightness_ratio = 1.0; // Shape error rows: sum a / sum b.
 	};
 
 	static std::vector<Config> default_configs();
+	// The methods of the shape axis: "LTC", "MRP", "MC8" (8 samples, as doc/methods.md §11).
+	static std::vector<Config> shape_configs();
+	// Light sizes of the shape axis' timing scene, indexed by RS::LightAreaShape (RS::light_area_set_size
+	// meaning per shape): rectangle and disk 1 x 0.5, sphere of diameter 0.5, tube 1 long, 0.15 thick.
+	static Vector2 shape_size(int p_shape);
+	static const char *shape_name(int p_shape);
+	// The error scenes of the shape axis: per shape a diffuse plane facing the light and a glossy metal
+	// (roughness 0.5) under the tilted light; the disk, sphere and tube ones are
+	// AccuracyScenes::shape_ci_subset(), the rectangle's the same two with a 1 x 1 rectangle.
+	static std::vector<String> shape_error_scene_ids();
 	// The failure scenes whose maps are written (accuracy scene ids).
 	static std::vector<String> failure_scene_ids();
 

@@ -17,6 +17,7 @@
 namespace {
 
 const char *DEFAULT_CSV = "doc/results/methods_sweep.csv";
+const char *DEFAULT_SHAPES_CSV = "doc/results/methods_shapes.csv"; // --shapes without --csv.
 const char *CHART_SCRIPT = "plot_methods.py"; // misc/scripts/, run by BenchCharts.
 
 bool parse_int(const String &p_text, int p_min, int p_max, int &r_value) {
@@ -41,6 +42,7 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 	options.csv_path = DEFAULT_CSV;
 	bool charts = true;
 	bool maps_given = false;
+	bool csv_given = false;
 	for (size_t i = 0; i < p_args.size(); i++) {
 		const String &a = p_args[i];
 		const bool has_value = i + 1 < p_args.size();
@@ -56,6 +58,8 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 			options.progress = true;
 		} else if (a == "--no-charts") {
 			charts = false;
+		} else if (a == "--shapes") {
+			options.shapes = true;
 		} else if (a == "--no-errors") {
 			options.errors = false;
 		} else if (a == "--no-timing") {
@@ -81,6 +85,7 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 					return usage_error("--csv needs a non-empty path.");
 				}
 				options.csv_path = v;
+				csv_given = true;
 			} else if (a == "--maps") {
 				options.maps_dir = v;
 				maps_given = true;
@@ -121,18 +126,31 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 				}
 			} else {
 				for (const String &c : string_split(v, ',', false)) {
-					bool known = false;
-					for (const MethodsSweep::Config &config : MethodsSweep::default_configs()) {
-						known = known || config.name == c;
-					}
-					if (!known) {
-						return usage_error("unknown configuration '" + c + "' (LTC, LTC_POLYNOMIAL, MRP, MC1, MC4, MC16, SPOT, OMNI).");
-					}
-					options.only_configs.push_back(c);
+					options.only_configs.push_back(c); // Checked below, once --shapes is known.
 				}
 			}
 		} else {
 			return usage_error("unknown argument '" + a + "'.");
+		}
+	}
+	const std::vector<MethodsSweep::Config> known_configs = options.shapes ? MethodsSweep::shape_configs() : MethodsSweep::default_configs();
+	for (const String &c : options.only_configs) {
+		bool known = false;
+		String names;
+		for (const MethodsSweep::Config &config : known_configs) {
+			known = known || config.name == c;
+			names += (names.empty() ? "" : ", ") + config.name;
+		}
+		if (!known) {
+			return usage_error("unknown configuration '" + c + "'" + (options.shapes ? " on the shape axis" : "") + " (" + names + ").");
+		}
+	}
+	if (options.shapes) {
+		if (!csv_given) {
+			options.csv_path = DEFAULT_SHAPES_CSV;
+		}
+		if (maps_given) {
+			return usage_error("--maps has no failure strips to write with --shapes.");
 		}
 	}
 	if (charts) {
@@ -143,7 +161,7 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 		}
 	}
 	// Charts need the failure-scene strips: without --maps they go to a temporary directory.
-	if (charts && !maps_given && options.errors) {
+	if (charts && !maps_given && options.errors && !options.shapes) {
 		std::error_code ec;
 		const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
 		options.maps_dir = (ec ? String("/tmp") : String(tmp.string())) + "/godot_area_methods_maps_" + itos((int64_t)getpid());
@@ -169,17 +187,24 @@ int methods_sweep_command(const std::vector<String> &p_args) {
 		return 1;
 	}
 	// Summary: GPU ms of the opaque pass per configuration and light count, mean FLIP per configuration.
-	std::map<String, std::pair<double, int>> flip;
+	// Shape rows: keyed "shape config", mean relative RMSE beside the FLIP.
+	std::map<String, std::pair<double, int>> flip, rel_rmse;
 	for (const MethodsSweep::Row &r : rows) {
-		if (r.section == "timing") {
-			printf("%-16s %4d lights  opaque %9.3f ms  GPU %9.3f ms\n", r.config.c_str(), r.lights, r.gpu_ms_opaque, r.gpu_ms_total);
+		const String key = r.shape.empty() ? r.config : r.shape + " " + r.config;
+		if (r.section == "timing" || r.section == "shape_timing") {
+			printf("%-16s %4d lights  opaque %9.3f ms  GPU %9.3f ms\n", key.c_str(), r.lights, r.gpu_ms_opaque, r.gpu_ms_total);
 		} else {
-			flip[r.config].first += r.flip;
-			flip[r.config].second++;
+			flip[key].first += r.flip;
+			flip[key].second++;
+			rel_rmse[key].first += r.relative_rmse;
 		}
 	}
 	for (const auto &kv : flip) {
-		printf("%-16s mean LDR-FLIP %.4f over %d scenes\n", kv.first.c_str(), kv.second.first / kv.second.second, kv.second.second);
+		printf("%-16s mean LDR-FLIP %.4f over %d scenes", kv.first.c_str(), kv.second.first / kv.second.second, kv.second.second);
+		if (options.shapes) {
+			printf(", mean relative RMSE %.4f", rel_rmse[kv.first].first / kv.second.second);
+		}
+		printf("\n");
 	}
 	printf("Wrote %s\n", options.csv_path.c_str());
 	if (charts) {

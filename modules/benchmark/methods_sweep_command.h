@@ -8,7 +8,7 @@
 /*        [--resolution WxH] [--lights 1,4,16,..] [--frames N]            */
 /*        [--warmup N] [--error-resolution N] [--configs LTC,MRP,..]      */
 /*        [--no-errors] [--no-timing] [--frame-cap-ms N] [--progress]     */
-/*        [--no-charts]                                                   */
+/*        [--no-charts] [--shapes]                                        */
 /*   godot-area bench --sweep methods --spirv-sources DIR                 */
 /*        (writes the per-method fragment sources and exits)              */
 /*                                                                        */
@@ -23,6 +23,10 @@
 /* it fails before the sweep with a message naming the problem            */
 /* (bench_charts.h runs the script);                                      */
 /* --no-charts skips the charts.                                          */
+/* --shapes: the shape axis only (methods_sweep.h: LTC, MRP, MC8 x       */
+/* rectangle, disk, sphere, tube; --configs picks among those three);     */
+/* default CSV doc/results/methods_shapes.csv, chart                      */
+/* methods_shapes_pareto.png beside it; no failure strips.                */
 /* Runs with no engine started: the sweep starts its own GodotInstance.   */
 
 #pragma once

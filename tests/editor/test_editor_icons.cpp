@@ -91,6 +91,38 @@ TEST_CASE("[EditorIcons] a MissingNode shows the placeholder, not its original c
 	CHECK(EditorIcons::get_class_icon_name("MissingNode") == "MissingNode");
 }
 
+TEST_CASE("[EditorIcons] an AreaLight3D shows the icon of its area_shape") {
+	SceneTest::DummyServer server;
+	AreaLight3D area;
+	const char *expected[] = { "AreaLight3D", "AreaLight3DDisk", "AreaLight3DSphere", "AreaLight3DTube" };
+	std::vector<const EditorIcon *> icons;
+	for (int shape = 0; shape < 4; shape++) {
+		area.set_area_shape(AreaLight3D::AreaShape(shape));
+		REQUIRE(int(area.get_area_shape()) == shape);
+		const String name = EditorIcons::get_object_icon_name(&area);
+		CHECK(name == expected[shape]);
+		const EditorIcon *icon = EditorIcons::get_icon(name);
+		REQUIRE(icon != nullptr);
+		CHECK(icon->view_size == Vector2(16, 16));
+		icons.push_back(icon);
+	}
+	// Four different drawings: the disk starts with its ellipse, the sphere with its ball, the tube
+	// with its capsule (a rect rounded to half its height).
+	CHECK(icons[1]->shapes[0].type == EditorIconShape::POLYGON);
+	CHECK(icons[2]->shapes[0].type == EditorIconShape::CIRCLE);
+	CHECK(icons[3]->shapes[0].type == EditorIconShape::RECT);
+	CHECK(icons[3]->shapes[0].radius == doctest::Approx(icons[3]->shapes[0].size.y * 0.5f));
+	// Back to the rectangle: the class icon again; the class itself keeps its one icon.
+	area.set_area_shape(AreaLight3D::AREA_SHAPE_RECTANGLE);
+	CHECK(EditorIcons::get_object_icon_name(&area) == "AreaLight3D");
+	CHECK(EditorIcons::get_class_icon_name("AreaLight3D") == "AreaLight3D");
+	// Other lights are unaffected.
+	OmniLight3D omni;
+	CHECK(EditorIcons::get_object_icon_name(&omni) == "OmniLight3D");
+	SpotLight3D spot;
+	CHECK(EditorIcons::get_object_icon_name(&spot) == "SpotLight3D");
+}
+
 TEST_CASE("[EditorIcons] bad SVG input is an error naming the file and the element") {
 	EditorIcon icon;
 	String error;
