@@ -157,18 +157,13 @@ float area_light_solid_angle(AreaLightData p_light, vec3 p_vertex, vec3 p_x, vec
 }
 
 // Distance attenuation of upstream Godot 4.7's area light (its class reference and shader):
-// d = distance from the shading point to the closest point of the rectangle, r = area_range,
+// d = distance from the shading point to the closest point of the light, r = area_range,
 // a = area_attenuation (a distance exponent, as omni_attenuation):
 //   W(d) = max(1 - (d/r)^4, 0)^2 * max(d, 1e-4)^(2 - a).
 // The integral over the rectangle already falls off as the inverse square, so a = 2 leaves it
 // physical and only the range window applies; W is exactly 0 for d >= r.
-float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
-	float ax2 = dot(p_light.half_axis_x, p_light.half_axis_x);
-	float ay2 = dot(p_light.half_axis_y, p_light.half_axis_y);
-	float u = ax2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_x) / ax2, -1.0, 1.0) : 0.0;
-	float v = ay2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_y) / ay2, -1.0, 1.0) : 0.0;
-	float d = length(p_to_vertex - p_light.half_axis_x * u - p_light.half_axis_y * v);
-	float nd = d * p_light.inv_radius;
+float area_light_window_at(AreaLightData p_light, float p_distance) {
+	float nd = p_distance * p_light.inv_radius;
 	if (nd >= 1.0) {
 		return 0.0;
 	}
@@ -177,7 +172,16 @@ float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
 	float window = 1.0 - nd;
 	window *= window;
 	// pow(x, 0) = 1: a = 2 costs nothing but the window.
-	return window * pow(max(d, 1e-4), 2.0 - p_light.attenuation);
+	return window * pow(max(p_distance, 1e-4), 2.0 - p_light.attenuation);
+}
+
+// W(d) of a rectangle: d to the closest point of the rectangle.
+float area_light_range_window(AreaLightData p_light, vec3 p_to_vertex) {
+	float ax2 = dot(p_light.half_axis_x, p_light.half_axis_x);
+	float ay2 = dot(p_light.half_axis_y, p_light.half_axis_y);
+	float u = ax2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_x) / ax2, -1.0, 1.0) : 0.0;
+	float v = ay2 > 0.0 ? clamp(dot(p_to_vertex, p_light.half_axis_y) / ay2, -1.0, 1.0) : 0.0;
+	return area_light_window_at(p_light, length(p_to_vertex - p_light.half_axis_x * u - p_light.half_axis_y * v));
 }
 
 // What the gate of a rectangle method (area_light_rect_begin) hands on: where the shading point lies

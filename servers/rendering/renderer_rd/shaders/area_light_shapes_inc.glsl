@@ -55,18 +55,9 @@ float area_shape_distance(AreaLightData p_light, uint p_shape, vec3 p_to_vertex)
 	return length(p_to_vertex - p_light.half_axis_x * uv.x - p_light.half_axis_y * uv.y);
 }
 
-// The contract's W(d) (area_light_range_window) with the shape's closest-point distance.
+// The contract's W(d) (area_light_window_at) with the shape's closest-point distance.
 float area_shape_range_window(AreaLightData p_light, uint p_shape, vec3 p_to_vertex) {
-	float d = area_shape_distance(p_light, p_shape, p_to_vertex);
-	float nd = d * p_light.inv_radius;
-	if (nd >= 1.0) {
-		return 0.0;
-	}
-	nd *= nd;
-	nd *= nd;
-	float window = 1.0 - nd;
-	window *= window;
-	return window * pow(max(d, 1e-4), 2.0 - p_light.attenuation);
+	return area_light_window_at(p_light, area_shape_distance(p_light, p_shape, p_to_vertex));
 }
 
 // Form factor (1/pi of the projected solid angle) of a spherical cap of angular radius sigma
