@@ -692,7 +692,9 @@ Ref<Resource> ResourceFormatText::load_resource(const String &p_path, const Stri
 		if (res->get_path().empty()) {
 			res->set_path(p_path);
 		}
-		_resource_cache()[key] = res;
+		if (_load_depth > 0) {
+			_resource_cache()[key] = res; // Shared within the scene being loaded; a load on its own keeps nothing.
+		}
 	}
 	return res;
 }
