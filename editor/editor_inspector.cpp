@@ -65,8 +65,12 @@ void EditorInspector::parse_hint(EditorPropertyRow &r_row) {
 	r_row.range_min = r_row.range_max = r_row.range_step = 0.0;
 	r_row.or_greater = r_row.or_less = r_row.exp = false;
 	r_row.suffix.clear();
+	r_row.resource_type.clear();
 
 	switch (r_row.hint) {
+		case PROPERTY_HINT_RESOURCE_TYPE: {
+			r_row.resource_type = r_row.hint_string;
+		} break;
 		case PROPERTY_HINT_RANGE: {
 			std::vector<String> parts = string_split(r_row.hint_string, ',', false);
 			int numbers = 0;
@@ -336,6 +340,13 @@ bool EditorInspector::set_row_value(int p_index, const Variant &p_value, bool p_
 	const String what = vformat("%s.%s", edited->get_class().c_str(), property.c_str());
 	if (row.read_only) {
 		last_error = vformat("Inspector: property '%s' is read-only.", what.c_str());
+		ERR_PRINT(last_error);
+		return false;
+	}
+
+	const Object *value_object = p_value.get_type() == Variant::OBJECT ? p_value.get_object() : nullptr;
+	if (row.type == Variant::OBJECT && !row.resource_type.empty() && value_object && !ClassDB::is_parent_class(value_object->get_class(), row.resource_type)) {
+		last_error = vformat("Inspector: property '%s' takes a %s; got a %s. The old value is kept.", what.c_str(), row.resource_type.c_str(), value_object->get_class().c_str());
 		ERR_PRINT(last_error);
 		return false;
 	}

@@ -52,6 +52,8 @@ struct EditorPropertyRow {
 	bool or_less = false;
 	bool exp = false;
 	String suffix; // "m", or "°" for degrees hints.
+	// PROPERTY_HINT_RESOURCE_TYPE (OBJECT rows): the class a value must be or inherit ("Texture2D").
+	String resource_type;
 	bool read_only = false; // PROPERTY_USAGE_READ_ONLY or no setter.
 };
 

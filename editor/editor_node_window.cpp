@@ -20,7 +20,9 @@
 #include "drivers/vulkan/swap_chain_vk.h"
 #include "editor/editor_inspector.h"
 #include "editor/editor_properties.h"
+#include "editor/editor_resource_preview.h"
 #include "editor/plugins/node_3d_editor_plugin.h"
+#include "editor/resource_preview_blit_vk.h"
 #include "editor/scene_tree_dock.h"
 #include "editor/scene_tree_editor.h"
 #include "editor/viewport_blit_vk.h"
@@ -30,6 +32,7 @@
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
 #include "scene/resources/resource_format_text.h"
+#include "scene/resources/texture.h"
 #include "servers/rendering/rendering_device.h"
 
 #define GLFW_INCLUDE_NONE
@@ -111,6 +114,9 @@ public:
 	Node3DEditorViewport viewport;
 	EditorNode::Layout layout = EditorNode::compute_layout(EditorNode::WINDOW_WIDTH, EditorNode::WINDOW_HEIGHT);
 	ViewportBlitVK blit;
+	ResourcePreviewBlitVK preview; // The inspector's texture thumbnail.
+	String preview_logged; // "property w h x y" of the last preview written to the test log.
+	String preview_property; // The row the preview was queued for this frame.
 	String pending_screenshot; // F12: written from the next presented frame.
 	bool log_layer_cells = false; // After a layout change: log the first layer grid's cells once.
 	Node *shown_selection = nullptr;
@@ -537,6 +543,26 @@ int EditorNode::run(const Options &p_options) {
 				s.quit = true;
 				code = 1;
 			}
+			if (!s.quit && !s.preview.create(RenderingDevice::get_singleton(), swap_chain.get_render_pass(), &error)) {
+				fprintf(stderr, "godot-area editor: %s\n", error.c_str());
+				s.quit = true;
+				code = 1;
+			}
+			// Resource rows: the first texture row of a frame gets the thumbnail (one preview on screen).
+			EditorProperties::resource_preview_callback = [&s](const EditorPropertyRow &p_row, const Variant &p_value) {
+				if (s.preview_property.empty()) {
+					s.preview.draw(Object::cast_to<Texture2D>(p_value.get_object()));
+					s.preview_property = p_row.property;
+				}
+			};
+			// A path typed into a resource row resolves as the scene's own ext_resource paths do.
+			EditorProperties::resource_load_callback = [&s](const String &p_path, const String &p_type, String *r_error) -> Variant {
+				Variant v = EditorResourcePreview::load_for_property(p_path, s.options.scene_path, p_type, r_error);
+				if (v.get_object()) {
+					s.log_line(vformat("resource_loaded %s %s", p_path.c_str(), v.get_object()->get_class().c_str()));
+				}
+				return v;
+			};
 			// Layer-grid cells (window pixels) for the test log, once after each layout change.
 			EditorProperties::layer_cell_callback = [&s](const String &p_property, int p_bit, float p_x, float p_y) {
 				if (s.log_layer_cells && p_bit < 2) {
@@ -605,11 +631,13 @@ int EditorNode::run(const Options &p_options) {
 				}
 				s.log_layer_cells = log_cells_next;
 				log_cells_next = false;
+				s.preview_property.clear();
 				s.draw_panels();
 				s.log_layer_cells = false;
 				s.sync_selection();
 				swap_chain.wait_frame(); // The last frame sampled the textures update() may rewrite.
 				s.viewport.update();
+				s.preview.update(RenderingDevice::get_singleton());
 				ImGui::Render();
 				VkCommandBuffer cb = swap_chain.begin_frame(Color(0.1f, 0.1f, 0.12f, 1.0f));
 				if (fonts_pending) {
@@ -621,8 +649,18 @@ int EditorNode::run(const Options &p_options) {
 				}
 				const bool have_viewport = s.blit.begin_frame(cb, swap_chain.get_width(), swap_chain.get_height(), RenderingDevice::get_singleton(), s.viewport.get_scene_texture(), s.viewport.get_overlay_texture(), s.viewport.get_tonemap());
 				const uint64_t blits_before = s.blit.get_draw_count();
+				const bool have_preview = s.preview.begin_frame(cb, swap_chain.get_width(), swap_chain.get_height(), RenderingDevice::get_singleton());
+				const uint64_t previews_before = s.preview.get_draw_count();
 				swap_chain.begin_render_pass();
 				ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cb);
+				if (have_preview && s.preview.get_draw_count() > previews_before) {
+					const float *r = s.preview.get_rect();
+					const String where = vformat("%s %d %d %.0f %.0f %s", s.preview_property.c_str(), s.preview.get_width(), s.preview.get_height(), r[0], r[1], s.preview.is_fully_visible() ? "visible" : "clipped");
+					if (where != s.preview_logged) {
+						s.preview_logged = where;
+						s.log_line("preview " + where);
+					}
+				}
 				const bool viewport_drawn = have_viewport && s.blit.get_draw_count() > blits_before;
 				bool window_shot = (!p_options.window_screenshot.empty() && ready && !s.window_captured) || s.window_capture_requested;
 				const bool viewport_shot = !s.pending_screenshot.empty() && viewport_drawn;
@@ -668,6 +706,9 @@ int EditorNode::run(const Options &p_options) {
 			}
 			swap_chain.wait_idle();
 			EditorProperties::layer_cell_callback = nullptr;
+			EditorProperties::resource_preview_callback = nullptr;
+			EditorProperties::resource_load_callback = nullptr;
+			s.preview.destroy(RenderingDevice::get_singleton());
 			s.blit.destroy();
 			ImGui_ImplVulkan_Shutdown();
 			ImGui_ImplGlfw_Shutdown();

@@ -13,6 +13,7 @@
 #include "core/math/vector2.h"
 #include "core/math/vector3.h"
 #include "editor/editor_inspector.h"
+#include "editor/editor_resource_preview.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -21,9 +22,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 std::function<void(const String &, int, float, float)> EditorProperties::layer_cell_callback;
+std::function<void(const EditorPropertyRow &, const Variant &)> EditorProperties::resource_preview_callback;
+std::function<Variant(const String &, const String &, String *)> EditorProperties::resource_load_callback;
 
 namespace {
 
@@ -305,6 +309,57 @@ EditorProperties::Result EditorProperties::draw_row(const EditorPropertyRow &p_r
 			r_value = t;
 			Vector3 s = t.basis.get_scale();
 			ImGui::TextDisabled("scale %.3g %.3g %.3g (basis not editable here)", s.x, s.y, s.z);
+		} break;
+		case Variant::OBJECT: {
+			if (p_row.resource_type.empty()) {
+				ImGui::TextDisabled("%s", EditorResourcePreview::describe(p_value).c_str());
+				break;
+			}
+			// Godot's EditorResourcePicker: what the value is (with its preview), a file to load, Clear.
+			const String text = EditorResourcePreview::describe(p_value);
+			const String fitted = EditorInspector::fit_text(text, ImGui::GetContentRegionAvail().x, _measure);
+			ImGui::TextUnformatted(fitted.c_str());
+			if (ImGui::IsItemHovered()) {
+				ImGui::SetTooltip("%s\n(%s)", text.c_str(), p_row.resource_type.c_str());
+			}
+			if (resource_preview_callback && p_value.get_object()) {
+				ImGui::SetCursorPosX(label_x + p_label_width);
+				resource_preview_callback(p_row, p_value);
+			}
+			static std::map<std::string, std::string> typed_paths; // What the user typed, per property.
+			static std::map<std::string, std::string> load_errors;
+			std::string &path = typed_paths[p_row.property];
+			ImGui::SetCursorPosX(label_x + p_label_width);
+			const float buttons = _measure("Load") + _measure("Clear") + ImGui::GetStyle().FramePadding.x * 4 + spacing * 2;
+			ImGui::SetNextItemWidth(std::max(40.0f, ImGui::GetContentRegionAvail().x - buttons));
+			bool load = ImGui::InputTextWithHint("##path", "res://... or a file", &path, ImGuiInputTextFlags_EnterReturnsTrue);
+			ImGui::SameLine();
+			load = ImGui::Button("Load") || load;
+			if (load && resource_load_callback && !path.empty()) {
+				String error;
+				Variant loaded = resource_load_callback(path, p_row.resource_type, &error);
+				if (loaded.get_object()) {
+					r_value = loaded;
+					result.changed = true;
+					load_errors.erase(p_row.property);
+				} else {
+					load_errors[p_row.property] = error;
+				}
+			}
+			ImGui::SameLine();
+			ImGui::BeginDisabled(!p_value.get_object());
+			if (ImGui::Button("Clear")) {
+				r_value = Variant();
+				result.changed = true;
+			}
+			ImGui::EndDisabled();
+			auto error = load_errors.find(p_row.property);
+			if (error != load_errors.end()) {
+				ImGui::SetCursorPosX(label_x + p_label_width);
+				ImGui::PushTextWrapPos(0.0f);
+				ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", error->second.c_str());
+				ImGui::PopTextWrapPos();
+			}
 		} break;
 		default: {
 			ImGui::TextDisabled("%s", p_value.get_type() == Variant::NIL ? "<null>" : Variant::get_type_name(p_value.get_type()).c_str());

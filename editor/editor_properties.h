@@ -10,7 +10,8 @@
 /*   flags -> checkboxes; layers/masks -> Godot's layer grid (numbered   */
 /*   toggles, unsigned mask); String -> text field (enum suggestions ->   */
 /*   combo); Vector2/3 -> drag fields; Color -> colour editor;            */
-/*   Transform3D -> origin and rotation (degrees) fields. Read-only rows  */
+/*   Transform3D -> origin and rotation (degrees) fields; resources ->    */
+/*   preview, path + Load, Clear. Read-only rows                          */
 /*   are drawn disabled.                                                  */
 /* Only built with Dear ImGui (GODOT_AREA_EDITOR_WINDOW).                 */
 
@@ -38,4 +39,11 @@ public:
 	static float measure_label(const EditorPropertyRow &p_row);
 	// Called for each layer-grid cell drawn (property, bit, centre in window pixels), for test logs.
 	static std::function<void(const String &, int, float, float)> layer_cell_callback;
+	// Resource rows (OBJECT with a RESOURCE_TYPE hint, Godot's EditorResourcePicker) show what the
+	// value is, a path field with Load, and Clear. The window sets these two: the first draws the
+	// value's preview at the cursor (a texture's thumbnail), the second loads the file a user
+	// typed as p_type (paths resolved as the scene's ext_resources are); it returns null with
+	// r_error naming the file and the problem, which the row then shows.
+	static std::function<void(const EditorPropertyRow &, const Variant &)> resource_preview_callback;
+	static std::function<Variant(const String &p_path, const String &p_type, String *r_error)> resource_load_callback;
 };

@@ -62,6 +62,9 @@ public:
 	// the render pass: binds the textures (RenderingDevice RIDs) and records the barrier.
 	// False (nothing will be drawn) when a texture is missing.
 	bool begin_frame(VkCommandBuffer p_command_buffer, int p_fb_width, int p_fb_height, RenderingDevice *p_rd, RID p_scene, RID p_overlay, const Tonemap::Settings &p_tonemap);
+	// A bound texture was freed: the next begin_frame() writes the descriptors again even when a
+	// new texture's view got the old handle value.
+	void forget_bindings() { bound_scene = bound_overlay = VK_NULL_HANDLE; }
 	// Queues the draw into p_list at (p_x, p_y) with size p_w x p_h framebuffer pixels.
 	void add_to_draw_list(ImDrawList *p_list, float p_x, float p_y, float p_w, float p_h);
 	uint64_t get_draw_count() const { return draws; }

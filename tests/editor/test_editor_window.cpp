@@ -11,8 +11,10 @@
 /* each event, so the test waits for events instead of sleeping.          */
 
 #include "core/error/error_macros.h"
+#include "core/math/color.h"
 #include "core/math/vector2.h"
 #include "drivers/png/png_reader.h"
+#include "drivers/png/png_writer.h"
 #include "editor/editor_node.h"
 #include "scene/main/node.h"
 #include "scene/resources/resource_format_text.h"
@@ -738,6 +740,129 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 	const size_t mark = p.line_count();
 	REQUIRE(p.xdotool("key ctrl+q"));
 	const int exit_line = p.wait_line("exit ", mark);
+	REQUIRE(exit_line >= 0);
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
+																					   << _read_file(p.output));
+	for (int i = 0; i < 600 && p.alive(); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(100));
+	}
+	std::filesystem::remove_all(dir);
+}
+
+// Starts Xvfb on a free display (searched from 90 + p_seed) for p; false with a message when it fails.
+bool _start_display(EditorProcess &p, int p_seed) {
+	int display = 90 + (p_seed % 400);
+	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
+		display++;
+	}
+	p.display = ":" + std::to_string(display);
+	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
+	for (int i = 0; p.xvfb > 0 && i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));
+	}
+	return p.xvfb > 0 && std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display));
+}
+
+TEST_CASE("[Editor][Window] under Xvfb: the inspector previews the area light's texture") {
+	if (!_has_program("Xvfb") || !_has_program("xdotool")) {
+		MESSAGE("SKIPPED: the editor window test needs Xvfb and xdotool (Debian: xvfb, xdotool; misc/scripts/install_deps.sh)");
+		return;
+	}
+	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
+	EditorProcess p;
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_preview_" + std::to_string(getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	p.dir = dir.string();
+	p.log = (dir / "events.log").string();
+	p.output = (dir / "output.txt").string();
+	std::ofstream(dir / "project.godot") << "config_version=5\n";
+	// 32 x 16 texels: red on the left half, blue on the right (a 64 x 32 thumbnail).
+	std::vector<uint8_t> rgba(32 * 16 * 4, 255);
+	for (int y = 0; y < 16; y++) {
+		for (int x = 0; x < 32; x++) {
+			uint8_t *t = &rgba[(y * 32 + x) * 4];
+			t[0] = x < 16 ? 255 : 0;
+			t[1] = 0;
+			t[2] = x < 16 ? 0 : 255;
+		}
+	}
+	REQUIRE(PNGWriter::save_rgba8(rgba, 32, 16, (dir / "tv.png").string()));
+	const String scene = (dir / "scene.tscn").string();
+	std::ofstream(scene.c_str()) << "[gd_scene format=3]\n\n"
+									"[ext_resource type=\"Texture2D\" path=\"res://tv.png\" id=\"1_tv\"]\n\n"
+									"[node name=\"Main\" type=\"Node3D\"]\n\n"
+									"[node name=\"Camera\" type=\"Camera3D\" parent=\".\"]\n"
+									"transform = Transform3D(1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 4)\n\n"
+									"[node name=\"TV\" type=\"AreaLight3D\" parent=\".\"]\n"
+									"area_texture = ExtResource(\"1_tv\")\n";
+	REQUIRE_MESSAGE(_start_display(p, int(getpid()) + 31), "cannot start Xvfb; output:\n"
+					<< _read_file(p.output));
+	const String window_png = (dir / "window.png").string();
+	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--select", "TV", "--test-log", p.log, "--window-screenshot", window_png },
+			{ "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
+	REQUIRE(p.editor > 0);
+	REQUIRE_MESSAGE(p.wait_line("ready") >= 0, "the editor did not start; its output:\n"
+					<< _read_file(p.output) << "\nlog:\n"
+					<< _read_file(p.log));
+	// The texture row sits low in AreaLight3D's list: scroll the Inspector dock down to it with
+	// the mouse wheel, as a user would.
+	int win_w = 0, win_h = 0;
+	for (size_t i = 0; i < p.line_count(); i++) {
+		int vx, vy, vw, vh;
+		if (sscanf(p.line(i).c_str(), "ready viewport %d %d %d %d window %d %d", &vx, &vy, &vw, &vh, &win_w, &win_h) == 6) {
+			break;
+		}
+	}
+	REQUIRE(win_w > 0);
+	const EditorNode::Rect inspector = EditorNode::compute_layout(win_w, win_h).inspector;
+	REQUIRE(p.xdotool(vformat("mousemove %d %d", inspector.x + inspector.width / 2, inspector.y + inspector.height / 2)));
+	REQUIRE(p.xdotool("click --repeat 30 --delay 30 5"));
+	// "preview area_texture 64 32 X Y visible": the whole thumbnail reached the framebuffer at (X, Y);
+	// a line is written whenever that changes.
+	int preview_line = -1;
+	for (size_t from = 0; preview_line < 0 || p.line(preview_line).find(" visible") == String::npos; from = preview_line + 1) {
+		preview_line = p.wait_line("preview area_texture", from);
+		REQUIRE_MESSAGE(preview_line >= 0, _read_file(p.log));
+	}
+	std::this_thread::sleep_for(std::chrono::seconds(1)); // Let the wheel events run out.
+	// A window capture (F11), and where the preview was in that very frame: the last preview line
+	// before the capture's line.
+	const size_t mark = p.line_count();
+	REQUIRE(p.xdotool("key F11"));
+	const int shot_line = p.wait_line("window_screenshot " + window_png, mark);
+	REQUIRE_MESSAGE(shot_line >= 0, _read_file(p.log));
+	for (int i = shot_line - 1; i >= 0; i--) {
+		if (p.line(i).rfind("preview area_texture", 0) == 0) {
+			preview_line = i;
+			break;
+		}
+	}
+	int w = 0, h = 0;
+	float x = 0.0f, y = 0.0f;
+	char state[16] = {};
+	REQUIRE(sscanf(p.line(preview_line).c_str(), "preview area_texture %d %d %f %f %15s", &w, &h, &x, &y, state) == 5);
+	REQUIRE_MESSAGE(String(state) == "visible", p.line(preview_line));
+	CHECK(w == 64);
+	CHECK(h == 32);
+	std::vector<uint8_t> window;
+	int ww = 0, wh = 0;
+	String error;
+	REQUIRE_MESSAGE(PNGReader::load(window_png, window, ww, wh, &error), error);
+	auto pixel = [&](int p_x, int p_y) {
+		const uint8_t *t = &window[(size_t(p_y) * ww + p_x) * 4];
+		return Color(t[0] / 255.0f, t[1] / 255.0f, t[2] / 255.0f);
+	};
+	REQUIRE(x + w < ww);
+	REQUIRE(y + h < wh);
+	// The texture's own colours (Linear tonemap, exposure 1): red left, blue right.
+	const Color left = pixel(int(x) + 16, int(y) + 16);
+	const Color right = pixel(int(x) + 48, int(y) + 16);
+	CHECK_MESSAGE((left.r > 0.98f && left.g < 0.02f && left.b < 0.02f), left.r << " " << left.g << " " << left.b);
+	CHECK_MESSAGE((right.b > 0.98f && right.r < 0.02f && right.g < 0.02f), right.r << " " << right.g << " " << right.b);
+	const size_t quit_mark = p.line_count();
+	REQUIRE(p.xdotool("key ctrl+q"));
+	const int exit_line = p.wait_line("exit ", quit_mark);
 	REQUIRE(exit_line >= 0);
 	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
 																					   << _read_file(p.output));
