@@ -170,6 +170,31 @@ struct EditorProcess {
 	}
 };
 
+// A fresh folder for one test's files (temp/<p_name>_<pid>): the event log and the editor's output.
+std::filesystem::path _make_dir(EditorProcess &p, const char *p_name) {
+	std::filesystem::path dir = std::filesystem::temp_directory_path() / (String(p_name) + "_" + std::to_string(getpid()));
+	std::filesystem::remove_all(dir);
+	std::filesystem::create_directories(dir);
+	p.dir = dir.string();
+	p.log = (dir / "events.log").string();
+	p.output = (dir / "output.txt").string();
+	return dir;
+}
+
+// Starts Xvfb on a free display (searched from 90 + p_seed) for p; false with a message when it fails.
+bool _start_display(EditorProcess &p, int p_seed) {
+	int display = 90 + (p_seed % 400);
+	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
+		display++;
+	}
+	p.display = ":" + std::to_string(display);
+	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
+	for (int i = 0; p.xvfb > 0 && i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(50));
+	}
+	return p.xvfb > 0 && std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display));
+}
+
 // "property TVPanel area_size (1.6, 0.9) (reason)" -> (1.6, 0.9).
 bool _parse_area_size(const String &p_line, Vector2 &r_size) {
 	size_t p = p_line.find("area_size (");
@@ -283,28 +308,13 @@ TEST_CASE("[Editor][Window] under Xvfb: select the area light, drag its width ha
 	}
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	EditorProcess p;
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_window_" + std::to_string(getpid()));
-	std::filesystem::remove_all(dir);
-	std::filesystem::create_directories(dir);
-	p.dir = dir.string();
-	p.log = (dir / "events.log").string();
-	p.output = (dir / "output.txt").string();
+	const std::filesystem::path dir = _make_dir(p, "godot_area_test_editor_window");
 	const String scene = (dir / "scene.tscn").string();
 	const String original = String(GODOT_AREA_ROOT) + "/demo/demo.tscn";
 	std::filesystem::copy_file(original, scene);
 
-	// A free display number.
-	int display = 90 + int(getpid() % 400);
-	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
-		display++;
-	}
-	p.display = ":" + std::to_string(display);
-	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
-	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
-	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(50));
-	}
-	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	REQUIRE_MESSAGE(_start_display(p, int(getpid())), "cannot start Xvfb; output:\n"
+					<< _read_file(p.output));
 
 	const String shot = (dir / "shot").string();
 	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--select", "TVPanel", "--test-log", p.log, "--screenshot", shot },
@@ -484,26 +494,12 @@ TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows)
 	}
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	EditorProcess p;
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_resize_" + std::to_string(getpid()));
-	std::filesystem::remove_all(dir);
-	std::filesystem::create_directories(dir);
-	p.dir = dir.string();
-	p.log = (dir / "events.log").string();
-	p.output = (dir / "output.txt").string();
+	const std::filesystem::path dir = _make_dir(p, "godot_area_test_editor_resize");
 	const String scene = (dir / "scene.tscn").string();
 	const String original = String(GODOT_AREA_ROOT) + "/demo/demo.tscn";
 	std::filesystem::copy_file(original, scene);
-	int display = 90 + int((getpid() + 13) % 400);
-	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
-		display++;
-	}
-	p.display = ":" + std::to_string(display);
-	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
-	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
-	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(50));
-	}
-	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	REQUIRE_MESSAGE(_start_display(p, int(getpid()) + 13), "cannot start Xvfb; output:\n"
+					<< _read_file(p.output));
 	const String shot = (dir / "shot").string();
 	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--select", "TVPanel", "--test-log", p.log, "--screenshot", shot },
 			{ "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
@@ -606,24 +602,10 @@ TEST_CASE("[Editor][Window] under Xvfb: the GPU-sampled viewport shows what `ren
 	}
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	EditorProcess p;
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_gpu_" + std::to_string(getpid()));
-	std::filesystem::remove_all(dir);
-	std::filesystem::create_directories(dir);
-	p.dir = dir.string();
-	p.log = (dir / "events.log").string();
-	p.output = (dir / "output.txt").string();
+	const std::filesystem::path dir = _make_dir(p, "godot_area_test_editor_gpu");
 	const String scene = String(GODOT_AREA_ROOT) + "/demo/demo.tscn"; // Only read: nothing is saved.
-	int display = 90 + int((getpid() + 19) % 400);
-	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
-		display++;
-	}
-	p.display = ":" + std::to_string(display);
-	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
-	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
-	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(50));
-	}
-	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	REQUIRE_MESSAGE(_start_display(p, int(getpid()) + 19), "cannot start Xvfb; output:\n"
+					<< _read_file(p.output));
 	// Nothing selected: every gizmo is drawn unselected, as `render --gizmos` draws them.
 	const String shot = (dir / "shot").string();
 	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--test-log", p.log, "--screenshot", shot }, { "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
@@ -696,12 +678,7 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 	}
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	EditorProcess p;
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_report_" + std::to_string(getpid()));
-	std::filesystem::remove_all(dir);
-	std::filesystem::create_directories(dir);
-	p.dir = dir.string();
-	p.log = (dir / "events.log").string();
-	p.output = (dir / "output.txt").string();
+	const std::filesystem::path dir = _make_dir(p, "godot_area_test_editor_report");
 	const String scene = (dir / "scene.tscn").string();
 	{
 		// A body type this engine does not have, with a child: kept as a placeholder, reported.
@@ -714,17 +691,8 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 			 "floor_max_angle = 0.9\n\n"
 			 "[node name=\"Lamp\" type=\"AreaLight3D\" parent=\"Player\"]\n";
 	}
-	int display = 90 + int((getpid() + 7) % 400);
-	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
-		display++;
-	}
-	p.display = ":" + std::to_string(display);
-	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
-	REQUIRE_MESSAGE(p.xvfb > 0, "cannot start Xvfb");
-	for (int i = 0; i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(50));
-	}
-	REQUIRE_MESSAGE(std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)), "Xvfb did not open display " << p.display);
+	REQUIRE_MESSAGE(_start_display(p, int(getpid()) + 7), "cannot start Xvfb; output:\n"
+					<< _read_file(p.output));
 	p.editor = _spawn({ GODOT_AREA_CLI_PATH, "editor", scene, "--test-log", p.log }, { "DISPLAY=" + p.display, "GODOT_AREA_VALIDATION=1" }, p.output);
 	REQUIRE(p.editor > 0);
 	REQUIRE_MESSAGE(p.wait_line("ready") >= 0, "the editor did not start; its output:\n"
@@ -749,20 +717,6 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 	std::filesystem::remove_all(dir);
 }
 
-// Starts Xvfb on a free display (searched from 90 + p_seed) for p; false with a message when it fails.
-bool _start_display(EditorProcess &p, int p_seed) {
-	int display = 90 + (p_seed % 400);
-	while (std::filesystem::exists("/tmp/.X" + std::to_string(display) + "-lock") || std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display))) {
-		display++;
-	}
-	p.display = ":" + std::to_string(display);
-	p.xvfb = _spawn({ "Xvfb", p.display, "-screen", "0", "1280x800x24", "-nolisten", "tcp" }, {}, p.output);
-	for (int i = 0; p.xvfb > 0 && i < 200 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display)); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(50));
-	}
-	return p.xvfb > 0 && std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display));
-}
-
 TEST_CASE("[Editor][Window] under Xvfb: the inspector previews the area light's texture") {
 	if (!_has_program("Xvfb") || !_has_program("xdotool")) {
 		MESSAGE("SKIPPED: the editor window test needs Xvfb and xdotool (Debian: xvfb, xdotool; misc/scripts/install_deps.sh)");
@@ -770,12 +724,7 @@ TEST_CASE("[Editor][Window] under Xvfb: the inspector previews the area light's 
 	}
 	REQUIRE_MESSAGE(std::filesystem::exists(GODOT_AREA_CLI_PATH), "build bin/godot-area first (scons builds it by default)");
 	EditorProcess p;
-	std::filesystem::path dir = std::filesystem::temp_directory_path() / ("godot_area_test_editor_preview_" + std::to_string(getpid()));
-	std::filesystem::remove_all(dir);
-	std::filesystem::create_directories(dir);
-	p.dir = dir.string();
-	p.log = (dir / "events.log").string();
-	p.output = (dir / "output.txt").string();
+	const std::filesystem::path dir = _make_dir(p, "godot_area_test_editor_preview");
 	std::ofstream(dir / "project.godot") << "config_version=5\n";
 	// 32 x 16 texels: red on the left half, blue on the right (a 64 x 32 thumbnail).
 	std::vector<uint8_t> rgba(32 * 16 * 4, 255);
