@@ -281,6 +281,19 @@ void _check_same_object(const Object *p_a, const Object *p_b, const String &p_wh
 	}
 }
 
+// Ctrl+Q, then the editor's "exit" line after log line p_mark must say exit code 0 and no validation
+// errors; waits for the process to end.
+void _quit_cleanly(EditorProcess &p, size_t p_mark) {
+	REQUIRE(p.xdotool("key ctrl+q"));
+	const int exit_line = p.wait_line("exit ", p_mark);
+	REQUIRE(exit_line >= 0);
+	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
+																					   << _read_file(p.output));
+	for (int i = 0; i < 600 && p.alive(); i++) {
+		std::this_thread::sleep_for(std::chrono::milliseconds(100));
+	}
+}
+
 TEST_CASE("[Editor] editor command line: options, defaults and errors") {
 	EditorNode::Options o;
 	String error;
@@ -421,14 +434,7 @@ TEST_CASE("[Editor][Window] under Xvfb: select the area light, drag its width ha
 	mark = p.line_count();
 	REQUIRE(p.xdotool("key ctrl+s"));
 	REQUIRE_MESSAGE(p.wait_line("save ok", mark) >= 0, _read_file(p.log));
-	REQUIRE(p.xdotool("key ctrl+q"));
-	int exit_line = p.wait_line("exit ", mark);
-	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
-																					   << _read_file(p.output));
-	for (int i = 0; i < 600 && p.alive(); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(100));
-	}
+	_quit_cleanly(p, mark);
 	CHECK(p.exit_code == 0);
 
 	// The saved scene loads back equal to the original, but for the dragged width.
@@ -572,14 +578,7 @@ TEST_CASE("[Editor][Window] under Xvfb: resize the window (the viewport follows)
 	mark = p.line_count();
 	REQUIRE(p.xdotool("key ctrl+s"));
 	REQUIRE_MESSAGE(p.wait_line("save ok", mark) >= 0, _read_file(p.log));
-	REQUIRE(p.xdotool("key ctrl+q"));
-	const int exit_line = p.wait_line("exit ", mark);
-	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
-																					   << _read_file(p.output));
-	for (int i = 0; i < 600 && p.alive(); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(100));
-	}
+	_quit_cleanly(p, mark);
 	CHECK(p.exit_code == 0);
 	// Only the toggled bit changed in the saved file.
 	{
@@ -615,11 +614,7 @@ TEST_CASE("[Editor][Window] under Xvfb: the GPU-sampled viewport shows what `ren
 	size_t mark = p.line_count();
 	REQUIRE(p.xdotool("mousemove 5 590 key F12"));
 	REQUIRE_MESSAGE(p.wait_line("screenshot " + shot + "_0.png", mark) >= 0, _read_file(p.log));
-	REQUIRE(p.xdotool("key ctrl+q"));
-	const int exit_line = p.wait_line("exit ", mark);
-	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
-																					   << _read_file(p.output));
+	_quit_cleanly(p, mark);
 
 	// The same frame through the CPU path: readback, CPU gizmos, Tonemap::apply.
 	const String cpu_png = (dir / "cpu.png").string();
@@ -706,14 +701,7 @@ TEST_CASE("[Editor][Window] under Xvfb: the scene load report is in the Output d
 	}
 	CHECK_MESSAGE(reported, _read_file(p.log));
 	const size_t mark = p.line_count();
-	REQUIRE(p.xdotool("key ctrl+q"));
-	const int exit_line = p.wait_line("exit ", mark);
-	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
-																					   << _read_file(p.output));
-	for (int i = 0; i < 600 && p.alive(); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(100));
-	}
+	_quit_cleanly(p, mark);
 	std::filesystem::remove_all(dir);
 }
 
@@ -810,14 +798,7 @@ TEST_CASE("[Editor][Window] under Xvfb: the inspector previews the area light's 
 	CHECK_MESSAGE((left.r > 0.98f && left.g < 0.02f && left.b < 0.02f), left.r << " " << left.g << " " << left.b);
 	CHECK_MESSAGE((right.b > 0.98f && right.r < 0.02f && right.g < 0.02f), right.r << " " << right.g << " " << right.b);
 	const size_t quit_mark = p.line_count();
-	REQUIRE(p.xdotool("key ctrl+q"));
-	const int exit_line = p.wait_line("exit ", quit_mark);
-	REQUIRE(exit_line >= 0);
-	CHECK_MESSAGE(p.line(exit_line) == "exit 0 validation_errors 0", p.line(exit_line) << "\n"
-																					   << _read_file(p.output));
-	for (int i = 0; i < 600 && p.alive(); i++) {
-		std::this_thread::sleep_for(std::chrono::milliseconds(100));
-	}
+	_quit_cleanly(p, quit_mark);
 	std::filesystem::remove_all(dir);
 }
 
