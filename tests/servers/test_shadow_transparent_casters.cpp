@@ -13,6 +13,8 @@
 /*   reference's, and the same quad drawn solid (the old behaviour) does  */
 /*   not; the vertex colour's alpha cuts as well                          */
 /*   (vertex_color_use_as_albedo);                                        */
+/* - GeometryInstance3D::cast_shadow Off casts nothing, Shadows Only      */
+/*   casts but is not drawn;                                              */
 /* - a scene whose casters are all opaque never compiles the ALPHA_TEST   */
 /*   depth variant.                                                       */
 
@@ -144,10 +146,11 @@ struct Scene {
 	}
 	// The floor seen from 3 m above (x, z in -1.4..1.4 m), the caster 1 m above it (moved by p_caster_xform); p_light lit, with and without shadows, on both
 	// renderers.
-	VisibilityStats render(RID p_light, RS::LightType p_type, const Transform3D &p_light_xform, RID p_mesh, RID p_material, const Transform3D &p_caster_xform = Transform3D()) {
+	VisibilityStats render(RID p_light, RS::LightType p_type, const Transform3D &p_light_xform, RID p_mesh, RID p_material, const Transform3D &p_caster_xform = Transform3D(), RS::ShadowCastingSetting p_cast = RS::SHADOW_CASTING_SETTING_ON) {
 		RenderSceneData d = RenderTest::make_scene(RenderTest::camera_looking_down(3.0f), 50.0f, W, H, 20.0f);
 		RenderTest::add_geometry(d, floor, floor_material);
 		RenderTest::add_geometry(d, p_mesh, p_material, p_caster_xform);
+		d.geometry.back().cast_shadows = p_cast;
 		RenderSceneData::LightInstance l;
 		l.light = p_light;
 		l.type = p_type;
@@ -228,6 +231,26 @@ TEST_CASE("[Render][Shadows] transparent casters, area light: blended casts noth
 		CHECK(colors.rmse < AREA_SCISSOR_BOUND);
 		CHECK(colors.mean_gpu > opaque.mean_gpu + 0.01);
 
+		// GeometryInstance3D::cast_shadow Off: no shadow; Shadows Only: the shadow of the opaque quad, the quad
+		// itself not drawn (the centre pixel shows the floor: as in the reference, unlike the drawn quad).
+		RID opaque_material = s.caster_material(RS::MATERIAL_TRANSPARENCY_DISABLED, true);
+		const VisibilityStats off = s.render(light, RS::LIGHT_AREA, xform, s.caster, opaque_material, Transform3D(), RS::SHADOW_CASTING_SETTING_OFF);
+		report("cast_shadow Off", off);
+		CHECK(off.min_gpu > 0.97);
+		CHECK(off.rmse < 0.02);
+		// A dark caster: drawn, it darkens the centre pixel; Shadows Only, the centre shows the lit floor.
+		RS::MaterialParams dark;
+		dark.albedo = Color(0.05f, 0.05f, 0.05f, 1.0f);
+		dark.cull_back = false;
+		RID dark_material = s.f.material(dark);
+		const VisibilityStats drawn = s.render(light, RS::LIGHT_AREA, xform, s.caster, dark_material);
+		const VisibilityStats only = s.render(light, RS::LIGHT_AREA, xform, s.caster, dark_material, Transform3D(), RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY);
+		report("cast_shadow Shadows Only", only);
+		MESSAGE("centre pixel, unshadowed: drawn dark quad GPU ", drawn.centre_open_gpu, "; Shadows Only GPU ", only.centre_open_gpu, " reference ", only.centre_open_ref);
+		CHECK(only.min_gpu < 0.2);
+		CHECK(only.rmse < AREA_SCISSOR_BOUND);
+		CHECK(std::fabs(only.centre_open_gpu - only.centre_open_ref) < 0.05 * only.centre_open_ref);
+		CHECK(drawn.centre_open_gpu < 0.5 * only.centre_open_gpu);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }

@@ -291,6 +291,9 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 			if (g.instance.is_valid() ? !seen.insert(g.instance.get_id()).second : list != &p_data.geometry) {
 				continue;
 			}
+			if (g.cast_shadows == RS::SHADOW_CASTING_SETTING_OFF) {
+				continue; // GeometryInstance3D::cast_shadow Off.
+			}
 			candidates.push_back(&g);
 		}
 	}

@@ -26,7 +26,8 @@ bool ShadowCastersRD::material_casts(const RendererRD::MaterialStorage *p_materi
 }
 
 uint32_t ShadowCastersRD::collect(const RenderSceneData::GeometryInstance &p_instance, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage, RID p_material_shader, std::vector<Surface> &r_surfaces) {
-	const int count = p_mesh_storage->owns_mesh(p_instance.mesh) ? p_mesh_storage->mesh_get_surface_count(p_instance.mesh) : 0;
+	const bool casts = p_instance.cast_shadows != RS::SHADOW_CASTING_SETTING_OFF; // GeometryInstance3D::cast_shadow.
+	const int count = casts && p_mesh_storage->owns_mesh(p_instance.mesh) ? p_mesh_storage->mesh_get_surface_count(p_instance.mesh) : 0;
 	uint32_t added = 0;
 	for (int s = 0; s < count; s++) {
 		Surface surface;

@@ -616,7 +616,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RID color_shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR);
 	for (const RenderSceneData::GeometryInstance &g : p_data.geometry) {
 		int surface_count = mesh_storage->owns_mesh(g.mesh) ? mesh_storage->mesh_get_surface_count(g.mesh) : 0;
-		if (surface_count == 0) {
+		if (surface_count == 0 || g.cast_shadows == RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY) { // Shadows Only: cast, not drawn.
 			continue;
 		}
 		DrawPushConstant pc;
