@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <set>
 
 namespace {
@@ -409,22 +408,13 @@ void DirectionalShadowRD::render_shadows(RID p_material_shader) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	// What each caster casts (ShadowCastersRD: blended surfaces nothing, alpha-scissor ones through the
 	// ALPHA_TEST variant with their material set), resolved before any draw list: the sets record buffer updates.
-	std::map<const RenderSceneData::GeometryInstance *, std::pair<uint32_t, uint32_t>> caster_surfaces; // [begin, end).
-	std::vector<ShadowCastersRD::Surface> surfaces;
+	ShadowCastersRD::FrameSurfaces casters;
 	for (const Pass &pass : passes) {
 		for (const RenderSceneData::GeometryInstance *g : pass.casters) {
-			if (!caster_surfaces.count(g)) {
-				const uint32_t begin = uint32_t(surfaces.size());
-				ShadowCastersRD::collect(*g, mesh_storage, material_storage, p_material_shader, surfaces);
-				caster_surfaces[g] = { begin, uint32_t(surfaces.size()) };
-			}
+			casters.add(g, mesh_storage, material_storage, p_material_shader);
 		}
 	}
-	bool any_alpha_test = false;
-	for (const ShadowCastersRD::Surface &surface : surfaces) {
-		any_alpha_test = any_alpha_test || surface.alpha_test;
-	}
-	if (any_alpha_test && !alpha_pipeline.is_valid()) {
+	if (casters.any_alpha_test && !alpha_pipeline.is_valid()) {
 		RID shader = depth_shader.version_get_shader(ShadowCastersRD::DEPTH_VARIANT_ALPHA_TEST);
 		ERR_FAIL_COND_MSG(!shader.is_valid(), "DirectionalShadowRD: the depth shader (ALPHA_TEST) failed to compile: " + depth_shader.get_last_error());
 		alpha_pipeline = rd->render_pipeline_create(shader, rd->framebuffer_get_format(framebuffer), mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, _raster_state(), _depth_state(), RD::PipelineColorBlendState::create_disabled(0));
@@ -440,25 +430,12 @@ void DirectionalShadowRD::render_shadows(RID p_material_shader) {
 		memset(&pc, 0, sizeof(pc));
 		for (const RenderSceneData::GeometryInstance *g : pass.casters) {
 			Projection::from_transform(pass.clip_from_world * g->transform).to_floats(pc.clip_from_model);
-			const std::pair<uint32_t, uint32_t> range = caster_surfaces[g];
+			const std::pair<uint32_t, uint32_t> range = casters.get_range(g);
 			for (uint32_t i = range.first; i < range.second; i++) {
-				const ShadowCastersRD::Surface &surface = surfaces[i];
-				if (surface.alpha_test != alpha_bound) {
-					alpha_bound = surface.alpha_test;
-					rd->draw_list_bind_render_pipeline(list, alpha_bound ? alpha_pipeline : pipeline);
-				}
-				if (surface.alpha_test) {
-					rd->draw_list_bind_uniform_set(list, surface.material_set, 1);
-				}
+				const ShadowCastersRD::Surface &surface = casters.surfaces[i];
+				ShadowCastersRD::bind_surface(list, surface, pipeline, alpha_pipeline, alpha_bound);
 				pc.has_color[0] = surface.gpu->has_colors ? 1u : 0u;
-				rd->draw_list_bind_vertex_array(list, surface.gpu->vertex_array);
-				rd->draw_list_set_push_constant(list, &pc, surface.alpha_test ? uint32_t(sizeof(pc)) : DEPTH_PUSH_CONSTANT_OPAQUE_SIZE);
-				if (surface.gpu->index_array.is_valid()) {
-					rd->draw_list_bind_index_array(list, surface.gpu->index_array);
-					rd->draw_list_draw(list, true);
-				} else {
-					rd->draw_list_draw(list, false);
-				}
+				ShadowCastersRD::draw_surface(list, surface, &pc, surface.alpha_test ? uint32_t(sizeof(pc)) : DEPTH_PUSH_CONSTANT_OPAQUE_SIZE);
 				last_draw_count++;
 			}
 		}

@@ -611,27 +611,17 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data, RID p_m
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	// What each drawn caster casts (ShadowCastersRD: blended surfaces nothing, alpha-scissor ones through the
 	// ALPHA_TEST variant with their material set), resolved before any draw list: the sets record buffer updates.
-	std::map<const RenderSceneData::GeometryInstance *, std::pair<uint32_t, uint32_t>> caster_surfaces; // [begin, end).
-	std::vector<ShadowCastersRD::Surface> surfaces;
-	bool any_alpha_test = false;
+	ShadowCastersRD::FrameSurfaces casters;
 	for (const AreaShadowAtlas::DrawRequest &req : draws) {
 		auto it = frame_lights.find(req.light);
 		if (it == frame_lights.end()) {
 			continue;
 		}
 		for (const RenderSceneData::GeometryInstance *caster : it->second.casters) {
-			if (caster_surfaces.count(caster)) {
-				continue;
-			}
-			const uint32_t begin = uint32_t(surfaces.size());
-			ShadowCastersRD::collect(*caster, mesh_storage, material_storage, p_material_shader, surfaces);
-			caster_surfaces[caster] = { begin, uint32_t(surfaces.size()) };
+			casters.add(caster, mesh_storage, material_storage, p_material_shader);
 		}
 	}
-	for (const ShadowCastersRD::Surface &surface : surfaces) {
-		any_alpha_test = any_alpha_test || surface.alpha_test;
-	}
-	if (any_alpha_test && !alpha_pipeline.is_valid()) {
+	if (casters.any_alpha_test && !alpha_pipeline.is_valid()) {
 		RID shader = depth_shader.version_get_shader(ShadowCastersRD::DEPTH_VARIANT_ALPHA_TEST);
 		ERR_FAIL_COND_MSG(!shader.is_valid(), "Area shadow depth shader (ALPHA_TEST) failed to compile: " + depth_shader.get_last_error());
 		RD::PipelineRasterizationState raster;
@@ -670,25 +660,12 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data, RID p_m
 			for (const RenderSceneData::GeometryInstance *caster : lf.casters) {
 				const RenderSceneData::GeometryInstance &gi = *caster;
 				Projection::from_transform(octant_from_world * gi.transform).to_floats(pc.octant_view_from_model);
-				const std::pair<uint32_t, uint32_t> range = caster_surfaces[caster];
+				const std::pair<uint32_t, uint32_t> range = casters.get_range(caster);
 				for (uint32_t i = range.first; i < range.second; i++) {
-					const ShadowCastersRD::Surface &surface = surfaces[i];
-					if (surface.alpha_test != alpha_bound) {
-						alpha_bound = surface.alpha_test;
-						rd->draw_list_bind_render_pipeline(list, alpha_bound ? alpha_pipeline : pipeline);
-					}
-					if (surface.alpha_test) {
-						rd->draw_list_bind_uniform_set(list, surface.material_set, 1);
-					}
+					const ShadowCastersRD::Surface &surface = casters.surfaces[i];
+					ShadowCastersRD::bind_surface(list, surface, pipeline, alpha_pipeline, alpha_bound);
 					pc.params[3] = surface.alpha_test && surface.gpu->has_colors ? 1.0f : 0.0f;
-					rd->draw_list_bind_vertex_array(list, surface.gpu->vertex_array);
-					rd->draw_list_set_push_constant(list, &pc, sizeof(pc));
-					if (surface.gpu->index_array.is_valid()) {
-						rd->draw_list_bind_index_array(list, surface.gpu->index_array);
-						rd->draw_list_draw(list, true);
-					} else {
-						rd->draw_list_draw(list, false);
-					}
+					ShadowCastersRD::draw_surface(list, surface, &pc, sizeof(pc));
 				}
 			}
 		}

@@ -67,3 +67,43 @@ void ShadowCastersRD::hash_materials(uint64_t &r_hash, const RenderSceneData::Ge
 		_hash_bytes(r_hash, modes, sizeof(modes));
 	}
 }
+
+void ShadowCastersRD::FrameSurfaces::add(const RenderSceneData::GeometryInstance *p_instance, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage, RID p_material_shader) {
+	if (ranges.count(p_instance)) {
+		return;
+	}
+	const uint32_t begin = uint32_t(surfaces.size());
+	collect(*p_instance, p_mesh_storage, p_material_storage, p_material_shader, surfaces);
+	ranges[p_instance] = { begin, uint32_t(surfaces.size()) };
+	for (uint32_t i = begin; i < surfaces.size(); i++) {
+		any_alpha_test = any_alpha_test || surfaces[i].alpha_test;
+	}
+}
+
+std::pair<uint32_t, uint32_t> ShadowCastersRD::FrameSurfaces::get_range(const RenderSceneData::GeometryInstance *p_instance) const {
+	auto it = ranges.find(p_instance);
+	return it != ranges.end() ? it->second : std::pair<uint32_t, uint32_t>(0, 0);
+}
+
+void ShadowCastersRD::bind_surface(RD::DrawListID p_list, const Surface &p_surface, RID p_pipeline, RID p_alpha_pipeline, bool &r_alpha_bound) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	if (p_surface.alpha_test != r_alpha_bound) {
+		r_alpha_bound = p_surface.alpha_test;
+		rd->draw_list_bind_render_pipeline(p_list, r_alpha_bound ? p_alpha_pipeline : p_pipeline);
+	}
+	if (p_surface.alpha_test) {
+		rd->draw_list_bind_uniform_set(p_list, p_surface.material_set, 1);
+	}
+}
+
+void ShadowCastersRD::draw_surface(RD::DrawListID p_list, const Surface &p_surface, const void *p_push, uint32_t p_push_size) {
+	RenderingDevice *rd = RenderingDevice::get_singleton();
+	rd->draw_list_bind_vertex_array(p_list, p_surface.gpu->vertex_array);
+	rd->draw_list_set_push_constant(p_list, p_push, p_push_size);
+	if (p_surface.gpu->index_array.is_valid()) {
+		rd->draw_list_bind_index_array(p_list, p_surface.gpu->index_array);
+		rd->draw_list_draw(p_list, true);
+	} else {
+		rd->draw_list_draw(p_list, false);
+	}
+}

@@ -23,6 +23,8 @@
 #include "servers/rendering/renderer_scene_render.h"
 
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 class ShadowCastersRD {
@@ -48,6 +50,20 @@ public:
 	// The surfaces of p_instance that cast, appended to r_surfaces; material sets are created against
 	// p_material_shader (records buffer updates: call outside draw lists). Returns the number appended.
 	static uint32_t collect(const RenderSceneData::GeometryInstance &p_instance, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage, RID p_material_shader, std::vector<Surface> &r_surfaces);
+	// The surfaces of every caster of a frame's passes, each caster resolved once.
+	struct FrameSurfaces {
+		std::map<const RenderSceneData::GeometryInstance *, std::pair<uint32_t, uint32_t>> ranges; // [begin, end) in surfaces.
+		std::vector<Surface> surfaces;
+		bool any_alpha_test = false;
+		// Adds p_instance's surfaces unless already added (collect(); call outside draw lists).
+		void add(const RenderSceneData::GeometryInstance *p_instance, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage, RID p_material_shader);
+		std::pair<uint32_t, uint32_t> get_range(const RenderSceneData::GeometryInstance *p_instance) const;
+	};
+	// Binds p_alpha_pipeline or p_pipeline as p_surface needs (r_alpha_bound: which one the list has bound) and,
+	// for an alpha-tested surface, its material set (set 1).
+	static void bind_surface(RD::DrawListID p_list, const Surface &p_surface, RID p_pipeline, RID p_alpha_pipeline, bool &r_alpha_bound);
+	// Draws p_surface's arrays with the push constant p_push (p_push_size bytes).
+	static void draw_surface(RD::DrawListID p_list, const Surface &p_surface, const void *p_push, uint32_t p_push_size);
 	// FNV-1a of what decides p_instance's shadow shape beyond its mesh and transform: per surface, its
 	// transparency and, when alpha-tested, the threshold, albedo alpha, albedo texture, uv1 and vertex
 	// colour use (the area maps are redrawn when it changes).
