@@ -16,7 +16,8 @@
 /* - GeometryInstance3D::cast_shadow Off casts nothing, Shadows Only      */
 /*   casts but is not drawn;                                              */
 /* - a scene whose casters are all opaque never compiles the ALPHA_TEST   */
-/*   depth variant.                                                       */
+/*   depth variant; the area maps are redrawn when a caster's cut changes */
+/*   and not otherwise.                                                   */
 
 #include "modules/reference/reference_renderer.h"
 #include "servers/rendering/renderer_rd/directional_shadow_rd.h"
@@ -299,6 +300,66 @@ TEST_CASE("[Render][Shadows] transparent casters, sun: blended casts nothing, sc
 		MESSAGE("old behaviour (solid) vs the scissored reference: visibility RMSE ", old_rmse);
 		CHECK(old_rmse > SUN_SCISSOR_BOUND);
 		CHECK(old_rmse > 2.0 * cut.rmse);
+	}
+	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[Render][Shadows] area shadow maps are redrawn when a caster's transparency, cut or cast_shadow changes, and only then") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	{
+		Scene s;
+		REQUIRE(s.init());
+		RID light = s.f.area_light(Vector2(0.3f, 0.3f), 3.0f, 10.0f, 1.0f);
+		s.f.light_storage.light_area_set_shadow_grid(light, 2);
+		s.f.light_storage.light_set_shadow(light, true);
+		AreaShadowRendererRD &shadows = s.f.renderer.get_area_shadow_renderer();
+		RID material = s.caster_material(RS::MATERIAL_TRANSPARENCY_DISABLED, true);
+		RS::MaterialParams params = s.f.material_storage.material_get_params(material);
+		RenderSceneData d = RenderTest::make_scene(RenderTest::camera_looking_down(3.0f), 50.0f, W, H, 20.0f);
+		RenderTest::add_geometry(d, s.floor, s.floor_material);
+		RenderTest::add_geometry(d, s.caster, material);
+		RenderTest::add_light(d, light, RS::LIGHT_AREA, Transform3D(RenderTest::facing_down(), Vector3(0, 2.5f, 0)));
+		// Sum of the red channel (the shadow's size moves it); one render target throughout (its atlas keeps the maps).
+		RID rt = s.f.renderer.render_target_create(W, H);
+		REQUIRE(rt.is_valid());
+		auto frame = [&](uint64_t &r_draws) {
+			s.f.renderer.render_scene(d, rt);
+			r_draws = shadows.get_last_draw_count();
+			const std::vector<float> img = s.f.renderer.render_target_get_data(rt);
+			double sum = 0.0;
+			for (size_t i = 0; i < img.size(); i += 4) {
+				sum += img[i];
+			}
+			return sum;
+		};
+		uint64_t draws = 0;
+		const double solid = frame(draws);
+		CHECK(draws == 4);
+		frame(draws);
+		CHECK(draws == 0); // Nothing changed: no map redrawn.
+
+		params.transparency = RS::MATERIAL_TRANSPARENCY_ALPHA_SCISSOR;
+		s.f.material_storage.material_set_params(material, params);
+		const double cut = frame(draws);
+		CHECK(draws == 4);
+		params.albedo.a = 0.0f; // Nothing reaches the threshold: no shadow at all.
+		s.f.material_storage.material_set_params(material, params);
+		const double none = frame(draws);
+		CHECK(draws == 4);
+		params.transparency = RS::MATERIAL_TRANSPARENCY_DISABLED;
+		s.f.material_storage.material_set_params(material, params);
+		const double solid_again = frame(draws);
+		CHECK(draws == 4);
+		d.geometry.back().cast_shadows = RS::SHADOW_CASTING_SETTING_OFF;
+		const double off = frame(draws);
+		CHECK(draws == 4);
+		MESSAGE("image sums: solid ", solid, ", scissored checker ", cut, ", scissored away ", none, ", solid again ", solid_again, ", cast_shadow Off ", off);
+		CHECK(cut > solid * 1.01); // Light through the holes (the quad itself is drawn cut too).
+		CHECK(none > cut);
+		CHECK(std::fabs(solid_again - solid) < 1e-3 * solid);
+		CHECK(off > solid * 1.01);
+		s.f.renderer.render_target_free(rt);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }

@@ -50,6 +50,7 @@ uint32_t ShadowCastersRD::collect(const RenderSceneData::GeometryInstance &p_ins
 }
 
 void ShadowCastersRD::hash_materials(uint64_t &r_hash, const RenderSceneData::GeometryInstance &p_instance, const RendererRD::MeshStorage *p_mesh_storage, const RendererRD::MaterialStorage *p_material_storage) {
+	_hash_bytes(r_hash, &p_instance.cast_shadows, sizeof(p_instance.cast_shadows)); // Off casts nothing.
 	const int count = p_mesh_storage->owns_mesh(p_instance.mesh) ? p_mesh_storage->mesh_get_surface_count(p_instance.mesh) : 0;
 	for (int s = 0; s < count; s++) {
 		const RID material = _surface_material(p_instance, p_mesh_storage, s);

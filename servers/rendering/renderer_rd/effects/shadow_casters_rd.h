@@ -64,8 +64,8 @@ public:
 	static void bind_surface(RD::DrawListID p_list, const Surface &p_surface, RID p_pipeline, RID p_alpha_pipeline, bool &r_alpha_bound);
 	// Draws p_surface's arrays with the push constant p_push (p_push_size bytes).
 	static void draw_surface(RD::DrawListID p_list, const Surface &p_surface, const void *p_push, uint32_t p_push_size);
-	// FNV-1a of what decides p_instance's shadow shape beyond its mesh and transform: per surface, its
-	// transparency and, when alpha-tested, the threshold, albedo alpha, albedo texture, uv1 and vertex
-	// colour use (the area maps are redrawn when it changes).
+	// FNV-1a of what decides p_instance's shadow shape beyond its mesh and transform: its cast_shadows and, per
+	// surface, its transparency and, when alpha-tested, the threshold, albedo alpha, albedo texture, uv1 and
+	// vertex colour use (the area maps are redrawn when it changes).
 	static void hash_materials(uint64_t &r_hash, const RenderSceneData::GeometryInstance &p_instance, const RendererRD::MeshStorage *p_mesh_storage, const RendererRD::MaterialStorage *p_material_storage);
 };
