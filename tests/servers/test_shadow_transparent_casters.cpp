@@ -132,6 +132,12 @@ struct Scene {
 		checker = f.material_storage.texture_2d_create(img);
 		return checker.is_valid();
 	}
+	// A 0.3 m square area light (energy 3, range 10 m) with p_grid x p_grid shadow maps.
+	RID area_light(int p_grid) {
+		RID light = f.area_light(Vector2(0.3f, 0.3f), 3.0f, 10.0f, 1.0f);
+		f.light_storage.light_area_set_shadow_grid(light, p_grid);
+		return light;
+	}
 	// The caster's material: transparency p_transparency, the checker texture when p_textured.
 	RID caster_material(RS::MaterialTransparency p_transparency, bool p_textured, bool p_vertex_color = false) {
 		RS::MaterialParams mp;
@@ -192,8 +198,7 @@ TEST_CASE("[Render][Shadows] transparent casters, area light: blended casts noth
 	{
 		Scene s;
 		REQUIRE(s.init());
-		RID light = s.f.area_light(Vector2(0.3f, 0.3f), 3.0f, 10.0f, 1.0f);
-		s.f.light_storage.light_area_set_shadow_grid(light, 3);
+		RID light = s.area_light(3);
 		const Transform3D xform(RenderTest::facing_down(), Vector3(0, 2.5f, 0));
 		AreaShadowRendererRD &shadows = s.f.renderer.get_area_shadow_renderer();
 
@@ -310,8 +315,7 @@ TEST_CASE("[Render][Shadows] area shadow maps are redrawn when a caster's transp
 	{
 		Scene s;
 		REQUIRE(s.init());
-		RID light = s.f.area_light(Vector2(0.3f, 0.3f), 3.0f, 10.0f, 1.0f);
-		s.f.light_storage.light_area_set_shadow_grid(light, 2);
+		RID light = s.area_light(2);
 		s.f.light_storage.light_set_shadow(light, true);
 		AreaShadowRendererRD &shadows = s.f.renderer.get_area_shadow_renderer();
 		RID material = s.caster_material(RS::MATERIAL_TRANSPARENCY_DISABLED, true);
