@@ -143,6 +143,14 @@ public:
 		bool vertex_color_is_srgb = false; // ARRAY_COLOR rgb is sRGB-encoded (decoded by the renderer).
 	};
 
+	// Values of GeometryInstance3D::ShadowCastingSetting (Godot's RS::ShadowCastingSetting).
+	enum ShadowCastingSetting {
+		SHADOW_CASTING_SETTING_OFF,
+		SHADOW_CASTING_SETTING_ON,
+		SHADOW_CASTING_SETTING_DOUBLE_SIDED,
+		SHADOW_CASTING_SETTING_SHADOWS_ONLY,
+	};
+
 	/* LIGHT API enums */
 
 	enum LightType {
@@ -573,6 +581,9 @@ public:
 	virtual void instance_set_layer_mask(RID p_instance, uint32_t p_mask) = 0;
 	// Overrides the material of every surface (RID() removes the override).
 	virtual void instance_geometry_set_material_override(RID p_instance, RID p_material) = 0;
+	// GeometryInstance3D::cast_shadow: OFF casts no shadow, SHADOWS_ONLY casts but is not drawn; ON and
+	// DOUBLE_SIDED cast from both faces here (the shadow passes and the reference do not cull faces).
+	virtual void instance_geometry_set_cast_shadows_setting(RID p_instance, ShadowCastingSetting p_setting) = 0;
 	// Returns the world-space AABB of the instance's base (empty for lights of directional type).
 	virtual AABB instance_get_aabb(RID p_instance) const = 0;
 

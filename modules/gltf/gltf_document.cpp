@@ -222,6 +222,63 @@ bool _read_floats(const tinygltf::Model &p_model, int p_index, int p_comps, std:
 	return true;
 }
 
+// Reads a COLOR_0 accessor (glTF 2.0 spec 3.7.2.1): VEC3 or VEC4 of FLOAT, or of UNSIGNED_BYTE / UNSIGNED_SHORT
+// read as normalized (value / 255 or / 65535: the spec requires `normalized` for them; files that omit the
+// flag, as some exporters do, mean the same). Linear colours; alpha 1 for VEC3.
+bool _read_colors(const tinygltf::Model &p_model, int p_index, std::vector<Color> &r_out, String *r_error) {
+	if (p_index < 0 || p_index >= int(p_model.accessors.size())) {
+		*r_error = vformat("accessor index %d is out of range (%d accessors)", p_index, int(p_model.accessors.size()));
+		return false;
+	}
+	const tinygltf::Accessor &acc = p_model.accessors[p_index];
+	const int comps = tinygltf::GetNumComponentsInType(acc.type);
+	if (comps != 3 && comps != 4) {
+		*r_error = vformat("COLOR_0 accessor %d has %d components; VEC3 or VEC4 expected", p_index, comps);
+		return false;
+	}
+	int size = 0;
+	float scale = 1.0f;
+	switch (acc.componentType) {
+		case TINYGLTF_COMPONENT_TYPE_FLOAT:
+			size = 4;
+			break;
+		case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+			size = 1;
+			scale = 1.0f / 255.0f;
+			break;
+		case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+			size = 2;
+			scale = 1.0f / 65535.0f;
+			break;
+		default:
+			*r_error = vformat("COLOR_0 accessor %d has component type %d; FLOAT, UNSIGNED_BYTE or UNSIGNED_SHORT expected", p_index, acc.componentType);
+			return false;
+	}
+	size_t start = 0, stride = 0;
+	if (!_accessor_span(p_model, p_index, "attribute", size_t(size) * comps, &start, &stride, r_error)) {
+		return false;
+	}
+	const tinygltf::Buffer &buffer = p_model.buffers[p_model.bufferViews[acc.bufferView].buffer];
+	r_out.resize(acc.count);
+	for (size_t i = 0; i < acc.count; i++) {
+		const uint8_t *p = buffer.data.data() + start + i * stride;
+		float c[4] = { 1.0f, 1.0f, 1.0f, 1.0f };
+		for (int k = 0; k < comps; k++) {
+			if (size == 4) {
+				memcpy(&c[k], p + k * 4, 4);
+			} else if (size == 2) {
+				uint16_t v;
+				memcpy(&v, p + k * 2, 2);
+				c[k] = float(v) * scale;
+			} else {
+				c[k] = float(p[k]) * scale;
+			}
+		}
+		r_out[i] = Color(c[0], c[1], c[2], c[3]);
+	}
+	return true;
+}
+
 bool _read_indices(const tinygltf::Model &p_model, int p_index, std::vector<uint32_t> &r_out, String *r_error) {
 	if (p_index < 0 || p_index >= int(p_model.accessors.size())) {
 		*r_error = vformat("field 'indices' = %d is out of range (%d accessors)", p_index, int(p_model.accessors.size()));
@@ -487,6 +544,17 @@ bool GLTFDocument::_convert(const void *p_model, String *r_error) {
 			}
 			for (size_t i = 0; i < uv.size(); i += 2) {
 				s.uvs.push_back(Vector2(uv[i], uv[i + 1]));
+			}
+			auto color_it = prim.attributes.find("COLOR_0");
+			if (color_it != prim.attributes.end()) {
+				if (!_read_colors(model, color_it->second, s.colors, &err)) {
+					*r_error = vformat("mesh %d primitive %d: %s", int(mi), int(pi), err.c_str());
+					return false;
+				}
+				if (s.colors.size() != vcount) {
+					*r_error = vformat("mesh %d primitive %d: attribute COLOR_0 has a different count than POSITION", int(mi), int(pi));
+					return false;
+				}
 			}
 			s.tangents = t;
 			s.material = (prim.material >= 0 && prim.material < int(materials.size())) ? prim.material : -1;

@@ -2,7 +2,8 @@
 /*  gltf_document.h                                                       */
 /**************************************************************************/
 /* glTF 2.0 import (Godot's GLTFDocument, reduced): meshes (triangles),   */
-/* metallic-roughness PBR materials and the node hierarchy. Parsing uses  */
+/* metallic-roughness PBR materials, vertex colours (COLOR_0) and the     */
+/* node hierarchy. Parsing uses                                           */
 /* tinygltf; the result is plain data, turned into MeshInstance3D nodes   */
 /* by gltf_scene_builder.cpp.                                             */
 
@@ -21,6 +22,9 @@ struct GLTFSurfaceData {
 	std::vector<Vector3> normals; // Generated (flat per face) when the file has none.
 	std::vector<Vector2> uvs; // Empty when the file has none.
 	std::vector<float> tangents; // 4 per vertex (xyz, handedness w); empty when absent.
+	// COLOR_0 (glTF 2.0 spec 3.7.2.1: linear RGB or RGBA, multiplies the base colour; alpha 1 for VEC3);
+	// empty when absent.
+	std::vector<Color> colors;
 	std::vector<uint32_t> indices; // Triangle list, counter-clockwise front faces (glTF's convention).
 	int material = -1;
 };

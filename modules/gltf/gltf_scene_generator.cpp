@@ -4,7 +4,11 @@
 /* Turns parsed glTF data into scene nodes (Godot's GLTFDocument::        */
 /* generate_scene, reduced). glTF metallic-roughness maps one-to-one onto  */
 /* StandardMaterial3D's albedo/metallic/roughness; base colour factors are */
-/* linear in glTF and sRGB in Godot, hence linear_to_srgb().              */
+/* linear in glTF and sRGB in Godot, hence linear_to_srgb(). A primitive  */
+/* with COLOR_0 gets ARRAY_COLOR and, as Godot's importer does, its       */
+/* material vertex_color_use_as_albedo (glTF: COLOR_0 multiplies the base */
+/* colour; linear, so not vertex_color_is_srgb); without a material, a    */
+/* default StandardMaterial3D with that flag.                             */
 
 #include "modules/gltf/gltf_document.h"
 
@@ -55,6 +59,7 @@ Node *gltf_generate_scene(const GLTFDocument &p_doc, const String &p_root_name, 
 		}
 		materials.push_back(mat);
 	}
+	Ref<StandardMaterial3D> vertex_color_material; // For primitives with COLOR_0 and no material (made once).
 	std::vector<Ref<ArrayMesh>> meshes;
 	for (const GLTFMeshData &md : p_doc.get_meshes()) {
 		Ref<ArrayMesh> mesh = Ref<ArrayMesh>(new ArrayMesh);
@@ -65,6 +70,7 @@ Node *gltf_generate_scene(const GLTFDocument &p_doc, const String &p_root_name, 
 			arrays.normals = s.normals;
 			arrays.uvs = s.uvs;
 			arrays.tangents = s.tangents;
+			arrays.colors = s.colors;
 			// glTF front faces are counter-clockwise; the engine (as Godot) treats clockwise as front,
 			// so every triangle's winding is reversed on import.
 			arrays.indices = s.indices;
@@ -75,8 +81,19 @@ Node *gltf_generate_scene(const GLTFDocument &p_doc, const String &p_root_name, 
 				*r_error = vformat("mesh '%s' has an invalid surface", md.name.c_str());
 				return nullptr;
 			}
-			if (s.material >= 0) {
-				mesh->surface_set_material(mesh->get_surface_count() - 1, materials[s.material]);
+			Ref<StandardMaterial3D> material = s.material >= 0 ? materials[s.material] : Ref<StandardMaterial3D>();
+			if (!s.colors.empty()) {
+				if (material.is_null()) {
+					if (vertex_color_material.is_null()) {
+						vertex_color_material = Ref<StandardMaterial3D>(new StandardMaterial3D);
+					}
+					material = vertex_color_material;
+				}
+				// A surface of this material without COLOR_0 reads white (the renderers' stand-in), as in Godot.
+				material->set_flag_vertex_color_use_as_albedo(true);
+			}
+			if (material.is_valid()) {
+				mesh->surface_set_material(mesh->get_surface_count() - 1, material);
 			}
 		}
 		meshes.push_back(mesh);

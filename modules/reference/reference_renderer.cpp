@@ -92,6 +92,10 @@ void ReferenceRenderer::_surface_filter(const RTCFilterFunctionNArguments *p_arg
 			continue;
 		}
 		const unsigned prim = RTCHitN_primID(p_args->hit, p_args->N, i);
+		if (p_occlusion ? s.cast_shadows == RS::SHADOW_CASTING_SETTING_OFF : s.cast_shadows == RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY) {
+			p_args->valid[i] = 0; // GeometryInstance3D::cast_shadow: Off casts nothing, Shadows Only is seen by no other ray.
+			continue;
+		}
 		if (p_occlusion && s.material.transparency == RS::MATERIAL_TRANSPARENCY_ALPHA) {
 			p_args->valid[i] = 0; // Godot: alpha-blended materials cast no shadow.
 			continue;
@@ -421,6 +425,7 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 			RID material = g.material_override.is_valid() ? g.material_override : mesh_storage->mesh_surface_get_material(g.mesh, s);
 			surface.material = _resolve_material(material);
 			surface.layer_mask = g.layer_mask;
+			surface.cast_shadows = g.cast_shadows;
 			frame.surfaces.push_back(std::move(surface));
 		}
 	}
@@ -458,10 +463,11 @@ void ReferenceRenderer::render_scene(const RenderSceneData &p_data, RID p_render
 		for (size_t k = 0; k < s.indices.size(); k++) {
 			ib[k] = s.indices[k];
 		}
-		if (s.material.cull_back || s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+		const bool cast_setting = s.cast_shadows == RS::SHADOW_CASTING_SETTING_OFF || s.cast_shadows == RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY;
+		if (s.material.cull_back || s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED || cast_setting) {
 			rtcSetGeometryUserData(geom, &s);
 			rtcSetGeometryIntersectFilterFunction(geom, _surface_intersect_filter);
-			if (s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED) {
+			if (s.material.transparency != RS::MATERIAL_TRANSPARENCY_DISABLED || cast_setting) {
 				rtcSetGeometryOccludedFilterFunction(geom, _surface_occluded_filter);
 			}
 		}

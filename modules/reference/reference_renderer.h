@@ -171,6 +171,7 @@ private:
 		std::vector<Vector3> face_normals; // (c - a) x (b - a): points to the front (clockwise) side.
 		ShadingMaterial material;
 		uint32_t layer_mask = 1;
+		RS::ShadowCastingSetting cast_shadows = RS::SHADOW_CASTING_SETTING_ON; // Off: no shadow rays hit it; Shadows Only: only they do.
 	};
 
 	struct Light {

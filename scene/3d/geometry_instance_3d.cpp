@@ -22,6 +22,10 @@ void GeometryInstance3D::set_material_override(const Ref<Material> &p_material) 
 void GeometryInstance3D::set_cast_shadows_setting(ShadowCastingSetting p_setting) {
 	ERR_FAIL_INDEX_MSG((int)p_setting, 4, vformat("cast_shadow must be 0..3 (Off, On, Double-Sided, Shadows Only); got %d.", (int)p_setting));
 	shadow_casting_setting = p_setting;
+	RS *rs = RS::get_singleton();
+	if (rs && get_instance().is_valid()) {
+		rs->instance_geometry_set_cast_shadows_setting(get_instance(), RS::ShadowCastingSetting(p_setting));
+	}
 }
 
 void GeometryInstance3D::_bind_methods() {

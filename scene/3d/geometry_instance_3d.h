@@ -3,7 +3,8 @@
 /**************************************************************************/
 /* godot-area: a VisualInstance3D that draws geometry (Godot's            */
 /* GeometryInstance3D, reduced): the material override and the shadow     */
-/* casting setting (stored; the server has no per-instance shadow flag).  */
+/* casting setting (RS::instance_geometry_set_cast_shadows_setting(): Off */
+/* casts nothing, Shadows Only casts but is not drawn).                   */
 
 #pragma once
 

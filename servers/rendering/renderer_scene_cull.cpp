@@ -234,6 +234,13 @@ void RendererSceneCull::instance_geometry_set_material_override(RID p_instance, 
 	instance->material_override = p_material;
 }
 
+void RendererSceneCull::instance_geometry_set_cast_shadows_setting(RID p_instance, RS::ShadowCastingSetting p_setting) {
+	Instance *instance = instance_owner.get_or_null(p_instance);
+	ERR_FAIL_NULL_MSG(instance, "Invalid instance RID.");
+	ERR_FAIL_COND_MSG(int(p_setting) < 0 || int(p_setting) > int(RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY), vformat("cast_shadow must be 0..3 (Off, On, Double-Sided, Shadows Only); got %d.", int(p_setting)));
+	instance->cast_shadows = p_setting;
+}
+
 AABB RendererSceneCull::_instance_get_world_aabb(const Instance &p_instance) const {
 	switch (p_instance.base_type) {
 		case RS::INSTANCE_MESH:
@@ -457,6 +464,7 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 			geometry.transform = instance->transform;
 			geometry.aabb = aabb;
 			geometry.layer_mask = instance->layer_mask;
+			geometry.cast_shadows = instance->cast_shadows;
 			r_data.geometry.push_back(geometry);
 			last_stats.geometry_visible++;
 		} else if (instance->base_type == RS::INSTANCE_LIGHT) {
@@ -516,7 +524,7 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 		}
 		for (const RID &rid : scenario->instances) {
 			const Instance *instance = instance_owner.get_or_null(rid);
-			if (!instance || !instance->visible || instance->base_type != RS::INSTANCE_MESH || !RSG::mesh_storage || !RSG::mesh_storage->owns_mesh(instance->base) || (instance->layer_mask & sun_caster_mask) == 0 || known.count(rid.get_id())) {
+			if (!instance || !instance->visible || instance->base_type != RS::INSTANCE_MESH || !RSG::mesh_storage || !RSG::mesh_storage->owns_mesh(instance->base) || (instance->layer_mask & sun_caster_mask) == 0 || instance->cast_shadows == RS::SHADOW_CASTING_SETTING_OFF || known.count(rid.get_id())) {
 				continue;
 			}
 			RenderSceneData::GeometryInstance geometry;
@@ -526,6 +534,7 @@ bool RendererSceneCull::build_render_scene_data(RID p_camera, RID p_scenario, in
 			geometry.transform = instance->transform;
 			geometry.aabb = _instance_get_world_aabb(*instance);
 			geometry.layer_mask = instance->layer_mask;
+			geometry.cast_shadows = instance->cast_shadows;
 			r_data.shadow_geometry.push_back(geometry);
 		}
 	}
@@ -550,7 +559,7 @@ void RendererSceneCull::_fill_area_shadow_casters(const Scenario &p_scenario, Re
 			}
 			for (const RID &rid : p_scenario.instances) {
 				const Instance *instance = instance_owner.get_or_null(rid);
-				if (instance && instance->visible && instance->base_type == RS::INSTANCE_MESH && RSG::mesh_storage && RSG::mesh_storage->owns_mesh(instance->base)) {
+				if (instance && instance->visible && instance->base_type == RS::INSTANCE_MESH && RSG::mesh_storage && RSG::mesh_storage->owns_mesh(instance->base) && instance->cast_shadows != RS::SHADOW_CASTING_SETTING_OFF) {
 					meshes.push_back(std::make_pair(rid, _instance_get_world_aabb(*instance)));
 				}
 			}
@@ -573,6 +582,7 @@ void RendererSceneCull::_fill_area_shadow_casters(const Scenario &p_scenario, Re
 				geometry.transform = instance->transform;
 				geometry.aabb = m.second;
 				geometry.layer_mask = instance->layer_mask;
+				geometry.cast_shadows = instance->cast_shadows;
 				it = index_of.emplace(m.first.get_id(), uint32_t(r_data.shadow_geometry.size())).first;
 				r_data.shadow_geometry.push_back(geometry);
 				last_stats.area_shadow_casters++;

@@ -51,6 +51,7 @@ public:
 		bool visible = true;
 		uint32_t layer_mask = 1;
 		RID material_override;
+		RS::ShadowCastingSetting cast_shadows = RS::SHADOW_CASTING_SETTING_ON;
 	};
 
 	// Counters of the last build_render_scene_data() call.
@@ -130,6 +131,7 @@ public:
 	void instance_set_layer_mask(RID p_instance, uint32_t p_mask);
 	// Sets the material override.
 	void instance_geometry_set_material_override(RID p_instance, RID p_material);
+	void instance_geometry_set_cast_shadows_setting(RID p_instance, RS::ShadowCastingSetting p_setting);
 	// Returns the world AABB of the base (empty if none or directional).
 	AABB instance_get_aabb(RID p_instance) const;
 	// Returns the base type.

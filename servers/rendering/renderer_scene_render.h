@@ -24,6 +24,8 @@ struct RenderSceneData {
 		Transform3D transform; // world_from_object.
 		AABB aabb; // World-space bound.
 		uint32_t layer_mask = 1; // Matched against light cull masks.
+		// GeometryInstance3D::cast_shadow: OFF casts nothing; SHADOWS_ONLY casts but the colour passes skip it.
+		RS::ShadowCastingSetting cast_shadows = RS::SHADOW_CASTING_SETTING_ON;
 	};
 
 	// A visible light (directional lights are never culled).

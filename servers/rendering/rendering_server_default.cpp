@@ -379,6 +379,10 @@ void RenderingServerDefault::instance_geometry_set_material_override(RID p_insta
 	scene_cull->instance_geometry_set_material_override(p_instance, p_material);
 }
 
+void RenderingServerDefault::instance_geometry_set_cast_shadows_setting(RID p_instance, ShadowCastingSetting p_setting) {
+	scene_cull->instance_geometry_set_cast_shadows_setting(p_instance, p_setting);
+}
+
 AABB RenderingServerDefault::instance_get_aabb(RID p_instance) const {
 	return scene_cull->instance_get_aabb(p_instance);
 }

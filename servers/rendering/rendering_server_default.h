@@ -133,6 +133,7 @@ public:
 	void instance_set_visible(RID p_instance, bool p_visible) override;
 	void instance_set_layer_mask(RID p_instance, uint32_t p_mask) override;
 	void instance_geometry_set_material_override(RID p_instance, RID p_material) override;
+	void instance_geometry_set_cast_shadows_setting(RID p_instance, ShadowCastingSetting p_setting) override;
 	AABB instance_get_aabb(RID p_instance) const override;
 
 	RID viewport_create() override;

@@ -27,6 +27,33 @@ static const char *TRIANGLE_GLTF = R"({
  ]
 })";
 
+// One triangle in three primitives, each with a COLOR_0 of another encoding (glTF 2.0 spec 3.7.2.1): VEC4 FLOAT
+// (material 0), VEC3 UNSIGNED_BYTE normalized (no material), VEC4 UNSIGNED_SHORT without the `normalized`
+// flag (material 0). The buffer (128 bytes, base64): positions (0, 0, 0), (1, 0, 0), (0, 1, 0) at 0; floats
+// (0.25, 0.5, 0.75, 1), (1, 0, 0, 0.5), (0, 1, 0, 0) at 36; bytes (255, 51, 0), (0, 255, 102), (10, 20, 30) at 84;
+// shorts (65535, 32768, 0, 65535), (0, 0, 65535, 0), (1, 2, 3, 4) at 96; u16 indices 0, 1, 2 at 120.
+static const char *COLOR_GLTF = R"({
+ "asset": {"version": "2.0"},
+ "scene": 0,
+ "scenes": [{"nodes": [0]}],
+ "nodes": [{"name": "Tri", "mesh": 0}],
+ "meshes": [{"name": "Colored", "primitives": [
+  {"attributes": {"POSITION": 0, "COLOR_0": 1}, "indices": 4, "material": 0},
+  {"attributes": {"POSITION": 0, "COLOR_0": 2}, "indices": 4},
+  {"attributes": {"POSITION": 0, "COLOR_0": 3}, "indices": 4, "material": 0}]}],
+ "materials": [{"name": "White", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1]}}],
+ "buffers": [{"byteLength": 128, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAACAPgAAAD8AAEA/AACAPwAAgD8AAAAAAAAAAAAAAD8AAAAAAACAPwAAAAAAAAAA/zMAAP9mChQeAAAA//8AgAAA//8AAAAA//8AAAEAAgADAAQAAAABAAIAAAA="}],
+ "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 48},
+  {"buffer": 0, "byteOffset": 84, "byteLength": 9}, {"buffer": 0, "byteOffset": 96, "byteLength": 24}, {"buffer": 0, "byteOffset": 120, "byteLength": 6}],
+ "accessors": [
+  {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+  {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC4"},
+  {"bufferView": 2, "componentType": 5121, "normalized": true, "count": 3, "type": "VEC3"},
+  {"bufferView": 3, "componentType": 5123, "count": 3, "type": "VEC4"},
+  {"bufferView": 4, "componentType": 5123, "count": 3, "type": "SCALAR"}
+ ]
+})";
+
 TEST_CASE("[GLTF] a triangle mesh, its material and node transform are imported") {
 	GLTFDocument doc;
 	String error;
@@ -122,6 +149,44 @@ TEST_CASE("[GLTF] an image's buffer view outside its buffer is rejected before d
 	String error;
 	CHECK_FALSE(doc.parse_string(s, ".", &error));
 	CHECK_MESSAGE(error.find("image 0: bufferView 2 (byteOffset 72, byteLength 100000) lies outside buffer 0 (80 bytes)") != String::npos, error);
+}
+
+TEST_CASE("[GLTF] COLOR_0 (float, normalized byte and short) becomes ARRAY_COLOR with vertex_color_use_as_albedo, as Godot's importer") {
+	GLTFDocument doc;
+	String error;
+	REQUIRE_MESSAGE(doc.parse_string(COLOR_GLTF, ".", &error), error);
+	REQUIRE(doc.get_meshes().size() == 1);
+	const std::vector<GLTFSurfaceData> &surfaces = doc.get_meshes()[0].surfaces;
+	REQUIRE(surfaces.size() == 3);
+	REQUIRE(surfaces[0].colors.size() == 3);
+	CHECK(surfaces[0].colors[0].is_equal_approx(Color(0.25f, 0.5f, 0.75f, 1.0f)));
+	CHECK(surfaces[0].colors[1].is_equal_approx(Color(1, 0, 0, 0.5f)));
+	REQUIRE(surfaces[1].colors.size() == 3);
+	CHECK(surfaces[1].colors[0].is_equal_approx(Color(1.0f, 0.2f, 0.0f, 1.0f))); // VEC3: alpha 1.
+	CHECK(surfaces[1].colors[2].is_equal_approx(Color(10 / 255.0f, 20 / 255.0f, 30 / 255.0f, 1.0f)));
+	REQUIRE(surfaces[2].colors.size() == 3);
+	CHECK(surfaces[2].colors[0].is_equal_approx(Color(1.0f, 32768 / 65535.0f, 0.0f, 1.0f)));
+	CHECK(surfaces[2].colors[1].is_equal_approx(Color(0, 0, 1, 0)));
+	CHECK(doc.get_meshes()[0].surfaces[0].material == 0);
+	CHECK(doc.get_meshes()[0].surfaces[1].material == -1);
+
+	// A file without COLOR_0 gets no colours.
+	GLTFDocument plain;
+	REQUIRE_MESSAGE(plain.parse_string(TRIANGLE_GLTF, ".", &error), error);
+	CHECK(plain.get_meshes()[0].surfaces[0].colors.empty());
+
+	// Unsupported encodings are refused with the attribute named.
+	for (const char *bad : { "\"componentType\": 5121, \"normalized\": true, \"count\": 3, \"type\": \"VEC3\"},\n  {\"bufferView\": 3, \"componentType\": 5123, \"count\": 3, \"type\": \"SCALAR\"",
+				 "\"componentType\": 5121, \"normalized\": true, \"count\": 3, \"type\": \"VEC3\"},\n  {\"bufferView\": 3, \"componentType\": 5122, \"count\": 3, \"type\": \"VEC4\"" }) {
+		const String good = "\"componentType\": 5121, \"normalized\": true, \"count\": 3, \"type\": \"VEC3\"},\n  {\"bufferView\": 3, \"componentType\": 5123, \"count\": 3, \"type\": \"VEC4\"";
+		String text = String(COLOR_GLTF);
+		const size_t at = text.find(good);
+		REQUIRE(at != String::npos);
+		text.replace(at, good.size(), bad);
+		GLTFDocument broken;
+		CHECK_FALSE(broken.parse_string(text, ".", &error));
+		CHECK(error.find("COLOR_0") != String::npos);
+	}
 }
 
 } // namespace TestGLTFDocument
@@ -232,6 +297,44 @@ TEST_CASE("[GLTF][SceneTree] a .tscn instances a glTF file as MeshInstance3D nod
 	delete partial;
 	uninitialize_gltf_module();
 	std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("[GLTF][SceneTree] a primitive with COLOR_0 draws its colours: ARRAY_COLOR and vertex_color_use_as_albedo (linear)") {
+	SceneTest::DummyServer server;
+	GLTFDocument doc;
+	String error;
+	REQUIRE_MESSAGE(doc.parse_string(COLOR_GLTF, ".", &error), error);
+	Node *root = gltf_generate_scene(doc, "Colored", &error);
+	REQUIRE_MESSAGE(root != nullptr, error);
+	MeshInstance3D *tri = Object::cast_to<MeshInstance3D>(root->get_node_or_null("Tri"));
+	REQUIRE(tri != nullptr);
+	Ref<ArrayMesh> mesh = tri->get_mesh();
+	REQUIRE(mesh.is_valid());
+	REQUIRE(mesh->get_surface_count() == 3);
+	RS::SurfaceData s = mesh->surface_get_arrays(0);
+	REQUIRE(s.colors.size() == 3);
+	CHECK(s.colors[0].is_equal_approx(Color(0.25f, 0.5f, 0.75f, 1.0f)));
+	for (int i = 0; i < 3; i++) {
+		Ref<StandardMaterial3D> mat = mesh->surface_get_material(i);
+		REQUIRE(mat.is_valid());
+		CHECK(mat->get_flag_vertex_color_use_as_albedo());
+		CHECK_FALSE(mat->get_flag_vertex_color_is_srgb()); // glTF colours are linear.
+	}
+	CHECK(mesh->surface_get_material(0) == mesh->surface_get_material(2)); // The file's material, flagged.
+	CHECK(mesh->surface_get_material(1) != mesh->surface_get_material(0)); // A default one for no material.
+	delete root;
+
+	// Without COLOR_0 the material keeps its flag off.
+	GLTFDocument plain;
+	REQUIRE_MESSAGE(plain.parse_string(TRIANGLE_GLTF, ".", &error), error);
+	Node *plain_root = gltf_generate_scene(plain, "Plain", &error);
+	REQUIRE(plain_root != nullptr);
+	Ref<ArrayMesh> plain_mesh = Object::cast_to<MeshInstance3D>(plain_root->get_node_or_null("Tri"))->get_mesh();
+	Ref<StandardMaterial3D> plain_mat = plain_mesh->surface_get_material(0);
+	REQUIRE(plain_mat.is_valid());
+	CHECK_FALSE(plain_mat->get_flag_vertex_color_use_as_albedo());
+	CHECK(plain_mesh->surface_get_arrays(0).colors.empty());
+	delete plain_root;
 }
 
 } // namespace TestGLTFDocument

@@ -9,6 +9,7 @@
 
 #include "core/error/error_macros.h"
 #include "core/templates/rid_owner.h"
+#include "scene/3d/geometry_instance_3d.h"
 #include "scene/resources/primitive_meshes.h"
 #include "servers/rendering/dummy/rasterizer_dummy.h"
 #include "servers/rendering/rendering_server_default.h"
@@ -360,6 +361,44 @@ TEST_CASE("[SceneCull] a shadowed sun adds the meshes the camera does not see to
 	CHECK(data.shadow_geometry[0].instance == behind);
 	f.rs->light_set_shadow_caster_mask(sun, 0u);
 	CHECK(f.cull_scene().shadow_geometry.empty());
+}
+
+TEST_CASE("[SceneCull] cast_shadow: Off leaves the shadow casters, Shadows Only reaches the renderer flagged, bad values are refused") {
+	CullFixture f;
+	RID front = f.add_instance(f.mesh, at(Vector3(0, 0, -5)));
+	RID behind = f.add_instance(f.mesh, at(Vector3(0, 0, 5))); // Behind the camera: only a shadow caster.
+	RID sun;
+	f.add_light(RS::LIGHT_DIRECTIONAL, 1.0f, Transform3D(), &sun);
+	f.rs->light_set_shadow(sun, true);
+	RenderSceneData data = f.cull_scene();
+	REQUIRE(data.geometry.size() == 1);
+	CHECK(data.geometry[0].cast_shadows == RS::SHADOW_CASTING_SETTING_ON); // Godot's default.
+	REQUIRE(data.shadow_geometry.size() == 1);
+
+	f.rs->instance_geometry_set_cast_shadows_setting(behind, RS::SHADOW_CASTING_SETTING_OFF);
+	f.rs->instance_geometry_set_cast_shadows_setting(front, RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY);
+	data = f.cull_scene();
+	CHECK(data.shadow_geometry.empty()); // Off: not a caster of the sun.
+	REQUIRE(data.geometry.size() == 1);
+	CHECK(data.geometry[0].cast_shadows == RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY); // The colour passes skip it.
+
+	{
+		ErrorCatcher errors;
+		f.rs->instance_geometry_set_cast_shadows_setting(front, RS::ShadowCastingSetting(7));
+		CHECK(errors.messages.size() == 1);
+		CHECK(errors.contains("cast_shadow must be 0..3"));
+	}
+	CHECK(f.cull_scene().geometry[0].cast_shadows == RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY); // Unchanged.
+
+	// The node property reaches the server (GeometryInstance3D::cast_shadow).
+	GeometryInstance3D node;
+	node.set_base(f.mesh);
+	f.rs->instance_set_scenario(node.get_instance(), f.scenario);
+	f.rs->instance_set_transform(node.get_instance(), at(Vector3(0, 0, 6)));
+	CHECK(f.cull_scene().shadow_geometry.size() == 1);
+	node.set_cast_shadows_setting(GeometryInstance3D::SHADOW_CASTING_SETTING_OFF);
+	CHECK(f.cull_scene().shadow_geometry.empty());
+	f.rs->instance_set_scenario(node.get_instance(), RID());
 }
 
 TEST_CASE("[SceneCull] the spot cone bound culls a spot pointing away whose range sphere is visible") {

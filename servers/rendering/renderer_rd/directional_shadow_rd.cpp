@@ -11,6 +11,7 @@
 #include "core/error/error_macros.h"
 #include "core/math/math_funcs.h"
 #include "core/math/vector4.h"
+#include "servers/rendering/renderer_rd/effects/shadow_casters_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 
@@ -23,8 +24,10 @@ namespace {
 
 struct DepthPushConstant {
 	float clip_from_model[16];
+	uint32_t has_color[4]; // ALPHA_TEST variant only (the plain one's push constant ends before it).
 };
-static_assert(sizeof(DepthPushConstant) == 64, "Must match shaders/directional_shadow_depth.glsl.");
+static_assert(sizeof(DepthPushConstant) == 80, "Must match shaders/directional_shadow_depth.glsl.");
+static constexpr uint32_t DEPTH_PUSH_CONSTANT_OPAQUE_SIZE = 64; // clip_from_model only.
 
 uint32_t _split_count(RS::LightDirectionalShadowMode p_mode) {
 	switch (p_mode) {
@@ -56,6 +59,22 @@ void _split_rect(uint32_t p_count, uint32_t p_split, const uint32_t p_region[3],
 		r_rect[2] = s / 2;
 		r_rect[3] = s / 2;
 	}
+}
+
+RD::PipelineRasterizationState _raster_state() {
+	RD::PipelineRasterizationState raster;
+	raster.cull_mode = RD::POLYGON_CULL_DISABLED; // Both sides cast (single-sided planes too).
+	// Pancaking: casters nearer the light than the box's near side flatten onto depth 0 per fragment.
+	raster.enable_depth_clamp = true;
+	return raster;
+}
+
+RD::PipelineDepthStencilState _depth_state() {
+	RD::PipelineDepthStencilState depth;
+	depth.enable_depth_test = true;
+	depth.enable_depth_write = true;
+	depth.depth_compare_operator = RD::COMPARE_OP_LESS;
+	return depth;
 }
 
 } // namespace
@@ -188,7 +207,7 @@ bool DirectionalShadowRD::_ensure_resources() {
 		compare_sampler = rd->sampler_create(cs);
 		nearest_sampler = rd->sampler_create(RD::SamplerState());
 		ERR_FAIL_COND_V_MSG(!compare_sampler.is_valid() || !nearest_sampler.is_valid(), false, "DirectionalShadowRD: samplers could not be created.");
-		ERR_FAIL_COND_V_MSG(!depth_shader.initialize("directional_shadow_depth.glsl", { "" }), false, "DirectionalShadowRD: cannot load shaders/directional_shadow_depth.glsl.");
+		ERR_FAIL_COND_V_MSG(!depth_shader.initialize("directional_shadow_depth.glsl", ShadowCastersRD::get_variant_defines()), false, "DirectionalShadowRD: cannot load shaders/directional_shadow_depth.glsl.");
 	}
 	if (!atlas.is_valid()) {
 		RD::TextureFormat tf;
@@ -204,17 +223,9 @@ bool DirectionalShadowRD::_ensure_resources() {
 		ERR_FAIL_COND_V_MSG(!framebuffer.is_valid(), false, "DirectionalShadowRD: the atlas framebuffer could not be created.");
 	}
 	if (!pipeline.is_valid()) {
-		RD::PipelineRasterizationState raster;
-		raster.cull_mode = RD::POLYGON_CULL_DISABLED; // Both sides cast (single-sided planes too).
-		// Pancaking: casters nearer the light than the box's near side flatten onto depth 0 per fragment.
-		raster.enable_depth_clamp = true;
-		RD::PipelineDepthStencilState depth;
-		depth.enable_depth_test = true;
-		depth.enable_depth_write = true;
-		depth.depth_compare_operator = RD::COMPARE_OP_LESS;
-		RID shader = depth_shader.version_get_shader(0);
+		RID shader = depth_shader.version_get_shader(ShadowCastersRD::DEPTH_VARIANT_OPAQUE);
 		ERR_FAIL_COND_V_MSG(!shader.is_valid(), false, "DirectionalShadowRD: the depth shader failed to compile: " + depth_shader.get_last_error());
-		pipeline = rd->render_pipeline_create(shader, rd->framebuffer_get_format(framebuffer), mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, RD::PipelineColorBlendState::create_disabled(0));
+		pipeline = rd->render_pipeline_create(shader, rd->framebuffer_get_format(framebuffer), mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, _raster_state(), _depth_state(), RD::PipelineColorBlendState::create_disabled(0));
 		ERR_FAIL_COND_V_MSG(!pipeline.is_valid(), false, "DirectionalShadowRD: the depth pipeline could not be created.");
 	}
 	return true;
@@ -223,13 +234,14 @@ bool DirectionalShadowRD::_ensure_resources() {
 void DirectionalShadowRD::finalize() {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	if (rd && rd->is_initialized()) {
-		for (RID *r : { &pipeline, &atlas, &data_buffer, &compare_sampler, &nearest_sampler }) {
+		for (RID *r : { &pipeline, &alpha_pipeline, &atlas, &data_buffer, &compare_sampler, &nearest_sampler }) {
 			if (r->is_valid()) {
 				rd->free(*r);
 			}
 		}
 	}
 	pipeline = RID();
+	alpha_pipeline = RID();
 	atlas = RID();
 	framebuffer = RID();
 	data_buffer = RID();
@@ -277,6 +289,9 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 			// Without an instance RID (scenes built by hand) only the visible list counts.
 			if (g.instance.is_valid() ? !seen.insert(g.instance.get_id()).second : list != &p_data.geometry) {
 				continue;
+			}
+			if (g.cast_shadows == RS::SHADOW_CASTING_SETTING_OFF) {
+				continue; // GeometryInstance3D::cast_shadow Off.
 			}
 			candidates.push_back(&g);
 		}
@@ -385,34 +400,42 @@ bool DirectionalShadowRD::prepare(const RenderSceneData &p_data, const Transform
 	return true;
 }
 
-void DirectionalShadowRD::render_shadows() {
+void DirectionalShadowRD::render_shadows(RID p_material_shader) {
 	last_draw_count = 0;
 	if (passes.empty() || !pipeline.is_valid()) {
 		return;
 	}
 	RenderingDevice *rd = RenderingDevice::get_singleton();
+	// What each caster casts (ShadowCastersRD: blended surfaces nothing, alpha-scissor ones through the
+	// ALPHA_TEST variant with their material set), resolved before any draw list: the sets record buffer updates.
+	ShadowCastersRD::FrameSurfaces casters;
+	for (const Pass &pass : passes) {
+		for (const RenderSceneData::GeometryInstance *g : pass.casters) {
+			casters.add(g, mesh_storage, material_storage, p_material_shader);
+		}
+	}
+	if (casters.any_alpha_test && !alpha_pipeline.is_valid()) {
+		RID shader = depth_shader.version_get_shader(ShadowCastersRD::DEPTH_VARIANT_ALPHA_TEST);
+		ERR_FAIL_COND_MSG(!shader.is_valid(), "DirectionalShadowRD: the depth shader (ALPHA_TEST) failed to compile: " + depth_shader.get_last_error());
+		alpha_pipeline = rd->render_pipeline_create(shader, rd->framebuffer_get_format(framebuffer), mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, _raster_state(), _depth_state(), RD::PipelineColorBlendState::create_disabled(0));
+		ERR_FAIL_COND_MSG(!alpha_pipeline.is_valid(), "DirectionalShadowRD: the depth pipeline (ALPHA_TEST) could not be created.");
+	}
 	for (const Pass &pass : passes) {
 		const RD::Rect rect(int32_t(pass.rect[0]), int32_t(pass.rect[1]), pass.rect[2], pass.rect[3]);
 		RD::DrawListID list = rd->draw_list_begin(framebuffer, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f, rect);
 		rd->draw_list_bind_render_pipeline(list, pipeline);
 		rd->draw_list_set_viewport(list, rect);
+		bool alpha_bound = false;
 		DepthPushConstant pc;
+		memset(&pc, 0, sizeof(pc));
 		for (const RenderSceneData::GeometryInstance *g : pass.casters) {
-			const int surfaces = mesh_storage->owns_mesh(g->mesh) ? mesh_storage->mesh_get_surface_count(g->mesh) : 0;
 			Projection::from_transform(pass.clip_from_world * g->transform).to_floats(pc.clip_from_model);
-			for (int s = 0; s < surfaces; s++) {
-				const RendererRD::MeshStorage::SurfaceGPU *gpu = mesh_storage->mesh_surface_get_gpu(g->mesh, s);
-				if (!gpu) {
-					continue;
-				}
-				rd->draw_list_bind_vertex_array(list, gpu->vertex_array);
-				rd->draw_list_set_push_constant(list, &pc, sizeof(pc));
-				if (gpu->index_array.is_valid()) {
-					rd->draw_list_bind_index_array(list, gpu->index_array);
-					rd->draw_list_draw(list, true);
-				} else {
-					rd->draw_list_draw(list, false);
-				}
+			const std::pair<uint32_t, uint32_t> range = casters.get_range(g);
+			for (uint32_t i = range.first; i < range.second; i++) {
+				const ShadowCastersRD::Surface &surface = casters.surfaces[i];
+				ShadowCastersRD::bind_surface(list, surface, pipeline, alpha_pipeline, alpha_bound);
+				pc.has_color[0] = surface.gpu->has_colors ? 1u : 0u;
+				ShadowCastersRD::draw_surface(list, surface, &pc, surface.alpha_test ? uint32_t(sizeof(pc)) : DEPTH_PUSH_CONSTANT_OPAQUE_SIZE);
 				last_draw_count++;
 			}
 		}

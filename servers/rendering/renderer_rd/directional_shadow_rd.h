@@ -38,7 +38,9 @@
 /* times shadow_blur.                                                     */
 /*                                                                        */
 /* A view without a shadowed directional light creates nothing (no       */
-/* atlas, no pipeline, no buffer) and records no pass.                    */
+/* atlas, no pipeline, no buffer) and records no pass. What each caster   */
+/* surface casts (nothing when blended, a cut-out when alpha scissor) is  */
+/* ShadowCastersRD's rule (effects/shadow_casters_rd.h).                  */
 
 #pragma once
 
@@ -54,6 +56,7 @@
 
 namespace RendererRD {
 class LightStorage;
+class MaterialStorage;
 class MeshStorage;
 } // namespace RendererRD
 
@@ -125,10 +128,12 @@ public:
 private:
 	RendererRD::LightStorage *light_storage = nullptr;
 	RendererRD::MeshStorage *mesh_storage = nullptr;
-	ShaderRD depth_shader; // Loaded on the first shadowed frame.
+	RendererRD::MaterialStorage *material_storage = nullptr;
+	ShaderRD depth_shader; // Loaded on the first shadowed frame; variants: ShadowCastersRD::DepthVariant.
 	RID atlas; // ATLAS_FORMAT, atlas_size^2.
 	RID framebuffer;
 	RID pipeline;
+	RID alpha_pipeline; // ALPHA_TEST variant: made with the first alpha-scissor caster.
 	RID data_buffer; // ShadowBlock, uniform buffer.
 	RID compare_sampler; // Linear, compare LESS_OR_EQUAL.
 	RID nearest_sampler; // Nearest, clamp (blocker search).
@@ -168,17 +173,22 @@ public:
 	uint32_t get_frame_pass_count() const { return uint32_t(passes.size()); }
 	uint64_t get_last_draw_count() const { return last_draw_count; }
 	const ShadowBlock &get_block() const { return block; }
-	// One depth pass per split of this frame (outside any draw list).
-	void render_shadows();
+	// One depth pass per split of this frame (outside any draw list). p_material_shader: the scene's colour
+	// shader, whose set 1 layout (shaders/material_block_inc.glsl) the alpha-scissor casters' material sets
+	// are made for.
+	void render_shadows(RID p_material_shader);
+	// True once an alpha-scissor caster compiled the ALPHA_TEST depth variant.
+	bool is_alpha_test_compiled() const { return depth_shader.is_variant_created(1); }
 
 	RID get_atlas_texture() const { return atlas; }
 	RID get_data_buffer() const { return data_buffer; }
 	RID get_compare_sampler() const { return compare_sampler; }
 	RID get_nearest_sampler() const { return nearest_sampler; }
 
-	void initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage) {
+	void initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage) {
 		light_storage = p_light_storage;
 		mesh_storage = p_mesh_storage;
+		material_storage = p_material_storage;
 	}
 	void finalize();
 	~DirectionalShadowRD() { finalize(); }

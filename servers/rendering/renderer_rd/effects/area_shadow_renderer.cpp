@@ -8,6 +8,7 @@
 
 #include "core/error/error_macros.h"
 #include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
+#include "servers/rendering/renderer_rd/effects/shadow_casters_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
 #include "servers/rendering/renderer_rd/storage_rd/mesh_storage.h"
 
@@ -47,15 +48,16 @@ RS::AreaShadowFilter AreaShadowRendererRD::get_project_filter() {
 	return RS::AreaShadowFilter(v);
 }
 
-bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, uint32_t p_max_lights) {
+bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage, uint32_t p_max_lights) {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	ERR_FAIL_COND_V_MSG(!rd || !rd->is_initialized(), false, "AreaShadowRendererRD::initialize() needs an initialized RenderingDevice.");
-	ERR_FAIL_COND_V_MSG(!p_light_storage || !p_mesh_storage, false, "AreaShadowRendererRD needs the light and mesh storages.");
+	ERR_FAIL_COND_V_MSG(!p_light_storage || !p_mesh_storage || !p_material_storage, false, "AreaShadowRendererRD needs the light, mesh and material storages.");
 	if (initialized) {
 		return true;
 	}
 	light_storage = p_light_storage;
 	mesh_storage = p_mesh_storage;
+	material_storage = p_material_storage;
 	max_lights = std::max(p_max_lights, 1u);
 	sample_filter = get_project_filter() == RS::AREA_SHADOW_FILTER_PENUMBRA;
 	// Project settings for the default atlas (per-viewport sizes come from RS::area_shadow_atlas_set_size).
@@ -88,7 +90,7 @@ bool AreaShadowRendererRD::initialize(RendererRD::LightStorage *p_light_storage,
 	cs.compare_op = RD::COMPARE_OP_LESS_OR_EQUAL;
 	compare_sampler = rd->sampler_create(cs);
 	ERR_FAIL_COND_V_MSG(!data_buffer.is_valid() || !dummy_texture.is_valid() || !sampler.is_valid() || !compare_sampler.is_valid(), false, "AreaShadowRendererRD: GPU resources could not be created.");
-	ERR_FAIL_COND_V_MSG(!depth_shader.initialize("area_shadow_depth.glsl", { "" }), false, "AreaShadowRendererRD: cannot load shaders/area_shadow_depth.glsl.");
+	ERR_FAIL_COND_V_MSG(!depth_shader.initialize("area_shadow_depth.glsl", ShadowCastersRD::get_variant_defines()), false, "AreaShadowRendererRD: cannot load shaders/area_shadow_depth.glsl.");
 	initialized = true;
 	return true;
 }
@@ -101,6 +103,9 @@ void AreaShadowRendererRD::finalize() {
 		}
 		if (pipeline.is_valid()) {
 			rd->free(pipeline);
+		}
+		if (alpha_pipeline.is_valid()) {
+			rd->free(alpha_pipeline);
 		}
 		if (dummy_texture.is_valid()) {
 			rd->free(dummy_texture);
@@ -118,6 +123,7 @@ void AreaShadowRendererRD::finalize() {
 	atlases.clear();
 	current = nullptr;
 	pipeline = RID();
+	alpha_pipeline = RID();
 	dummy_texture = RID();
 	sampler = RID();
 	compare_sampler = RID();
@@ -309,6 +315,10 @@ bool AreaShadowRendererRD::_ensure_atlas(AtlasInstance &p_atlas) {
 		if (pipeline.is_valid()) {
 			rd->free(pipeline);
 		}
+		if (alpha_pipeline.is_valid()) {
+			rd->free(alpha_pipeline); // Made again, for the new format, by the next alpha-scissor caster.
+			alpha_pipeline = RID();
+		}
 		RD::PipelineRasterizationState raster;
 		raster.cull_mode = RD::POLYGON_CULL_DISABLED; // Both sides cast (single-sided planes too).
 		RD::PipelineDepthStencilState depth;
@@ -424,6 +434,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			uint64_t ids[2] = { gi->instance.get_id(), gi->mesh.get_id() };
 			_hash_bytes(hash, ids, sizeof(ids));
 			_hash_transform(hash, gi->transform);
+			ShadowCastersRD::hash_materials(hash, *gi, mesh_storage, material_storage); // Blended: none; scissor: its cut.
 		}
 		RS::LightAreaShadowMode mode = light_storage->light_area_get_shadow_mode(li.light);
 		if (mode == RS::LIGHT_AREA_SHADOW_ADAPTIVE) {
@@ -584,7 +595,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 	}
 }
 
-void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
+void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data, RID p_material_shader) {
 	(void)p_data; // The casters were resolved by prepare() (pointers into p_data).
 	last_draw_count = 0;
 	if (!current) {
@@ -598,6 +609,30 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 	}
 	const std::map<uint64_t, LightFrame> &frame_lights = current->frame_lights;
 	RenderingDevice *rd = RenderingDevice::get_singleton();
+	// What each drawn caster casts (ShadowCastersRD: blended surfaces nothing, alpha-scissor ones through the
+	// ALPHA_TEST variant with their material set), resolved before any draw list: the sets record buffer updates.
+	ShadowCastersRD::FrameSurfaces casters;
+	for (const AreaShadowAtlas::DrawRequest &req : draws) {
+		auto it = frame_lights.find(req.light);
+		if (it == frame_lights.end()) {
+			continue;
+		}
+		for (const RenderSceneData::GeometryInstance *caster : it->second.casters) {
+			casters.add(caster, mesh_storage, material_storage, p_material_shader);
+		}
+	}
+	if (casters.any_alpha_test && !alpha_pipeline.is_valid()) {
+		RID shader = depth_shader.version_get_shader(ShadowCastersRD::DEPTH_VARIANT_ALPHA_TEST);
+		ERR_FAIL_COND_MSG(!shader.is_valid(), "Area shadow depth shader (ALPHA_TEST) failed to compile: " + depth_shader.get_last_error());
+		RD::PipelineRasterizationState raster;
+		raster.cull_mode = RD::POLYGON_CULL_DISABLED; // As the opaque pipeline (_ensure_atlas()).
+		RD::PipelineDepthStencilState depth;
+		depth.enable_depth_test = true;
+		depth.enable_depth_write = true;
+		depth.depth_compare_operator = RD::COMPARE_OP_LESS;
+		alpha_pipeline = rd->render_pipeline_create(shader, pipeline_format, mesh_storage->get_vertex_format(), RD::RENDER_PRIMITIVE_TRIANGLES, raster, depth, RD::PipelineColorBlendState::create_disabled(0));
+		ERR_FAIL_COND_MSG(!alpha_pipeline.is_valid(), "Area shadow depth pipeline (ALPHA_TEST) creation failed.");
+	}
 	for (const AreaShadowAtlas::DrawRequest &req : draws) {
 		auto it = frame_lights.find(req.light);
 		ERR_CONTINUE(it == frame_lights.end());
@@ -612,6 +647,7 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 		pc.params[3] = 0.0f;
 		RD::DrawListID list = rd->draw_list_begin(current->framebuffer, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f, RD::Rect(int32_t(r.x), int32_t(r.y), r.size, r.size));
 		rd->draw_list_bind_render_pipeline(list, pipeline);
+		bool alpha_bound = false;
 		for (uint32_t quadrant = 0; quadrant < 4; quadrant++) {
 			rd->draw_list_set_viewport(list, RD::Rect(int32_t(r.x + (quadrant & 1u) * q), int32_t(r.y + (quadrant >> 1u) * q), q, q));
 			Vector3 right, up, forward;
@@ -624,20 +660,12 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 			for (const RenderSceneData::GeometryInstance *caster : lf.casters) {
 				const RenderSceneData::GeometryInstance &gi = *caster;
 				Projection::from_transform(octant_from_world * gi.transform).to_floats(pc.octant_view_from_model);
-				int surfaces = mesh_storage->mesh_get_surface_count(gi.mesh);
-				for (int s = 0; s < surfaces; s++) {
-					const RendererRD::MeshStorage::SurfaceGPU *gpu = mesh_storage->mesh_surface_get_gpu(gi.mesh, s);
-					if (!gpu) {
-						continue;
-					}
-					rd->draw_list_bind_vertex_array(list, gpu->vertex_array);
-					rd->draw_list_set_push_constant(list, &pc, sizeof(pc));
-					if (gpu->index_array.is_valid()) {
-						rd->draw_list_bind_index_array(list, gpu->index_array);
-						rd->draw_list_draw(list, true);
-					} else {
-						rd->draw_list_draw(list, false);
-					}
+				const std::pair<uint32_t, uint32_t> range = casters.get_range(caster);
+				for (uint32_t i = range.first; i < range.second; i++) {
+					const ShadowCastersRD::Surface &surface = casters.surfaces[i];
+					ShadowCastersRD::bind_surface(list, surface, pipeline, alpha_pipeline, alpha_bound);
+					pc.params[3] = surface.alpha_test && surface.gpu->has_colors ? 1.0f : 0.0f;
+					ShadowCastersRD::draw_surface(list, surface, &pc, sizeof(pc));
 				}
 			}
 		}

@@ -22,7 +22,9 @@
 /* dispatch_adaptive() (reprojection + banding of this frame's tests).    */
 /* Casters: LightInstance::shadow_casters from RendererSceneCull (every   */
 /* instance in the light's influence box, on screen or not); hand-built   */
-/* scenes fall back to the visible geometry in the box.                   */
+/* scenes fall back to the visible geometry in the box. What each caster  */
+/* surface casts (nothing when blended, a cut-out when alpha scissor) is  */
+/* ShadowCastersRD's rule (effects/shadow_casters_rd.h).                  */
 
 #pragma once
 
@@ -37,6 +39,7 @@
 
 namespace RendererRD {
 class LightStorage;
+class MaterialStorage;
 class MeshStorage;
 } // namespace RendererRD
 
@@ -82,7 +85,7 @@ public:
 	// Mirror of the DrawData push constant of shaders/area_shadow_depth.glsl.
 	struct DepthPushConstant {
 		float octant_view_from_model[16];
-		float params[4]; // depth_scale, z_near, z_far, 0.
+		float params[4]; // depth_scale, z_near, z_far, 1 if the surface has ARRAY_COLOR (ALPHA_TEST variant).
 	};
 
 	static constexpr RD::DataFormat ATLAS_FORMAT = RD::DATA_FORMAT_D32_SFLOAT;
@@ -100,8 +103,10 @@ private:
 
 	RendererRD::LightStorage *light_storage = nullptr;
 	RendererRD::MeshStorage *mesh_storage = nullptr;
-	ShaderRD depth_shader;
+	RendererRD::MaterialStorage *material_storage = nullptr;
+	ShaderRD depth_shader; // Variants: ShadowCastersRD::DepthVariant.
 	RID pipeline;
+	RID alpha_pipeline; // ALPHA_TEST variant: made with the first alpha-scissor caster.
 	RD::FramebufferFormatID pipeline_format = 0;
 	RID dummy_texture; // Bound when no atlas exists yet.
 	RID sampler;
@@ -158,7 +163,7 @@ private:
 public:
 	/* Public Methods */
 
-	bool initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, uint32_t p_max_lights);
+	bool initialize(RendererRD::LightStorage *p_light_storage, RendererRD::MeshStorage *p_mesh_storage, RendererRD::MaterialStorage *p_material_storage, uint32_t p_max_lights);
 	void finalize();
 	bool is_initialized() const { return initialized; }
 
@@ -184,8 +189,12 @@ public:
 	// by p_data.area_shadow_atlas_size/_subdivision when non-zero). Records a buffer update: call outside lists.
 	void prepare(const RenderSceneData &p_data, const std::vector<uint32_t> &p_area_sources, const Transform3D &p_view_from_world, const Projection &p_clip_from_world, RID p_owner = RID());
 	// Records the depth passes of the maps listed by prepare() (before the scene passes). p_data must be
-	// the RenderSceneData given to prepare() (the casters point into it).
-	void render_shadows(const RenderSceneData &p_data);
+	// the RenderSceneData given to prepare() (the casters point into it). p_material_shader: the scene's
+	// colour shader, whose set 1 layout (shaders/material_block_inc.glsl) the alpha-scissor casters' material
+	// sets are made for.
+	void render_shadows(const RenderSceneData &p_data, RID p_material_shader);
+	// True once an alpha-scissor caster compiled the ALPHA_TEST depth variant.
+	bool is_alpha_test_compiled() const { return depth_shader.is_variant_created(1); }
 	// After the camera depth p_depth (p_width x p_height, written with the depth-corrected p_clip_from_view)
 	// is complete: records the reprojection and banding passes of this frame's ADAPTIVE tests, with GPU
 	// timestamps p_timestamp_prefix + "area_reprojection" / "area_banding" when there is work. Returns the

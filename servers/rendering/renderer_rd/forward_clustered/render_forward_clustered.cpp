@@ -81,8 +81,8 @@ bool RenderForwardClustered::initialize(uint32_t p_max_lights_per_type) {
 		ERR_FAIL_COND_V_MSG(!material_storage->initialize_gpu(), false, "RenderForwardClustered: material storage GPU setup failed.");
 	}
 	light_storage->set_area_texture_source(material_storage); // area_texture texels (the atlas copies them on change).
-	ERR_FAIL_COND_V_MSG(!area_shadows.initialize(light_storage, mesh_storage, light_storage->get_max_lights()), false, "RenderForwardClustered: area shadows failed to initialize.");
-	directional_shadows.initialize(light_storage, mesh_storage); // GPU resources on the first shadowed sun.
+	ERR_FAIL_COND_V_MSG(!area_shadows.initialize(light_storage, mesh_storage, material_storage, light_storage->get_max_lights()), false, "RenderForwardClustered: area shadows failed to initialize.");
+	directional_shadows.initialize(light_storage, mesh_storage, material_storage); // GPU resources on the first shadowed sun.
 	scene_ubo = rd->uniform_buffer_create(sizeof(SceneDataUBO));
 	rd->set_resource_name(scene_ubo, "RenderForwardClustered scene data");
 	initialized = true;
@@ -616,7 +616,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	RID color_shader = scene_shader.version_get_shader(SCENE_SHADER_COLOR);
 	for (const RenderSceneData::GeometryInstance &g : p_data.geometry) {
 		int surface_count = mesh_storage->owns_mesh(g.mesh) ? mesh_storage->mesh_get_surface_count(g.mesh) : 0;
-		if (surface_count == 0) {
+		if (surface_count == 0 || g.cast_shadows == RS::SHADOW_CASTING_SETTING_SHADOWS_ONLY) { // Shadows Only: cast, not drawn.
 			continue;
 		}
 		DrawPushConstant pc;
@@ -676,7 +676,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		rd->draw_command_begin_label("Render Area Shadow Maps");
 	}
 	if (area_code) {
-		area_shadows.render_shadows(p_data);
+		area_shadows.render_shadows(p_data, color_shader); // Alpha-scissor casters share the colour pass's material sets.
 	}
 	if (area_labels) {
 		rd->draw_command_end_label();
@@ -688,7 +688,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	// 0b. Directional shadow splits (only with a shadowed directional light in view).
 	if (directional_shadows.has_frame_shadows()) {
 		rd->draw_command_begin_label("Render Directional Shadows");
-		directional_shadows.render_shadows();
+		directional_shadows.render_shadows(color_shader);
 		rd->draw_command_end_label();
 		rd->capture_timestamp(prefix + "directional_shadows");
 	}

@@ -20,7 +20,7 @@ namespace RendererRD {
 
 class MaterialStorage : public RendererMaterialStorage {
 public:
-	// Must match MATERIAL_FLAG_* (shaders/forward_clustered/scene_forward_clustered_inc.glsl).
+	// Must match MATERIAL_FLAG_* (shaders/material_block_inc.glsl).
 	enum MaterialFlags {
 		MATERIAL_FLAG_ALBEDO_TEXTURE = 1,
 		MATERIAL_FLAG_NORMAL_MAP = 2,
@@ -34,7 +34,7 @@ public:
 	};
 
 	// Mirror of MaterialBlock (set 1, binding 0, std140) in
-	// shaders/forward_clustered/scene_forward_clustered_inc.glsl. 112 bytes.
+	// shaders/material_block_inc.glsl. 112 bytes.
 	struct MaterialUBO {
 		float albedo[4]; // Linear rgb, alpha.
 		float emission[4]; // Linear rgb * emission_energy, a unused.
