@@ -515,6 +515,10 @@ static PenumbraScene::ShadowError shape_shadow_error(RS::LightAreaShape p_shape,
 	CHECK(shadows.get_surface_warning_count() == warnings + 1);
 	f.render();
 	CHECK(shadows.get_surface_warning_count() == warnings + 1);
+	// The finer grid, for doc/shadows.md (58 distinct points of 81).
+	f.light_storage.light_area_set_shadow_grid(f.light, 9);
+	const PenumbraScene::ShadowError fine = shadow_error(open, f.render(), ref_open, ref_shadowed);
+	MESSAGE("FIXED 9 x 9: rel-RMSE ", fine.rel_rmse, ", p99 ", fine.p99, ", ", shadows.get_last_draw_count(), " maps drawn");
 	return shadow_error(open, shadowed, ref_open, ref_shadowed);
 }
 
@@ -530,19 +534,19 @@ TEST_CASE("[AreaLight3D][Shadows] a sphere light shadows receivers on every side
 		double mean = 1.0, mean_ref = 0.0;
 		PenumbraScene::ShadowError e = shape_shadow_error(RS::LIGHT_AREA_SHAPE_SPHERE, size, Transform3D(Basis::from_axis_angle(Vector3(1, 0, 0), float(Math::PI) * 0.5f), at), mean, mean_ref);
 		MESSAGE("sphere, floor behind the light: rel-RMSE ", e.rel_rmse, ", p99 ", e.p99, ", RMSE ", e.rmse, ", mean visibility where the reference's is < 0.5: ", mean, " (reference ", mean_ref, ")", " over ", e.pixels, " shadow pixels");
-		// Measured 0.146 and 0.371 vs 0.270 (doc/shadows.md "Sphere and tube lights"); with the maps of the
+		// Measured 0.113 and 0.310 vs 0.270 (doc/shadows.md "Sphere and tube lights"); with the maps of the
 		// half space in front only: 0.49 and 1 (no shadow at all).
-		CHECK(e.rel_rmse <= 0.22);
-		CHECK(std::abs(mean - mean_ref) <= 0.15);
+		CHECK(e.rel_rmse <= 0.17);
+		CHECK(std::abs(mean - mean_ref) <= 0.08);
 	}
 	{
 		double mean = 1.0, mean_ref = 0.0;
 		PenumbraScene::ShadowError e = shape_shadow_error(RS::LIGHT_AREA_SHAPE_SPHERE, size, Transform3D(Basis::from_axis_angle(Vector3(1, 0, 0), -float(Math::PI) * 0.5f), at), mean, mean_ref);
 		MESSAGE("sphere, floor in front of the light: rel-RMSE ", e.rel_rmse, ", p99 ", e.p99, ", RMSE ", e.rmse, ", mean visibility where the reference's is < 0.5: ", mean, " (reference ", mean_ref, ")");
-		// Measured 0.146 and 0.369 vs 0.270; the old planar points (25 on the square of the -Z disk) measured
+		// Measured 0.113 and 0.310 vs 0.270; the old planar points (25 on the square of the -Z disk) measured
 		// 0.088 and 0.311 here: 14 surface points, about half facing the floor, are coarser in front.
-		CHECK(e.rel_rmse <= 0.22);
-		CHECK(std::abs(mean - mean_ref) <= 0.15);
+		CHECK(e.rel_rmse <= 0.17);
+		CHECK(std::abs(mean - mean_ref) <= 0.08);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
@@ -556,9 +560,9 @@ TEST_CASE("[AreaLight3D][Shadows] a tube light shadows a receiver beside it (acr
 	double mean = 1.0, mean_ref = 0.0;
 	PenumbraScene::ShadowError e = shape_shadow_error(RS::LIGHT_AREA_SHAPE_TUBE, Vector2(1.2f, 0.2f), Transform3D(Basis::from_axis_angle(Vector3(0, 1, 0), -float(Math::PI) * 0.5f), Vector3(0.0f, 1.5f, 0.0f)), mean, mean_ref);
 	MESSAGE("tube, floor beside the light: rel-RMSE ", e.rel_rmse, ", p99 ", e.p99, ", RMSE ", e.rmse, ", mean visibility where the reference's is < 0.5: ", mean, " (reference ", mean_ref, ")", " over ", e.pixels, " shadow pixels");
-	// Measured 0.053 and 0.278 vs 0.325; with the maps of the half space in front only: 0.207 and 0.403.
+	// Measured 0.054 and 0.257 vs 0.325; with the maps of the half space in front only: 0.207 and 0.403.
 	CHECK(e.rel_rmse <= 0.08);
-	CHECK(std::abs(mean - mean_ref) <= 0.07);
+	CHECK(std::abs(mean - mean_ref) <= 0.10);
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }
 

@@ -39,7 +39,7 @@ uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, ui
 	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20) | (w << 24);
 }
 
-bool AreaShadowRendererRD::get_surface_sample(const Vector2 &p_uv, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample) {
+bool AreaShadowRendererRD::get_surface_sample(const Vector2 &p_uv, uint32_t p_den, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample) {
 	// Equal-area capsule map (Archimedes: 2 pi r of area per unit of axial length, on the cylinder and on
 	// the end spheres); doc/shadows.md "Sphere and tube lights".
 	const float eps = 1e-4f;
@@ -54,7 +54,8 @@ bool AreaShadowRendererRD::get_surface_sample(const Vector2 &p_uv, float p_half_
 	const float rho = std::sqrt(std::max(p_radius * p_radius - dz * dz, 0.0f));
 	const Vector3 n = (Vector3(dz, 0.0f, 0.0f) + Vector3(0.0f, std::sin(phi), -std::cos(phi)) * rho) / std::max(p_radius, 1e-6f);
 	const Vector3 x_axis(0.0f, std::cos(phi), std::sin(phi));
-	r_position = Vector3(c, 0.0f, 0.0f) + n * p_radius;
+	const Vector3 chord = pole || p_den == 0 ? Vector3() : Vector3(0.0f, std::sin(phi), -std::cos(phi)) * (rho * (1.0f - std::cos(float(Math::PI) / float(p_den))));
+	r_position = Vector3(c, 0.0f, 0.0f) + n * p_radius - chord;
 	r_light_from_sample = Basis::from_columns(x_axis, (-n).cross(x_axis), -n);
 	return true;
 }
@@ -484,6 +485,12 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 				surface_fallbacks++;
 			}
 			_hash_bytes(hash, &grid, sizeof(grid));
+			if (lf.all_around) {
+				// Surface points depend on the grid level the atlas gives (their chord shift): a level change
+				// redraws every map (the frame of the change still shows the kept ones at the old level).
+				const uint32_t level = atlas.light_get_grid(lf.key);
+				_hash_bytes(hash, &level, sizeof(level));
+			}
 			float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
 			atlas.light_set(lf.key, grid, importance, hash);
 			gpu_keys[i] = lf.key;
@@ -653,7 +660,8 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data) {
 		uint32_t q = r.size / 2;
 		Vector3 sample_local((req.uv.x - 0.5f) * lf.size.x, (req.uv.y - 0.5f) * lf.size.y, 0.0f);
 		Basis light_from_sample; // The light's own frame: rectangles, disks, one centre map.
-		if (lf.all_around && atlas.light_get_grid(req.light) >= 2 && !get_surface_sample(req.uv, lf.half_length, lf.radius, sample_local, light_from_sample)) {
+		const uint32_t grid = lf.all_around ? atlas.light_get_grid(req.light) : 0;
+		if (grid >= 2 && !get_surface_sample(req.uv, grid - 1, lf.half_length, lf.radius, sample_local, light_from_sample)) {
 			continue; // A repeated point of the surface grid (seam, pole): the shader skips its map.
 		}
 		Vector3 sample_world = lf.world_from_light.xform(sample_local);

@@ -100,12 +100,13 @@ public:
 	// u_num / den, v_num / den (4 bits each, den = grid - 1 <= 8) and the quadrature weight (8 bits,
 	// round(weight * WEIGHT_SCALE), 0 = trapezoid rule of the grid).
 	static uint32_t pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight = 0.0f);
-	// Sample point of grid uv p_uv on the capsule of half length p_half_length (along light X) and radius
-	// p_radius (a sphere: half length 0), and its frame (columns X, Y, Z in light space; Z the inward normal,
-	// so the point emits along -Z as the rectangle does): the equal-area map of area_shadow_surface_map() in
-	// shaders/area_light_shadow_inc.glsl. False for a repeated point (column u = 1, or a pole row beyond
-	// u = 0), whose map the shader skips.
-	static bool get_surface_sample(const Vector2 &p_uv, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample);
+	// Sample point of grid uv p_uv (grid p_den + 1) on the capsule of half length p_half_length (along light
+	// X) and radius p_radius (a sphere: half length 0), and its frame (columns X, Y, Z in light space; Z the
+	// inward normal, so the point emits along -Z as the rectangle does): the equal-area map of
+	// area_shadow_surface_map() in shaders/area_light_shadow_inc.glsl, the point moved in to the chord of its
+	// cell's arc. False for a repeated point (column u = 1, or a pole row beyond u = 0), whose map the shader
+	// skips.
+	static bool get_surface_sample(const Vector2 &p_uv, uint32_t p_den, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample);
 	// Sphere and tube lights whose grid was raised to MIN_SURFACE_GRID or whose ADAPTIVE mode ran as
 	// HEURISTIC, and the warnings printed about them (one per change of that count).
 	uint32_t get_surface_fallback_count() const { return surface_fallbacks; }

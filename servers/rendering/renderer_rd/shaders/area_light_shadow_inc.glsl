@@ -102,10 +102,12 @@ float area_shadow_map_weight(uint p_packed, vec2 p_uv) {
 // trapezoid rule over uv stays a quadrature of the surface. Each map covers the half space in front of its
 // own surface point (frame: X the azimuth tangent, Z the inward normal; emission along -Z, as the
 // rectangle's), where that point emits: the octant views and every lookup work in that frame unchanged.
+// The point itself sits on the chord of its cell's arc, rho (1 - cos(pi / den)) in from the surface, so that
+// its cell (below) projects as the arc does (a 90-degree arc bulges 0.29 rho out of its tangent square).
 // Column u = 1 repeats u = 0 and the rows v = 0, 1 are the two poles: those maps are skipped (false; the C++
 // side never draws them) and their weight goes to the one kept (u = 0), so r_weight is the point's share of
 // the surface (interior 1, a pole den / 2, of den^2). r_lo, r_hi: its cell (u +- 1/(2 den), v +- 1/(2 den)) laid
-// into the tangent plane: the chord rho sin(pi / den) across the azimuth (X), the meridian arc r dh / rho of
+// into the plane of that chord: its length 2 rho sin(pi / den) across the azimuth (X), the meridian arc r dh / rho of
 // its axial step dh (Y; dh on the cylinder); a pole's cell is its cap, a square of the cap's projected area.
 // One map (den 0): the light's centre facing -Z stands for the whole light (front half space only).
 // In: p_pos, p_normal in light space. Out: r_v = receiver - sample point, r_normal, in the map's frame.
@@ -137,7 +139,8 @@ bool area_shadow_surface_map(uint p_packed, vec2 p_shape, vec3 p_pos, vec3 p_nor
 	vec3 n = (vec3(dz, 0.0, 0.0) + vec3(0.0, sin(phi), -cos(phi)) * rho) / max(radius, 1e-6);
 	vec3 x_axis = vec3(0.0, cos(phi), sin(phi));
 	mat3 frame = mat3(x_axis, cross(-n, x_axis), -n); // Columns: the map's X, Y, Z in light space.
-	r_v = (p_pos - (vec3(c, 0.0, 0.0) + n * radius)) * frame;
+	vec3 chord = pole ? vec3(0.0) : vec3(0.0, sin(phi), -cos(phi)) * (rho * (1.0 - cos(3.14159265 / fden)));
+	r_v = (p_pos - (vec3(c, 0.0, 0.0) + n * radius - chord)) * frame;
 	r_normal = p_normal * frame;
 	r_weight = pole ? 0.5 * fden : 1.0;
 	float dh = 2.0 * span / fden; // Axial step of the grid.
