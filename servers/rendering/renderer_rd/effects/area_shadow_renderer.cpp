@@ -7,6 +7,7 @@
 #include "core/config/project_settings.h"
 
 #include "core/error/error_macros.h"
+#include "core/math/math_funcs.h"
 #include "servers/rendering/renderer_rd/effects/area_shadow_adaptive.h"
 #include "servers/rendering/renderer_rd/effects/shadow_casters_rd.h"
 #include "servers/rendering/renderer_rd/storage_rd/light_storage.h"
@@ -37,6 +38,27 @@ uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, ui
 		w = uint32_t(std::min(std::max(std::lround(p_weight * WEIGHT_SCALE), 1l), 255l));
 	}
 	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20) | (w << 24);
+}
+
+bool AreaShadowRendererRD::get_surface_sample(const Vector2 &p_uv, uint32_t p_den, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample) {
+	// Equal-area capsule map (Archimedes: 2 pi r of area per unit of axial length, on the cylinder and on
+	// the end spheres); doc/shadows.md "Sphere and tube lights".
+	const float eps = 1e-4f;
+	const bool pole = p_uv.y < eps || p_uv.y > 1.0f - eps;
+	if (p_uv.x > 1.0f - eps || (pole && p_uv.x > eps)) {
+		return false;
+	}
+	const float phi = 2.0f * float(Math::PI) * p_uv.x + 0.25f * float(Math::PI);
+	const float h = (2.0f * p_uv.y - 1.0f) * (p_half_length + p_radius);
+	const float c = std::min(std::max(h, -p_half_length), p_half_length);
+	const float dz = h - c;
+	const float rho = std::sqrt(std::max(p_radius * p_radius - dz * dz, 0.0f));
+	const Vector3 n = (Vector3(dz, 0.0f, 0.0f) + Vector3(0.0f, std::sin(phi), -std::cos(phi)) * rho) / std::max(p_radius, 1e-6f);
+	const Vector3 x_axis(0.0f, std::cos(phi), std::sin(phi));
+	const Vector3 chord = pole || p_den == 0 ? Vector3() : Vector3(0.0f, std::sin(phi), -std::cos(phi)) * (rho * (1.0f - std::cos(float(Math::PI) / float(p_den))));
+	r_position = Vector3(c, 0.0f, 0.0f) + n * p_radius - chord;
+	r_light_from_sample = Basis::from_columns(x_axis, (-n).cross(x_axis), -n);
+	return true;
 }
 
 RS::AreaShadowFilter AreaShadowRendererRD::get_project_filter() {
@@ -388,6 +410,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		std::vector<float> weights;
 	};
 	std::vector<AdaptiveLight> adaptive_lights;
+	surface_fallbacks = 0;
 
 	atlas.begin_frame();
 	for (uint32_t i = 0; i < count; i++) {
@@ -396,11 +419,13 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		if (!light_storage->owns_light(li.light) || !light_storage->light_has_shadow(li.light)) {
 			continue;
 		}
-		// The sample points lie on a rectangle in the light's XY plane (thesis 6.1). Other shapes use the
-		// rectangle of their extent: a disk (and a sphere's disk facing -Z) the square of its area,
-		// sqrt(pi) / 2 = 0.886 of its diameters; a tube its segment by its diameter. Sphere and tube maps,
-		// like the rectangle's, cover the half space in front of the light (local -Z).
-		Vector2 size = light_storage->light_area_get_size(li.light);
+		// The sample points lie on a rectangle in the light's XY plane (thesis 6.1); a disk uses the square
+		// of its area, sqrt(pi) / 2 = 0.886 of its diameters. A sphere or a tube emits all around: its points
+		// lie on its surface (get_surface_sample()), each map in front of its own point; `size` (the extent
+		// for the importance, the heuristic and the hash) is then the sphere's 0.886 square or the tube's
+		// segment by its diameter.
+		const Vector2 area_size = light_storage->light_area_get_size(li.light);
+		Vector2 size = area_size;
 		const RS::LightAreaShape shape = light_storage->light_area_get_shape(li.light);
 		if (shape == RS::LIGHT_AREA_SHAPE_DISK) {
 			size = size * 0.8862269f;
@@ -415,6 +440,13 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		lf.world_from_light = Transform3D(li.transform.basis.orthonormalized(), li.transform.origin);
 		lf.size = size;
 		lf.range = std::max(light_storage->light_get_param(li.light, RS::LIGHT_PARAM_RANGE), 1e-3f);
+		lf.reach = lf.range + size.length();
+		if (shape == RS::LIGHT_AREA_SHAPE_SPHERE || shape == RS::LIGHT_AREA_SHAPE_TUBE) {
+			lf.all_around = true;
+			lf.radius = 0.5f * (shape == RS::LIGHT_AREA_SHAPE_SPHERE ? area_size.x : area_size.y);
+			lf.half_length = shape == RS::LIGHT_AREA_SHAPE_TUBE ? 0.5f * area_size.x : 0.0f;
+			lf.reach = lf.range + 2.0f * (lf.half_length + lf.radius);
+		}
 		AABB box = lf.world_from_light.xform(light_storage->light_get_aabb(li.light));
 		uint64_t hash = 1469598103934665603ull;
 		_hash_transform(hash, lf.world_from_light);
@@ -437,6 +469,11 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			ShadowCastersRD::hash_materials(hash, *gi, mesh_storage, material_storage); // Blended: none; scissor: its cut.
 		}
 		RS::LightAreaShadowMode mode = light_storage->light_area_get_shadow_mode(li.light);
+		if (lf.all_around && mode == RS::LIGHT_AREA_SHADOW_ADAPTIVE) {
+			// The ADAPTIVE passes reproject points of the light's plane: a sphere or tube takes HEURISTIC's grid.
+			mode = RS::LIGHT_AREA_SHADOW_HEURISTIC;
+			surface_fallbacks++;
+		}
 		if (mode == RS::LIGHT_AREA_SHADOW_ADAPTIVE) {
 			// Its quadtree takes single free tiles after the grid lights' sharing (end_frame()).
 			AdaptiveLight al;
@@ -453,8 +490,18 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 					casters.push_back(gi->aabb);
 				}
 				grid = AreaShadowAdaptiveRD::compute_heuristic_grid(box, size, lf.range, p_data, lf.world_from_light, casters, sample_filter); // Thesis 6.5 estimate.
+				grid = lf.all_around ? std::max(grid, MIN_SURFACE_GRID) : grid;
+			} else if (lf.all_around && mode == RS::LIGHT_AREA_SHADOW_FIXED && grid < MIN_SURFACE_GRID) {
+				grid = MIN_SURFACE_GRID;
+				surface_fallbacks++;
 			}
 			_hash_bytes(hash, &grid, sizeof(grid));
+			if (lf.all_around) {
+				// Surface points depend on the grid level the atlas gives (their chord shift): a level change
+				// redraws every map (the frame of the change still shows the kept ones at the old level).
+				const uint32_t level = atlas.light_get_grid(lf.key);
+				_hash_bytes(hash, &level, sizeof(level));
+			}
 			float importance = AreaShadowAtlas::compute_importance(box, p_clip_from_world, size);
 			atlas.light_set(lf.key, grid, importance, hash);
 			gpu_keys[i] = lf.key;
@@ -462,14 +509,21 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 
 		AreaShadowData &d = data[i];
 		Projection::from_transform(lf.world_from_light.affine_inverse() * p_data.cam_transform).to_floats(d.light_from_view);
-		d.half_size[0] = size.x * 0.5f;
-		d.half_size[1] = size.y * 0.5f;
-		d.depth_scale = 1.0f / (lf.range + size.length());
+		d.half_size[0] = lf.all_around ? lf.half_length : size.x * 0.5f;
+		d.half_size[1] = lf.all_around ? lf.radius : size.y * 0.5f;
+		d.depth_scale = 1.0f / lf.reach;
 		d.bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BIAS);
 		d.normal_bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS);
 		d.pcf_radius = std::min(std::max(light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BLUR) * 2.0f, 0.0f), 8.0f);
-		d.mode = uint32_t(mode) | (sample_filter ? FLAG_SAMPLE_FILTER : 0u);
+		d.mode = uint32_t(mode) | (sample_filter ? FLAG_SAMPLE_FILTER : 0u) | (lf.all_around ? FLAG_ALL_AROUND : 0u);
 		frame_lights[lf.key] = lf;
+	}
+	if (surface_fallbacks != surface_warned) {
+		if (surface_fallbacks > 0) {
+			WARN_PRINT(vformat("%u shadowed sphere or tube area lights asked for an area_shadow_grid below %u or for ADAPTIVE: their sample points lie on the surface, where coarser grids leave some receivers facing none, and the ADAPTIVE passes reproject points of a plane; they use %u x %u (FIXED) or HEURISTIC's grid (at least %u x %u).", surface_fallbacks, MIN_SURFACE_GRID, MIN_SURFACE_GRID, MIN_SURFACE_GRID, MIN_SURFACE_GRID, MIN_SURFACE_GRID));
+			surface_warnings++;
+		}
+		surface_warned = surface_fallbacks;
 	}
 	// Trees of lights that are gone or no longer ADAPTIVE give their tiles back before the grid lights share.
 	if (inst.adaptive) {
@@ -639,11 +693,17 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data, RID p_m
 		const LightFrame &lf = it->second;
 		AreaShadowAtlas::TileRect r = AreaShadowAtlas::get_tile_rect(req.tile, atlas.get_size(), atlas.get_subdivision());
 		uint32_t q = r.size / 2;
-		Vector3 sample_world = lf.world_from_light.xform(Vector3((req.uv.x - 0.5f) * lf.size.x, (req.uv.y - 0.5f) * lf.size.y, 0.0f));
+		Vector3 sample_local((req.uv.x - 0.5f) * lf.size.x, (req.uv.y - 0.5f) * lf.size.y, 0.0f);
+		Basis light_from_sample; // The light's own frame: rectangles, disks, one centre map.
+		const uint32_t grid = lf.all_around ? atlas.light_get_grid(req.light) : 0;
+		if (grid >= 2 && !get_surface_sample(req.uv, grid - 1, lf.half_length, lf.radius, sample_local, light_from_sample)) {
+			continue; // A repeated point of the surface grid (seam, pole): the shader skips its map.
+		}
+		Vector3 sample_world = lf.world_from_light.xform(sample_local);
 		DepthPushConstant pc;
-		pc.params[0] = 1.0f / (lf.range + lf.size.length());
+		pc.params[0] = 1.0f / lf.reach;
 		pc.params[1] = OCTANT_Z_NEAR;
-		pc.params[2] = (lf.range + lf.size.length()) * 2.0f;
+		pc.params[2] = lf.reach * 2.0f;
 		pc.params[3] = 0.0f;
 		RD::DrawListID list = rd->draw_list_begin(current->framebuffer, RD::INITIAL_ACTION_CLEAR, RD::INITIAL_ACTION_CLEAR, {}, 1.0f, RD::Rect(int32_t(r.x), int32_t(r.y), r.size, r.size));
 		rd->draw_list_bind_render_pipeline(list, pipeline);
@@ -654,7 +714,7 @@ void AreaShadowRendererRD::render_shadows(const RenderSceneData &p_data, RID p_m
 			get_octant_axes(quadrant, right, up, forward);
 			const Basis &lb = lf.world_from_light.basis;
 			Transform3D octant_from_world;
-			Vector3 rw = lb.xform(right), uw = lb.xform(up), fw = lb.xform(forward);
+			Vector3 rw = lb.xform(light_from_sample.xform(right)), uw = lb.xform(light_from_sample.xform(up)), fw = lb.xform(light_from_sample.xform(forward));
 			octant_from_world.basis = Basis(rw.x, rw.y, rw.z, uw.x, uw.y, uw.z, fw.x, fw.y, fw.z); // Rows.
 			octant_from_world.origin = -octant_from_world.basis.xform(sample_world);
 			for (const RenderSceneData::GeometryInstance *caster : lf.casters) {

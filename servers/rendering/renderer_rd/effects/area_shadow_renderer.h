@@ -59,6 +59,12 @@ public:
 
 	// AreaShadowData::mode bits above the mode (AREA_SHADOW_FLAG_* in the shader).
 	static constexpr uint32_t FLAG_SAMPLE_FILTER = 0x100; // Per-sample penumbra filter (else the fixed PCF).
+	// Sphere or tube: sample points on the surface, each map in front of its point (get_surface_sample());
+	// AreaShadowData::half_size holds the capsule's half length and radius.
+	static constexpr uint32_t FLAG_ALL_AROUND = 0x200;
+	// Smallest grid of a sphere or tube light: a 2 x 2 grid's points are the two poles, a 3 x 3's lie on one
+	// great circle, so some receivers would face none of them.
+	static constexpr uint32_t MIN_SURFACE_GRID = 5;
 
 	// Quadrature weights in AreaShadowData::maps (bits 24..31): weight * WEIGHT_SCALE (0 = the grid's
 	// trapezoid rule). ADAPTIVE weights are multiples of 1/256 up to 1/4 (a quarter of a leaf's area).
@@ -97,6 +103,17 @@ public:
 	// u_num / den, v_num / den (4 bits each, den = grid - 1 <= 8) and the quadrature weight (8 bits,
 	// round(weight * WEIGHT_SCALE), 0 = trapezoid rule of the grid).
 	static uint32_t pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight = 0.0f);
+	// Sample point of grid uv p_uv (grid p_den + 1) on the capsule of half length p_half_length (along light
+	// X) and radius p_radius (a sphere: half length 0), and its frame (columns X, Y, Z in light space; Z the
+	// inward normal, so the point emits along -Z as the rectangle does): the equal-area map of
+	// area_shadow_surface_map() in shaders/area_light_shadow_inc.glsl, the point moved in to the chord of its
+	// cell's arc. False for a repeated point (column u = 1, or a pole row beyond u = 0), whose map the shader
+	// skips.
+	static bool get_surface_sample(const Vector2 &p_uv, uint32_t p_den, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample);
+	// Sphere and tube lights whose grid was raised to MIN_SURFACE_GRID or whose ADAPTIVE mode ran as
+	// HEURISTIC, and the warnings printed about them (one per change of that count).
+	uint32_t get_surface_fallback_count() const { return surface_fallbacks; }
+	uint32_t get_surface_warning_count() const { return surface_warnings; }
 
 private:
 	/* Private Members */
@@ -116,6 +133,9 @@ private:
 	std::vector<AreaShadowData> data;
 	uint32_t last_draw_count = 0;
 	uint64_t total_draw_count = 0;
+	uint32_t surface_fallbacks = 0;
+	uint32_t surface_warned = 0;
+	uint32_t surface_warnings = 0;
 	bool initialized = false;
 
 	struct LightFrame {
@@ -123,6 +143,10 @@ private:
 		Transform3D world_from_light; // Orthonormal.
 		Vector2 size;
 		float range = 1.0f;
+		float reach = 1.0f; // Farthest receiver from a sample point: range + size.length() (sphere, tube: range + 2 (half length + radius)).
+		bool all_around = false; // Sphere or tube: samples on the surface (get_surface_sample()).
+		float half_length = 0.0f;
+		float radius = 0.0f;
 		uint32_t grid = 0; // Grid the maps were packed for.
 		std::vector<const RenderSceneData::GeometryInstance *> casters; // Into the frame's RenderSceneData.
 	};

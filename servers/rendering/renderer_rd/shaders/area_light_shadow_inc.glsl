@@ -14,6 +14,10 @@
 /* (renderer_rd/effects/area_shadow_renderer.h), 448 bytes.               */
 /* A light with map_count 0 is unshadowed (visibility 1); maps listed are */
 /* always drawn (never garbage).                                          */
+/* Sphere and tube lights (AREA_SHADOW_FLAG_ALL_AROUND, compiled with     */
+/* USE_AREA_SHAPES): each sample point lies on the shape's surface and    */
+/* its map covers the half space in front of that surface point           */
+/* (area_shadow_surface_map(); doc/shadows.md "Sphere and tube lights").  */
 
 #ifndef AREA_LIGHT_SHADOW_INC_GLSL
 #define AREA_LIGHT_SHADOW_INC_GLSL
@@ -25,6 +29,7 @@
 #define AREA_SHADOW_MODE_PCSS 1u
 #define AREA_SHADOW_MODE_MASK 0xFFu
 #define AREA_SHADOW_FLAG_SAMPLE_FILTER 0x100u // mode bit: per-sample penumbra filter (else the fixed PCF).
+#define AREA_SHADOW_FLAG_ALL_AROUND 0x200u // mode bit: sphere or tube, sample points on its surface (half_size: half length, radius).
 // Blocker search reach: blockers nearer the sample than d_receiver / (1 + this) are searched only partly.
 #define AREA_SHADOW_SEARCH_K 2.0
 #define AREA_SHADOW_MAX_K 8.0
@@ -44,7 +49,7 @@
 
 struct AreaShadowData { // std430, 448 bytes.
 	mat4 light_from_view; // 0: view space -> light space (orthonormal; emission along -Z).
-	vec2 half_size; // 64: rectangle half extents (m).
+	vec2 half_size; // 64: rectangle half extents (m); AREA_SHADOW_FLAG_ALL_AROUND: capsule half length, radius.
 	float depth_scale; // 72: stored depth = distance * depth_scale.
 	float bias; // 76: depth bias in texels of the receiver (shadow_bias).
 	float normal_bias; // 80: normal offset in texels of the receiver (shadow_normal_bias).
@@ -86,6 +91,70 @@ float area_shadow_map_weight(uint p_packed, vec2 p_uv) {
 	return edge.x * edge.y;
 }
 
+#ifdef USE_AREA_SHAPES
+// Sample point of map p_packed of a sphere or tube light (AREA_SHADOW_FLAG_ALL_AROUND): on the capsule of half
+// length p_shape.x along light X and radius p_shape.y (a sphere: half length 0), at the equal-area position
+// of its uv: azimuth phi = 2 pi u + pi / 4 about X (phi = 0 would be -Z; the quarter turn gives a receiver on
+// the light's axis two points of each 4-point ring instead of one), axial coordinate h = (2 v - 1)(half length
+// + radius).
+// Archimedes' hat-box theorem: a sphere zone of height dh has the area 2 pi r dh of the cylinder beside it, so
+// the whole capsule has 2 pi r of area per unit of h and this map of [0,1]^2 is equal-area: the grid's
+// trapezoid rule over uv stays a quadrature of the surface. Each map covers the half space in front of its
+// own surface point (frame: X the azimuth tangent, Z the inward normal; emission along -Z, as the
+// rectangle's), where that point emits: the octant views and every lookup work in that frame unchanged.
+// The point itself sits on the chord of its cell's arc, rho (1 - cos(pi / den)) in from the surface, so that
+// its cell (below) projects as the arc does (a 90-degree arc bulges 0.29 rho out of its tangent square).
+// Column u = 1 repeats u = 0 and the rows v = 0, 1 are the two poles: those maps are skipped (false; the C++
+// side never draws them) and their weight goes to the one kept (u = 0), so r_weight is the point's share of
+// the surface (interior 1, a pole den / 2, of den^2). r_lo, r_hi: its cell (u +- 1/(2 den), v +- 1/(2 den)) laid
+// into the plane of that chord: its length 2 rho sin(pi / den) across the azimuth (X), the meridian arc r dh / rho of
+// its axial step dh (Y; dh on the cylinder); a pole's cell is its cap, a square of the cap's projected area.
+// One map (den 0): the light's centre facing -Z stands for the whole light (front half space only).
+// In: p_pos, p_normal in light space. Out: r_v = receiver - sample point, r_normal, in the map's frame.
+bool area_shadow_surface_map(uint p_packed, vec2 p_shape, vec3 p_pos, vec3 p_normal, out vec3 r_v, out vec3 r_normal, out float r_weight, out vec2 r_lo, out vec2 r_hi) {
+	uint den = (p_packed >> 20u) & 0xFu;
+	uint un = (p_packed >> 12u) & 0xFu;
+	uint vn = (p_packed >> 16u) & 0xFu;
+	float half_len = p_shape.x;
+	float radius = p_shape.y;
+	if (den == 0u) {
+		r_v = p_pos;
+		r_normal = p_normal;
+		r_weight = 1.0;
+		r_hi = vec2(half_len + 0.8862269 * radius, 0.8862269 * radius);
+		r_lo = -r_hi;
+		return true;
+	}
+	bool pole = vn == 0u || vn == den;
+	if (un == den || (pole && un != 0u)) {
+		return false;
+	}
+	float fden = float(den);
+	float span = half_len + radius;
+	float phi = 6.2831853 * float(un) / fden + 0.78539816;
+	float h = (2.0 * float(vn) / fden - 1.0) * span;
+	float c = clamp(h, -half_len, half_len); // Axis point under the sample (an end sphere's centre on the caps).
+	float dz = h - c;
+	float rho = sqrt(max(radius * radius - dz * dz, 0.0));
+	vec3 n = (vec3(dz, 0.0, 0.0) + vec3(0.0, sin(phi), -cos(phi)) * rho) / max(radius, 1e-6);
+	vec3 x_axis = vec3(0.0, cos(phi), sin(phi));
+	mat3 frame = mat3(x_axis, cross(-n, x_axis), -n); // Columns: the map's X, Y, Z in light space.
+	vec3 chord = pole ? vec3(0.0) : vec3(0.0, sin(phi), -cos(phi)) * (rho * (1.0 - cos(3.14159265 / fden)));
+	r_v = (p_pos - (vec3(c, 0.0, 0.0) + n * radius - chord)) * frame;
+	r_normal = p_normal * frame;
+	r_weight = pole ? 0.5 * fden : 1.0;
+	float dh = 2.0 * span / fden; // Axial step of the grid.
+	if (pole) {
+		float depth = min(0.5 * dh, radius); // The cap's height.
+		r_hi = vec2(0.8862269 * sqrt(max(depth * (2.0 * radius - depth), 0.0)));
+	} else {
+		r_hi = vec2(rho * sin(3.14159265 / fden), 0.5 * dh * radius / max(rho, 1e-6));
+	}
+	r_lo = -r_hi;
+	return true;
+}
+#endif
+
 // Pixel origin of quadrant p_quadrant of the map's tile.
 ivec2 area_shadow_quadrant_origin(uint p_packed, uint p_quadrant, uint p_subdivision, uint p_quadrant_size, uint p_tile_size) {
 	uint tile = p_packed & 0xFFFu;
@@ -109,8 +178,19 @@ float area_shadow_pcf(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal, in
 	vec2 uv = area_shadow_map_uv(p_packed);
 	vec3 sample_pos = vec3((uv - 0.5) * 2.0 * area_shadows.data[p_light].half_size, 0.0);
 	vec3 v = p_pos - sample_pos;
-	float dist = length(v);
 	float grid_weight = area_shadow_map_weight(p_packed, uv);
+#ifdef USE_AREA_SHAPES
+	if ((area_shadows.data[p_light].mode & AREA_SHADOW_FLAG_ALL_AROUND) != 0u) {
+		vec3 normal;
+		vec2 lo, hi;
+		if (!area_shadow_surface_map(p_packed, area_shadows.data[p_light].half_size, p_pos, p_normal, v, normal, grid_weight, lo, hi)) {
+			r_weight = 0.0; // A repeated point (seam or pole) of the surface grid.
+			return 1.0;
+		}
+		p_normal = normal;
+	}
+#endif
+	float dist = length(v);
 	r_weight = grid_weight * max(-v.z, 0.0) * max(dot(p_normal, -v), 0.0) / max(dist * dist * dist * dist, 1e-12);
 	// World size of one texel at the receiver (the views span about 2.5 units at distance 1).
 	float texel_world = dist * (2.0 * AREA_SHADOW_OCTANT_HALF_X) / float(area_shadows.data[p_light].quadrant_size);
@@ -346,22 +426,38 @@ float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p
 	int taps = p_count <= 4u ? 6 : (p_count <= 9u ? 4 : (p_count <= 25u ? 3 : 1));
 	// The search runs on every lit pixel in range (the filter only where it finds blockers): sparser.
 	int search_taps = p_count <= 4u ? 4 : (p_count <= 9u ? 2 : 1);
+#ifdef USE_AREA_SHAPES
+	// Sphere or tube: each map's offset, normal and cell in its own frame (area_shadow_surface_map()).
+	bool all_around = (area_shadows.data[p_light].mode & AREA_SHADOW_FLAG_ALL_AROUND) != 0u;
+#endif
 	vec2 ratio = vec2(1e6, -1e6);
 	float blockers = 0.0;
 	for (uint i = 0u; i < p_count; i++) {
 		uint packed = area_shadows.data[p_light].maps[i];
 		vec2 uv = area_shadow_map_uv(packed);
 		vec3 v = p_pos - vec3((uv - 0.5) * 2.0 * half_size, 0.0);
-		v += p_normal * (normal_bias * length(v) * texel_per_m);
+		vec3 normal = p_normal;
+		vec2 lo, hi;
+#ifdef USE_AREA_SHAPES
+		float surface_weight;
+		if (all_around && !area_shadow_surface_map(packed, half_size, p_pos, p_normal, v, normal, surface_weight, lo, hi)) {
+			continue;
+		}
+#endif
+		v += normal * (normal_bias * length(v) * texel_per_m);
 		if (v.z >= 0.0) {
 			continue;
 		}
-		vec2 lo, hi;
-		area_shadow_cell(packed, uv, half_size, lo, hi);
-		float cos_theta = clamp(dot(p_normal, -v) / max(length(v), 1e-6), 0.05, 1.0);
+#ifdef USE_AREA_SHAPES
+		if (!all_around)
+#endif
+		{
+			area_shadow_cell(packed, uv, half_size, lo, hi);
+		}
+		float cos_theta = clamp(dot(normal, -v) / max(length(v), 1e-6), 0.05, 1.0);
 		float slope = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, 8.0);
 		vec2 shift = fract(uv.yx * 0.61803399);
-		area_shadow_blocker_search(p_light, packed, v, p_normal, lo, hi, shift, search_taps, AREA_SHADOW_SEARCH_K, bias_texels + 2.0 * slope, texel_per_m, ratio, blockers);
+		area_shadow_blocker_search(p_light, packed, v, normal, lo, hi, shift, search_taps, AREA_SHADOW_SEARCH_K, bias_texels + 2.0 * slope, texel_per_m, ratio, blockers);
 	}
 	if (blockers == 0.0) {
 		return 1.0;
@@ -382,23 +478,35 @@ float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p
 		uint packed = area_shadows.data[p_light].maps[i];
 		vec2 uv = area_shadow_map_uv(packed);
 		vec3 v = p_pos - vec3((uv - 0.5) * 2.0 * half_size, 0.0);
+		vec3 normal = p_normal;
+		float grid_weight = area_shadow_map_weight(packed, uv);
+		vec2 lo, hi;
+#ifdef USE_AREA_SHAPES
+		if (all_around && !area_shadow_surface_map(packed, half_size, p_pos, p_normal, v, normal, grid_weight, lo, hi)) {
+			continue;
+		}
+#endif
 		float dist = length(v);
-		float w = area_shadow_map_weight(packed, uv) * max(-v.z, 0.0) * max(dot(p_normal, -v), 0.0) / max(dist * dist * dist * dist, 1e-12);
-		v += p_normal * (normal_bias * dist * texel_per_m);
+		float w = grid_weight * max(-v.z, 0.0) * max(dot(normal, -v), 0.0) / max(dist * dist * dist * dist, 1e-12);
+		v += normal * (normal_bias * dist * texel_per_m);
 		float lit = 1.0;
 		if (v.z < 0.0) {
-			vec2 lo, hi;
-			area_shadow_cell(packed, uv, half_size, lo, hi);
-			float cos_theta = clamp(dot(p_normal, -v) / max(length(v), 1e-6), 0.05, 1.0);
+#ifdef USE_AREA_SHAPES
+			if (!all_around)
+#endif
+			{
+				area_shadow_cell(packed, uv, half_size, lo, hi);
+			}
+			float cos_theta = clamp(dot(normal, -v) / max(length(v), 1e-6), 0.05, 1.0);
 			float slope = min(sqrt(1.0 - cos_theta * cos_theta) / cos_theta, 8.0);
 			// shadow_blur: the box is at least pcf_radius texels wide at the receiver.
 			float extent = max(max(hi.x - lo.x, hi.y - lo.y), 1e-4);
 			float min_k = min_blur * dist * texel_per_m / extent;
 			// Receivers steep to the light (a box's sides): their tangent plane is a poor stand-in beyond a
 			// few texels (taps slide under the floor or into the box), so the kernel fades to shadow_blur's.
-			float facing = clamp(p_normal.z * 2.0 - 0.4, 0.0, 1.0);
+			float facing = clamp(normal.z * 2.0 - 0.4, 0.0, 1.0);
 			vec2 shift = fract(vec2(0.5, 0.5) + uv.yx * 0.61803399);
-			lit = area_shadow_filtered(p_light, packed, v, p_normal, lo, hi, facing, shift, ratio, near, min_k / max(facing, 1e-3), taps, bias_texels + slope, texel_per_m);
+			lit = area_shadow_filtered(p_light, packed, v, normal, lo, hi, facing, shift, ratio, near, min_k / max(facing, 1e-3), taps, bias_texels + slope, texel_per_m);
 		}
 		visibility += lit * w;
 		total += w;
