@@ -107,12 +107,14 @@ bool SSRadiosityRD::_make_sets(Buffers &r_b) {
 	r_b.sets[0] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.color), U(RD::UNIFORM_TYPE_TEXTURE, 2, r_b.depth),
 												 U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.normal), U(RD::UNIFORM_TYPE_IMAGE, 4, r_b.coarse_gbuffer) },
 			pass_shader.version_get_shader(PASS_DOWNSAMPLE_HALF), 0);
-	// The ISR variants declare the same bindings: one set serves them all.
-	r_b.sets[1] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.coarse_gbuffer), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[0]) },
-			pass_shader.version_get_shader(PASS_ISR_SSIL), 0);
+	// The ISR variants declare the same bindings: one set per target serves them all.
+	for (int i = 0; i < 2; i++) {
+		r_b.sets[1 + i] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.coarse_gbuffer), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[i]) },
+				pass_shader.version_get_shader(PASS_ISR_SSIL), 0);
+	}
 	for (int v = 0; v < COMPOSITE_MAX; v++) {
 		for (int i = 0; i < 2; i++) {
-			r_b.sets[2 + 2 * v + i] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.isr[i]), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[1 - i]) },
+			r_b.sets[3 + 2 * v + i] = rd->uniform_set_create({ U(RD::UNIFORM_TYPE_SAMPLER, 0, sampler), U(RD::UNIFORM_TYPE_TEXTURE, 1, r_b.isr[i]), U(RD::UNIFORM_TYPE_IMAGE, 2, r_b.isr[1 - i]) },
 					pass_shader.version_get_shader(PASS_BLUR_SSIL + v), 0);
 		}
 	}
@@ -124,7 +126,7 @@ bool SSRadiosityRD::_make_sets(Buffers &r_b) {
 		if (v != COMPOSITE_SSIL) {
 			u.push_back(U(RD::UNIFORM_TYPE_TEXTURE, 3, r_b.ambient));
 		}
-		r_b.sets[2 + 2 * COMPOSITE_MAX + v] = rd->uniform_set_create(u, composite_shader.version_get_shader(v), 0);
+		r_b.sets[3 + 2 * COMPOSITE_MAX + v] = rd->uniform_set_create(u, composite_shader.version_get_shader(v), 0);
 	}
 	for (RID s : r_b.sets) {
 		ERR_FAIL_COND_V_MSG(!s.is_valid(), false, "SSRadiosityRD: uniform set creation failed.");
@@ -218,23 +220,24 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
 	rd->compute_list_dispatch_threads(list, cw, ch, 1);
 	rd->compute_list_add_barrier(list);
+	// Each blur pass is one dispatch, ping-pong between isr[0] and isr[1]; the ISR step writes where the
+	// last pass then lands in isr[0], which the composite reads.
+	const int passes = std::max(p_frame.blur_passes, 0);
+	int current = passes & 1;
 	rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_ISR_SSIL + variant]);
-	rd->compute_list_bind_uniform_set(list, b.sets[1], 0);
+	rd->compute_list_bind_uniform_set(list, b.sets[1 + current], 0);
 	rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
 	rd->compute_list_dispatch_threads(list, cw, ch, 1);
 	last_pass_count = 2;
-	for (int pass = 0; pass < p_frame.blur_passes; pass++) {
-		for (int axis = 0; axis < 2; axis++) {
-			rd->compute_list_add_barrier(list);
-			const float stride = float(1 << std::min(pass, 8)); // A trous: 1, 2, 4, ... coarse pixels.
-			pc.blur[0] = axis == 0 ? stride : 0.0f;
-			pc.blur[1] = axis == 0 ? 0.0f : stride;
-			rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_BLUR_SSIL + variant]);
-			rd->compute_list_bind_uniform_set(list, b.sets[2 + 2 * variant + axis], 0); // H: 0 -> 1, V: 1 -> 0.
-			rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
-			rd->compute_list_dispatch_threads(list, cw, ch, 1);
-			last_pass_count++;
-		}
+	for (int pass = 0; pass < passes; pass++) {
+		rd->compute_list_add_barrier(list);
+		pc.blur[0] = float(1 << std::min(pass, 8)); // A trous: 1, 2, 4, ... coarse pixels.
+		rd->compute_list_bind_compute_pipeline(list, pass_pipelines[PASS_BLUR_SSIL + variant]);
+		rd->compute_list_bind_uniform_set(list, b.sets[3 + 2 * variant + current], 0); // isr[current] -> the other.
+		rd->compute_list_set_push_constant(list, &pc, sizeof(pc));
+		rd->compute_list_dispatch_threads(list, cw, ch, 1);
+		current = 1 - current;
+		last_pass_count++;
 	}
 	rd->compute_list_end();
 
@@ -275,7 +278,7 @@ bool SSRadiosityRD::render(RID p_owner, const Projection &p_clip_from_view, cons
 	}
 	RD::DrawListID dl = rd->draw_list_begin(b.fb_composite, RD::INITIAL_ACTION_LOAD, RD::INITIAL_ACTION_LOAD);
 	rd->draw_list_bind_render_pipeline(dl, pipeline);
-	rd->draw_list_bind_uniform_set(dl, b.sets[2 + 2 * COMPOSITE_MAX + variant], 0);
+	rd->draw_list_bind_uniform_set(dl, b.sets[3 + 2 * COMPOSITE_MAX + variant], 0);
 	rd->draw_list_set_push_constant(dl, &cc, sizeof(cc));
 	rd->draw_list_draw(dl, false, 1, 3);
 	rd->draw_list_end();

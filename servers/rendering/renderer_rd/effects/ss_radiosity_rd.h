@@ -13,7 +13,7 @@
 /* from the depth pre-pass (linear depth is derived from it, §4.3).       */
 /* Passes (Listing 3), after the opaque pass, timestamp "ss_radiosity":   */
 /*   downsample -> ISR (eqs. 6, 25, 26; interleaved over k x k pixels)    */
-/*   -> blur x blur_passes (H + V, a trous) -> composite (bilateral       */
+/*   -> blur x blur_passes (3 x 3, a trous) -> composite (bilateral       */
 /*   upsampling eqs. 27-28, eq. 29).                                      */
 /* Coarse resolution: half of each axis with half_size (Godot's default), */
 /* else full. Samples per coarse pixel from the quality level             */
@@ -67,7 +67,7 @@ public:
 		float proj_depth[4]; // P22, P32, coarse width, coarse height.
 		float ssil[4]; // radius, normal rejection, enabled, max disk radius (coarse pixels).
 		float ssao[4]; // radius, horizon, detail, enabled.
-		float blur[4]; // step x, y (direction times the pass's stride), ssil sharpness, ssao sharpness.
+		float blur[4]; // the pass's stride (coarse pixels), unused, ssil sharpness, ssao sharpness.
 		uint32_t misc[4]; // sample count, full width, full height, scale.
 		uint32_t pattern[4]; // interleave k (FrameSettings::interleave), unused x3.
 	};
@@ -125,7 +125,9 @@ private:
 		RID isr[2]; // COARSE_FORMAT, ping-pong of the ISR result and the blur: sum F L, O, normal, depth.
 		RID fb_gbuffer; // { color, normal, albedo, ambient, depth }: the opaque pass.
 		RID fb_composite; // { color }.
-		RID sets[2 + 2 * COMPOSITE_MAX + COMPOSITE_MAX]; // downsample, ISR, blur 0->1 and 1->0 per variant, composite per variant.
+		// Downsample; ISR into isr[0] and into isr[1]; blur isr[0] -> isr[1] and isr[1] -> isr[0] per variant;
+		// composite per variant (reads isr[0], where the last blur pass writes).
+		RID sets[3 + 2 * COMPOSITE_MAX + COMPOSITE_MAX];
 	};
 
 	ShaderRD pass_shader;
