@@ -246,17 +246,18 @@ void shade(const Frame &p_f, int p_res, int p_x, int p_y, Pixel &r_px) {
 	lut_fetch(p_f.table, p_f.table_size, p_f.roughness, nov, m, &fn, &fg, &r_px.ri, &r_px.ti);
 	const double i_ltc = ltc_integral(m, q, true), i_ltc_n = ltc_integral(m, q, false);
 	const double i_rho = fn_x > 0.0 ? lobe / fn_x : 0.0;
-	// Fresnel of the lit part of the lobe (the shader's ltc_polygon_fresnel, a4): the lobe's mean Schlick
-	// weight fg / fn moved by the weight at the polygon's mean direction minus the weight at the lobe's
-	// axis M z; a5 scales it by their ratio instead (the alternative that lost, kept as a measurement).
-	double l_mean[3], w_add = fn > 0.0 ? fg / fn : 0.0, w_mul = w_add;
+	// Fresnel of the lit part of the lobe (the shader's ltc_polygon_fresnel, a4): Schlick's weight at the
+	// polygon's mean direction plus, in proportion to the lobe's share the polygon covers (i_ltc), the gap
+	// between the lobe's mean weight fg / fn and the weight at its axis M z. a5: the same gap added in
+	// full whatever the coverage (the alternative that lost, kept as a measurement).
+	double l_mean[3], w_shader = fn > 0.0 ? fg / fn : 0.0, w_alt = w_shader;
 	if (ltc_mean_direction(m, q, l_mean)) {
 		double axis[3] = { m[1], 0.0, m[4] };
 		const double al = std::sqrt(dot3(axis, axis));
 		axis[0] /= al, axis[2] /= al;
 		const double s_p = schlick_weight(vloc, l_mean), s_a = schlick_weight(vloc, axis);
-		w_add = std::clamp(w_add + s_p - s_a, 0.0, 1.0);
-		w_mul = s_a > 1e-6 ? std::clamp(w_mul * s_p / s_a, 0.0, 1.0) : w_mul;
+		w_alt = std::clamp(w_alt + s_p - s_a, 0.0, 1.0);
+		w_shader = std::clamp(s_p + i_ltc * (w_shader - s_a), 0.0, 1.0);
 	}
 	for (int c = 0; c < 3; c++) {
 		const double d = p_f.albedo_d[c] * diffuse;
@@ -268,8 +269,8 @@ void shade(const Frame &p_f, int p_res, int p_x, int p_y, Pixel &r_px) {
 		r_px.a2[c] = d + i_rho * f_lut;
 		r_px.a3[c] = d + i_ltc * f_lut;
 		r_px.a3n[c] = d + i_ltc_n * f_lut;
-		r_px.a4[c] = d + i_ltc * fn * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w_add);
-		r_px.a5[c] = d + i_ltc * fn * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w_mul);
+		r_px.a4[c] = d + i_ltc * fn * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w_shader);
+		r_px.a5[c] = d + i_ltc * fn * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w_alt);
 	}
 	r_px.lit = true;
 }
@@ -374,7 +375,7 @@ bool AccuracyLTCTerms::evaluate(const AccuracyScenes::Scene &p_scene, int p_reso
 	auto A3n = [](const Pixel &q, int c) { return q.a3n[c]; };
 	auto A4 = [](const Pixel &q, int c) { return q.a4[c]; };
 	auto A5 = [](const Pixel &q, int c) { return q.a5[c]; };
-	compare_with(px, A5, T, &r.fresnel_mul, &r.fresnel_mul_ratio);
+	compare_with(px, A5, T, &r.fresnel_alt, &r.fresnel_alt_ratio);
 	compare_with(px, A4, T, &r.total, &r.total_ratio);
 	compare_with(px, A3, T, &r.eq510, &r.eq510_ratio);
 	compare_with(px, A1, T, &r.fresnel, &r.fresnel_ratio);
@@ -421,8 +422,8 @@ bool AccuracyLTCTerms::evaluate(const AccuracyScenes::Scene &p_scene, int p_reso
 }
 
 String AccuracyLTCTerms::format(const Result &p_r) {
-	String s = vformat("%-34s total %.4f (%.3f) | eq. 5.10 %.4f (%.3f) | fresnel %.4f (%.3f) | fn/fg %.4f (%.3f) | lobe %.4f (%.3f) | no clip %.4f (%.3f) | F ratio %.4f (%.3f) | truth conv %.4f | rows %d-%d | lobe cells",
-			p_r.scene_id.c_str(), p_r.total, p_r.total_ratio, p_r.eq510, p_r.eq510_ratio, p_r.fresnel, p_r.fresnel_ratio, p_r.norm, p_r.norm_ratio, p_r.lobe, p_r.lobe_ratio, p_r.no_clip, p_r.no_clip_ratio, p_r.fresnel_mul, p_r.fresnel_mul_ratio,
+	String s = vformat("%-34s total %.4f (%.3f) | eq. 5.10 %.4f (%.3f) | fresnel %.4f (%.3f) | fn/fg %.4f (%.3f) | lobe %.4f (%.3f) | no clip %.4f (%.3f) | F full gap %.4f (%.3f) | truth conv %.4f | rows %d-%d | lobe cells",
+			p_r.scene_id.c_str(), p_r.total, p_r.total_ratio, p_r.eq510, p_r.eq510_ratio, p_r.fresnel, p_r.fresnel_ratio, p_r.norm, p_r.norm_ratio, p_r.lobe, p_r.lobe_ratio, p_r.no_clip, p_r.no_clip_ratio, p_r.fresnel_alt, p_r.fresnel_alt_ratio,
 			p_r.truth_convergence, p_r.angle_index_min, p_r.angle_index_max);
 	for (const Cell &c : p_r.worst_cells) {
 		s += vformat(" (r%d,t%d)%s %.0f%%", c.roughness_index, c.angle_index, LTCFitter::is_engine_refit_cell(c.roughness_index, c.angle_index) ? "*" : "", c.share * 100.0);

@@ -20,7 +20,8 @@
 /*       polygon Fresnel)                                                 */
 /*   A3n the same without the surface-horizon clip                        */
 /*   A4  the shader as built: A3 with ltc_polygon_fresnel                 */
-/*   A5  A4 with the Fresnel correction as a ratio (an alternative)       */
+/*   A5  A4 with the Fresnel gap added whatever the coverage (the         */
+/*       alternative that lost)                                           */
 /* so relRMSE(A1, T) is the Fresnel error, (A2, A1) the LUT's fn/fg, (A3, */
 /* A2) the lobe shape, (A3n, T) the total without the clip, and (A4, T)   */
 /* the total, to compare with the suite's engine-vs-Embree number. The    */
@@ -58,8 +59,8 @@ public:
 		double lobe_ratio = 1.0;
 		double no_clip = 0.0; // relRMSE(A3n, T).
 		double no_clip_ratio = 1.0;
-		double fresnel_mul = 0.0; // relRMSE(A5, T).
-		double fresnel_mul_ratio = 1.0;
+		double fresnel_alt = 0.0; // relRMSE(A5, T).
+		double fresnel_alt_ratio = 1.0;
 		double truth_convergence = 0.0; // relRMSE of T at p_light_samples against T at half as many per axis.
 		int angle_index_min = 0; // LUT rows (view angle) the pixels read.
 		int angle_index_max = 0;

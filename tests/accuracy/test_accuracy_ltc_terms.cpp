@@ -31,8 +31,8 @@ TEST_CASE("[Accuracy][LTC] the error terms of a diffuse scene are all small") {
 
 TEST_CASE("[Accuracy][LTC] under a TV seen at 20 degrees a dielectric's error is Fresnel, and the polygon Fresnel removes most of it") {
 	// Measured here (16 x 16, 48^2 light samples): eq. 5.10 0.118 (ratio 0.89), of which Fresnel 0.117 and
-	// lobe shape 0.007; with the polygon Fresnel 0.041 (1.047). At 40 x 40 (bench --accuracy --ltc-terms
-	// --ci): 0.073 (0.92), Fresnel 0.073, lobe 0.006; 0.023 (1.035).
+	// lobe shape 0.007; with the polygon Fresnel 0.026 (1.031). At 40 x 40 (bench --accuracy --ltc-terms
+	// --ci): 0.073 (0.92), Fresnel 0.073, lobe 0.006; 0.015 (1.021).
 	const AccuracyScenes::Scene scene = AccuracyScenes::make_scene(AccuracyScenes::RECEIVER_PLANE, 0.5f, 0.0f, Vector2(2, 0.5f), AccuracyScenes::PLACEMENT_VERTICAL, 20.0f);
 	AccuracyLTCTerms::Result r;
 	String error;
@@ -43,9 +43,9 @@ TEST_CASE("[Accuracy][LTC] under a TV seen at 20 degrees a dielectric's error is
 	CHECK(r.fresnel > 4.0 * r.lobe);
 	CHECK(r.fresnel_ratio < 0.95);
 	CHECK(r.eq510 > 0.04);
-	CHECK(r.total < 0.5 * r.eq510);
+	CHECK(r.total < 0.35 * r.eq510);
 	CHECK(r.total_ratio > 0.97);
-	CHECK(r.total_ratio < 1.06);
+	CHECK(r.total_ratio < 1.05);
 	CHECK(r.angle_index_max >= 50); // Grazing rows of the LUT.
 	REQUIRE(!r.worst_cells.empty());
 	CHECK(r.worst_cells[0].share > 0.0);

@@ -253,20 +253,22 @@ float ltc_schlick_weight(vec3 p_v, vec3 p_l) {
 // Schlick weight averaged over the whole hemisphere, fg / fn; a light that covers only part of the lobe
 // sees the weight of that part, which at grazing views differs a lot (the mirror direction of a TV over
 // a floor seen at 10 degrees has (1 - v.h)^5 = 0.39, the whole lobe's average far less: LTC was 8-16 %
-// too dark there, from Fresnel alone). The average is moved by the weight at the polygon's mean direction
-// (its vector form factor mapped by M, p_l_mean) minus the weight at the lobe's own mean direction (the
-// hemisphere's vector form factor z mapped by M: the axis (b, 0, e)), so a light covering the whole lobe
-// keeps eq. 5.10 exactly. p_v: the view in the fitter's frame; p_t0 = (a, b, c, d), p_t1 = (e, fn, fg, 0).
-// Returns the effective (fn, fg) with fg in [0, fn].
-vec2 ltc_polygon_fresnel(vec3 p_v, vec4 p_t0, vec4 p_t1, vec3 p_vector) {
+// too dark there, from Fresnel alone). The weight is taken at the polygon's mean direction (its vector
+// form factor mapped by M, from p_vector), exact for a small light, plus the gap between the lobe's mean
+// weight fg / fn and the weight at the lobe's own mean direction (the axis M z = (b, 0, e)) in proportion
+// to the share of the lobe the light covers (p_coverage, the LTC integral), so a light covering the whole
+// lobe keeps eq. 5.10 exactly. p_v: the view in the fitter's frame; p_t0 = (a, b, c, d), p_t1 = (e, fn,
+// fg, 0). Returns the effective (fn, fg), fg in [0, fn].
+vec2 ltc_polygon_fresnel(vec3 p_v, vec4 p_t0, vec4 p_t1, vec3 p_vector, float p_coverage) {
 	vec3 l_mean = vec3(p_t0.x * p_vector.x + p_t0.y * p_vector.z, p_t0.z * p_vector.y, p_t0.w * p_vector.x + p_t1.x * p_vector.z);
 	vec3 axis = vec3(p_t0.y, 0.0, p_t1.x);
 	float ll = dot(l_mean, l_mean);
 	if (!(ll > 1e-30)) {
 		return p_t1.yz;
 	}
-	float delta = ltc_schlick_weight(p_v, l_mean * inversesqrt(ll)) - ltc_schlick_weight(p_v, axis * inversesqrt(max(dot(axis, axis), 1e-30)));
-	return vec2(p_t1.y, clamp(p_t1.z + p_t1.y * delta, 0.0, p_t1.y));
+	float w_mean = ltc_schlick_weight(p_v, l_mean * inversesqrt(ll));
+	float w_axis = ltc_schlick_weight(p_v, axis * inversesqrt(max(dot(axis, axis), 1e-30)));
+	return vec2(p_t1.y, clamp(p_t1.y * w_mean + p_coverage * (p_t1.z - p_t1.y * w_axis), 0.0, p_t1.y));
 }
 
 #ifdef AREA_LTC_HAS_LUT
@@ -418,7 +420,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 		}
 #endif
 		// Thesis eq. 5.10 with the Fresnel weight of the lit part of the lobe (ltc_polygon_fresnel).
-		vec2 fresnel = ltc_polygon_fresnel(vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV), t0, t1, spec_vector);
+		vec2 fresnel = ltc_polygon_fresnel(vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV), t0, t1, spec_vector, spec);
 		vec3 F = p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y;
 		r_specular += lr.radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
 	}
