@@ -5,7 +5,9 @@
 
 #include "modules/accuracy/accuracy_command.h"
 
+#include "modules/accuracy/accuracy_ltc_terms.h"
 #include "modules/accuracy/accuracy_suite.h"
+#include "modules/ltc_fit/ltc_table_io.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -22,10 +24,50 @@ bool parse_int(const String &p_text, int p_min, int p_max, int &r_value) {
 	return true;
 }
 
+// `bench --accuracy --ltc-terms`: the LTC error decomposition (accuracy_ltc_terms.h) of the selected plane
+// scenes, one line each; other scenes are counted and skipped.
+int ltc_terms_command(const AccuracySuite::Options &p_options, int p_light_samples, const String &p_lut) {
+	std::vector<float> table;
+	if (!p_lut.empty()) {
+		int size = 0;
+		std::vector<float> smith;
+		String error;
+		if (!LTCTableIO::load_inc(p_lut, &size, &table, &smith, &error)) {
+			fprintf(stderr, "godot-area bench --accuracy --ltc-terms: %s\n", error.c_str());
+			return 1;
+		}
+	}
+	std::vector<AccuracyScenes::Scene> scenes = p_options.ci_subset ? AccuracyScenes::ci_subset() : AccuracyScenes::full_suite();
+	int skipped = 0, done = 0;
+	for (const AccuracyScenes::Scene &scene : scenes) {
+		if (!p_options.filter.empty() && scene.id.find(p_options.filter) == String::npos) {
+			continue;
+		}
+		if (scene.receiver != AccuracyScenes::RECEIVER_PLANE || scene.shape != RS::LIGHT_AREA_SHAPE_RECTANGLE) {
+			skipped++;
+			continue;
+		}
+		AccuracyLTCTerms::Result result;
+		String error;
+		if (!AccuracyLTCTerms::evaluate(scene, p_options.resolution, p_light_samples, &result, &error, p_lut.empty() ? nullptr : &table)) {
+			fprintf(stderr, "godot-area bench --accuracy --ltc-terms: %s\n", error.c_str());
+			return 1;
+		}
+		printf("%s", AccuracyLTCTerms::format(result).c_str());
+		fflush(stdout);
+		done++;
+	}
+	printf("%d scenes decomposed (relRMSE (brightness ratio)); %d skipped (not a plane lit by a rectangle)\n", done, skipped);
+	return done > 0 ? 0 : 1;
+}
+
 } // namespace
 
 int accuracy_command(const std::vector<String> &p_args) {
 	AccuracySuite::Options options;
+	bool ltc_terms = false;
+	int light_samples = 128;
+	String lut;
 	for (size_t i = 0; i < p_args.size(); i++) {
 		const String &a = p_args[i];
 		const bool has_value = i + 1 < p_args.size();
@@ -35,6 +77,19 @@ int accuracy_command(const std::vector<String> &p_args) {
 			options.ci_subset = true;
 		} else if (a == "--shapes") {
 			options.shapes = true;
+		} else if (a == "--ltc-terms") {
+			ltc_terms = true;
+		} else if (a == "--lut") {
+			if (!has_value) {
+				fprintf(stderr, "godot-area bench --accuracy: --lut needs a path (an ltc_lut_data.inc written by ltc-fit)\n");
+				return 2;
+			}
+			lut = p_args[++i];
+		} else if (a == "--light-samples") {
+			if (!has_value || !parse_int(p_args[++i], 4, 4096, light_samples)) {
+				fprintf(stderr, "godot-area bench --accuracy: --light-samples must be an integer in [4, 4096]\n");
+				return 2;
+			}
 		} else if (a == "--progress") {
 			options.progress = true;
 		} else if ((a == "--csv" || a == "--thumbnails" || a == "--filter" || a == "--resolution" || a == "--methods") && !has_value) {
@@ -64,6 +119,9 @@ int accuracy_command(const std::vector<String> &p_args) {
 			fprintf(stderr, "godot-area bench --accuracy: unknown argument '%s'\n", a.c_str());
 			return 2;
 		}
+	}
+	if (ltc_terms) {
+		return ltc_terms_command(options, light_samples, lut);
 	}
 	std::vector<AccuracySuite::Row> rows;
 	String error;

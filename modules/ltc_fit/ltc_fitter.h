@@ -89,20 +89,22 @@ public:
 	static constexpr int FLOATS_PER_CELL = 8;
 
 	// The committed engine table (ltc_lut_data.inc, issue #18): the cells roughness index
-	// ENGINE_REFIT_R0..R1 x view-angle index ENGINE_REFIT_T0..T1 (roughness 0.19..0.79, theta_v >= 52
-	// degrees) were refitted with engine_refit_options() from the 3-parameter L3 table, which the other
-	// cells (and the whole Smith table) keep:
-	//   godot-area ltc-fit --brdf engine --cells 12:50,40:63 --free-axis --polygons --smoothness 1
+	// ENGINE_REFIT_R0..R1 x view-angle index ENGINE_REFIT_T0..T1 (roughness >= 0.19, every view angle)
+	// were refitted with engine_refit_options(), each row's chain starting from the default at roughness
+	// 1; the glossier cells (near-mirror lobes smaller than the objective's 3-degree test lights: their
+	// refit diverged) and the whole Smith table keep the 3-parameter L3 fit:
+	//   godot-area ltc-fit --brdf engine --cells 12:63,0:63 --free-axis --polygons --smoothness 1
 	static constexpr int ENGINE_REFIT_R0 = 12;
-	static constexpr int ENGINE_REFIT_R1 = 50;
-	static constexpr int ENGINE_REFIT_T0 = 40;
+	static constexpr int ENGINE_REFIT_R1 = 63;
+	static constexpr int ENGINE_REFIT_T0 = 0;
 	static constexpr int ENGINE_REFIT_T1 = 63;
 	static LTCFitOptions engine_refit_options();
 	// The committed engine table with the refit block fitted again as the 3-parameter L3 fit (each row's
-	// chain starts from the untouched cell ENGINE_REFIT_R1 + 1, so this reproduces the table the block
-	// replaced, bit for bit in the same build). The LUT-free polynomials (LTC_POLYNOMIAL) are fitted
-	// to it: fitted to the refit table, degree-5 patches cannot follow the block's edge at roughness
-	// 0.19 and LTC_POLYNOMIAL regressed (plane_r0.1_m1_2x0.5_far relRMSE 0.027 -> 0.62).
+	// chain starts from the default at roughness 1, as the full fit did, so this reproduces the table the
+	// block replaced, bit for bit in the same build). The LUT-free polynomials (LTC_POLYNOMIAL) are fitted
+	// to it: degree-5 patches cannot follow the refit table (fitted to the grazing block alone,
+	// LTC_POLYNOMIAL regressed: plane_r0.1_m1_2x0.5_far relRMSE 0.027 -> 0.62; to the full refit, a and b
+	// keep RMSE 0.021 and 0.040 against 0.004 and 0.002 here).
 	static bool get_three_parameter_engine_table(std::vector<float> &r_table, int p_threads = 0);
 	static bool is_engine_refit_cell(int p_roughness_index, int p_angle_index) {
 		return p_roughness_index >= ENGINE_REFIT_R0 && p_roughness_index <= ENGINE_REFIT_R1 && p_angle_index >= ENGINE_REFIT_T0 && p_angle_index <= ENGINE_REFIT_T1;

@@ -43,15 +43,17 @@ namespace TestLTCPolynomial {
 // roughness 0.25 / 0.5 / 0.75 / 1) and 0.70 %, 0.93 % (Forward+, roughness 0.25 / 0.5). (One
 // polynomial per component over the whole table gave 5.9 %, 2.1 %, 2.0 %, 5.6 %.) The error is
 // largest at roughness 1 (edge of the fitted domain).
-// Since issue #18 the LUT's grazing block (roughness 0.19..0.79, theta_v >= 52 degrees) holds the
-// free-axis polygon fit while the polynomials still fit the 3-parameter table, so at roughness 0.25 /
-// 0.5 / 0.75 the two paths differ by design where the plane is seen at grazing angles: measured
-// 2.07 %, 10.4 %, 10.6 %, 3.6 % (compute) and 2.08 %, 10.4 % (Forward+); the bounds keep a margin
-// above these. The fit of the polynomials themselves is checked against that table above.
+// Since issue #18 the LUT holds the free-axis polygon fit for every roughness >= 0.19 (the full-table
+// refit, modules/ltc_fit/ltc_fitter.h ENGINE_REFIT_*) while the polynomials still fit the 3-parameter
+// table (fitted to the refit table, degree-5 patches leave a RMSE 0.021 and b 0.040: they cannot follow
+// its grazing rows nor the step at roughness 0.19), so the two paths differ by design: measured 2.07 %,
+// 10.4 %, 10.6 %, 6.56 % (compute, roughness 0.25 / 0.5 / 0.75 / 1) and 2.08 %, 10.4 % (Forward+); the
+// bounds keep a margin above these. The fit of the polynomials themselves is checked against that
+// table above.
 static const double MAX_REL_025 = 0.03;
 static const double MAX_REL_050 = 0.13;
 static const double MAX_REL_075 = 0.13;
-static const double MAX_REL_100 = 0.05;
+static const double MAX_REL_100 = 0.08;
 
 static String read_text(const String &p_path) {
 	std::ifstream f(p_path, std::ios::binary);

@@ -10,7 +10,9 @@
 /* P = the rectangle seen from the point in a frame with z = N,           */
 /* FF_cos(Q) = (1 / pi) integral over Q (clipped to z >= 0) of cos dl,    */
 /* i.e. the cosine form factor of the polygon (Lambert 1760: a sum of     */
-/* edge integrals), F = f0 fn + (f90 - f0) fg (thesis eq. 5.10).          */
+/* edge integrals), F = f0 fn + (f90 - f0) fg (thesis eq. 5.10) with fg   */
+/* moved to the Schlick weight of the lit part of the lobe                */
+/* (ltc_polygon_fresnel, issue #18).                                      */
 /*                                                                        */
 /* Diffuse: the EXACT Lambert integral (M = identity). Burley materials   */
 /* use the same Lambert integral (there is no closed form for Burley's    */
@@ -85,8 +87,10 @@
 #define LTC_LUT_SIZE 64.0
 
 // Edge from p_v1 to p_v2 (points of the clipped polygon relative to the shading point, not unit), with
-// p_a, p_b their unit directions (normalised once per vertex by the caller).
-float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
+// p_a, p_b their unit directions (normalised once per vertex by the caller). Returns the edge's term of
+// the vector form factor, theta * n with n the unit normal of the edge's great circle (Arvo 1994); its z
+// is the term of the cosine form factor. Callers that read only z let the compiler drop x and y.
+vec3 ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
 	// theta * n.z with theta = atan(|a x b|, a.b): accurate in absolute terms over the whole range (acos is
 	// not near +-1). Only the direction n of the great circle is ill-conditioned for near-antipodal a, b
 	// (a x b tiny and noisy), so for an edge wider than 120 degrees (thesis section 5.4.4) it is taken from
@@ -105,7 +109,7 @@ float ltc_edge_integral(vec3 p_v1, vec3 p_v2, vec3 p_a, vec3 p_b) {
 		c = cross(p_a, m / max(length(m), 1e-30));
 		s = length(c);
 	}
-	return s < 1e-12 ? 0.0 : theta * c.z / s; // 0 for a zero-length edge (a == b).
+	return s < 1e-12 ? vec3(0.0) : c * (theta / s); // 0 for a zero-length edge (a == b).
 }
 
 // Slot p_i of a clipped polygon of at most 6 vertices (c0..c5 are named, not an array: no indexed local
@@ -150,14 +154,15 @@ void ltc_clip_polygon(int p_n, vec3 p0, vec3 p1, vec3 p2, vec3 p3, vec3 p4, out 
 	}
 }
 
-// (1 / pi) integral of cos over the spherical projection of the closed polygon p_n, c0..c5 (3 to 6
-// vertices, every one with z >= 0: already clipped), i.e. the cosine form factor (Lambert: 1/2 sum
-// theta_i n.gamma_i, divided by pi). In [0, 1]; independent of the winding.
-float ltc_polygon_integral(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
+// Vector form factor sum theta_i n_i of the closed polygon p_n, c0..c5 (3 to 6 vertices, every one
+// with z >= 0: already clipped), in the polygon's winding. abs(.z) / (2 pi) is the cosine form factor
+// (Lambert: 1/2 sum theta_i n.gamma_i, divided by pi), and the vector, turned to z >= 0, points along
+// the mean direction of the clamped cosine over the polygon (Arvo 1994).
+vec3 ltc_polygon_vector(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
 	// The edges in order, each vertex picked and normalised once. The trip count is the lanes' largest
 	// p_n (4 for a rectangle above the horizon): a software rasterizer runs a loop body only while some
 	// lane is in it, but every side of an if.
-	float sum = 0.0;
+	vec3 sum = vec3(0.0);
 	vec3 first = c0 / max(length(c0), 1e-30);
 	vec3 v1 = c0;
 	vec3 a = first;
@@ -169,7 +174,13 @@ float ltc_polygon_integral(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4,
 		v1 = v2;
 		a = b;
 	}
-	return abs(sum) * (0.5 / M_PI);
+	return sum;
+}
+
+// (1 / pi) integral of cos over the spherical projection of the closed polygon p_n, c0..c5 (as
+// ltc_polygon_vector), i.e. the cosine form factor. In [0, 1]; independent of the winding.
+float ltc_polygon_integral(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, vec3 c5) {
+	return abs(ltc_polygon_vector(p_n, c0, c1, c2, c3, c4, c5).z) * (0.5 / M_PI);
 }
 
 // Cosine form factor of the quad p_q (a planar convex polygon not containing the origin) clipped to
@@ -196,10 +207,13 @@ float ltc_polygon_form_factor(vec3 p_q[4]) {
 //   branch; its image under M^-1 is exactly z_o >= 0, so clipping there is the same clip).
 // Fast path: a rectangle wholly above the receiver's plane (every corner z > 0, the common case) is not
 // clipped at all: its four corners are the diffuse polygon, and M^-1 of them the specular one.
-// r_specular is left 0 unless p_specular_enabled.
-void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, out float r_diffuse, out float r_specular) {
+// r_specular is left 0 unless p_specular_enabled. r_specular_vector: the specular polygon's vector form
+// factor in the cosine space, turned to z >= 0 (its direction mapped by M is the mean direction of the
+// lobe over the light), 0 where r_specular is 0.
+void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, out float r_diffuse, out float r_specular, out vec3 r_specular_vector) {
 	r_diffuse = 0.0;
 	r_specular = 0.0;
+	r_specular_vector = vec3(0.0);
 	int n = 4;
 	vec3 c0 = p_q[0], c1 = p_q[1], c2 = p_q[2], c3 = p_q[3], c4 = p_q[3], c5 = p_q[3];
 	if (!(min(min(p_q[0].z, p_q[1].z), min(p_q[2].z, p_q[3].z)) > 0.0)) {
@@ -220,7 +234,41 @@ void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, o
 	if (z_min < 0.0) {
 		ltc_clip_polygon(n, s0, s1, s2, s3, s4, m, d0, d1, d2, d3, d4, d5);
 	}
-	r_specular = m < 3 ? 0.0 : ltc_polygon_integral(m, d0, d1, d2, d3, d4, d5);
+	if (m >= 3) {
+		vec3 v = ltc_polygon_vector(m, d0, d1, d2, d3, d4, d5);
+		r_specular_vector = v.z < 0.0 ? -v : v;
+		r_specular = r_specular_vector.z * (0.5 / M_PI);
+	}
+}
+
+// Schlick's weight (1 - v.h)^5 (thesis eq. 2.4) of the unit light direction p_l for the unit view p_v.
+float ltc_schlick_weight(vec3 p_v, vec3 p_l) {
+	vec3 h = p_v + p_l;
+	float m = clamp(1.0 - dot(p_v, h) * inversesqrt(max(dot(h, h), 1e-30)), 0.0, 1.0);
+	float m2 = m * m;
+	return m2 * m2 * m;
+}
+
+// The Fresnel integral of the specular lobe over the light (issue #18). Thesis eq. 5.10 takes the lobe's
+// Schlick weight averaged over the whole hemisphere, fg / fn; a light that covers only part of the lobe
+// sees the weight of that part, which at grazing views differs a lot (the mirror direction of a TV over
+// a floor seen at 10 degrees has (1 - v.h)^5 = 0.39, the whole lobe's average far less: LTC was 8-16 %
+// too dark there, from Fresnel alone). The weight is taken at the polygon's mean direction (its vector
+// form factor mapped by M, from p_vector), exact for a small light, plus the gap between the lobe's mean
+// weight fg / fn and the weight at the lobe's own mean direction (the axis M z = (b, 0, e)) in proportion
+// to the share of the lobe the light covers (p_coverage, the LTC integral), so a light covering the whole
+// lobe keeps eq. 5.10 exactly. p_v: the view in the fitter's frame; p_t0 = (a, b, c, d), p_t1 = (e, fn,
+// fg, 0). Returns the effective (fn, fg), fg in [0, fn].
+vec2 ltc_polygon_fresnel(vec3 p_v, vec4 p_t0, vec4 p_t1, vec3 p_vector, float p_coverage) {
+	vec3 l_mean = vec3(p_t0.x * p_vector.x + p_t0.y * p_vector.z, p_t0.z * p_vector.y, p_t0.w * p_vector.x + p_t1.x * p_vector.z);
+	vec3 axis = vec3(p_t0.y, 0.0, p_t1.x);
+	float ll = dot(l_mean, l_mean);
+	if (!(ll > 1e-30)) {
+		return p_t1.yz;
+	}
+	float w_mean = ltc_schlick_weight(p_v, l_mean * inversesqrt(ll));
+	float w_axis = ltc_schlick_weight(p_v, axis * inversesqrt(max(dot(axis, axis), 1e-30)));
+	return vec2(p_t1.y, clamp(p_t1.y * w_mean + p_coverage * (p_t1.z - p_t1.y * w_axis), 0.0, p_t1.y));
 }
 
 #ifdef AREA_LTC_HAS_LUT
@@ -359,7 +407,8 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	// specular: the LTC's integral over the same clipped polygon mapped by M^-1.
 	float diffuse;
 	float spec;
-	ltc_rect_form_factors(q, p_specular_enabled, m_inv, diffuse, spec);
+	vec3 spec_vector;
+	ltc_rect_form_factors(q, p_specular_enabled, m_inv, diffuse, spec, spec_vector);
 	r_diffuse += lr.radiance * diffuse * area_texture_ltc(p_light, q, true); // Texture: area_light_texture_inc.glsl.
 	if (p_specular_enabled) {
 		// The texture is fetched where the lobe's vector form factor meets the light in LTC space
@@ -370,8 +419,9 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 			qs[i] = m_inv * q[i];
 		}
 #endif
-		// Thesis eq. 5.10.
-		vec3 F = p_f0 * t1.y + (vec3(p_f90) - p_f0) * t1.z;
+		// Thesis eq. 5.10 with the Fresnel weight of the lit part of the lobe (ltc_polygon_fresnel).
+		vec2 fresnel = ltc_polygon_fresnel(vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV), t0, t1, spec_vector, spec);
+		vec3 F = p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y;
 		r_specular += lr.radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
 	}
 }
