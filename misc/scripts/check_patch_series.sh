@@ -21,10 +21,11 @@ keep=0
 while [ $# -gt 0 ]; do
 	case "$1" in
 		--each) each=1 ;;
+		--compile) each=2 ;;
 		--from) from="$2"; shift ;;
 		--to) to="$2"; shift ;;
 		--keep) keep=1 ;;
-		*) echo "usage: $0 [--each [--from N] [--to M]] [--keep]" >&2; exit 2 ;;
+		*) echo "usage: $0 [--each|--compile [--from N] [--to M]] [--keep]" >&2; exit 2 ;;
 	esac
 	shift
 done
@@ -65,6 +66,9 @@ fi
 
 # 3. Apply to BASE and compare with the tree.
 git worktree add --quiet --detach "$wt" "$base"
+if [ "$each" != 0 ] && [ -d build ]; then
+	cp -a build "$wt/build"
+fi
 count=0
 built=0
 applied=0
@@ -77,6 +81,25 @@ while read -r name _; do
 		break
 	fi
 	applied=$((applied + 1))
+	if [ "$each" = 2 ] && [ "$count" -ge "$from" ] && [ "$count" -le "$to" ]; then
+		t0=$(date +%s)
+		objects=$(grep -E '^\+\+\+ b/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' | grep -v '^tests/fuzz/' | grep -v '^modules/python/godot_area_' | sed 's|^\(.*\)\.cpp$|build/release/\1.o|' || true)
+		result="nothing to compile"
+		if [ -n "$objects" ]; then
+			# shellcheck disable=SC2086
+			if (cd "$wt" && scons -Q -j2 target=release $objects >"$tmp/build_$count.log" 2>&1); then
+				result="compiled $(echo "$objects" | wc -l) files"
+			else
+				echo "compile fails after $name (log: $tmp/build_$count.log):" >&2
+				grep -m8 -E 'error' "$tmp/build_$count.log" >&2 || tail -5 "$tmp/build_$count.log" >&2
+				fail=1
+				keep=1
+				result="COMPILE FAILS"
+			fi
+		fi
+		built=$((built + 1))
+		echo "after $name: $result ($(($(date +%s) - t0)) s)"
+	fi
 	if [ "$each" = 1 ] && [ "$count" -ge "$from" ] && [ "$count" -le "$to" ]; then
 		t0=$(date +%s)
 		if ! (cd "$wt" && scons -Q -j2 target=release >"$tmp/build_$count.log" 2>&1); then
@@ -112,5 +135,6 @@ status="ok"
 [ "$fail" = 0 ] || status="FAILED"
 extra=""
 [ "$each" = 1 ] && extra=", $built built and tested"
+[ "$each" = 2 ] && extra=", $built compiled"
 echo "patch series: $status: $applied of $count patches applied to ${base:0:12}, tree compared$extra ($(($(date +%s) - start)) s)"
 exit "$fail"

@@ -15,7 +15,7 @@ if [ "${1:-}" = "--target" ]; then
 fi
 out="${1:-patches/series}"
 # Refuse to write a series that leaves a tree file behind or names a missing one.
-python3 patches/series_tool.py check --target "$target" >/dev/null
+python3 patches/series_tool.py check --target "$target" >/dev/null || [ $? = 3 ]
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 python3 patches/series_tool.py write "$tmp" --target "$target" >/dev/null
@@ -24,4 +24,4 @@ mkdir -p "$(dirname "$out")"
 mv "$tmp" "$out"
 trap - EXIT
 chmod 755 "$out"
-echo "wrote $(grep -c '\.patch$' "$out/INDEX") patches against $(cut -c1-12 patches/BASE) to $out (largest: $(grep '^largest' "$out/INDEX" | cut -d' ' -f2-))"
+echo "wrote $(grep -c '\.patch ' "$out/INDEX") patches against $(cut -c1-12 patches/BASE) to $out (largest: $(grep '^largest' "$out/INDEX" | cut -d' ' -f2-))"
