@@ -26,7 +26,8 @@ Manifest syntax (one item a line; '#' starts a comment line):
                                  rules are tried latest patch first, so a broad early rule (`area`) is
                                  the fallback of specific later ones (`area_shadow`)
   ~! PATH REGEX                  a pin: tried before every `~` rule (pins in manifest order), for a
-                                 hunk that mixes features and is needed by the earliest of them
+                                 hunk that mixes features and is needed by the earliest of them; a pin
+                                 in the file's home patch keeps the hunk there
   = OLD NEW                      NEW is OLD moved (git's rename detection adds its own pairs): NEW
                                  diffs against OLD's BASE text, and OLD is deleted in NEW's home patch
   exclude GLOB                   paths changed since BASE that no patch carries (results, binaries)
@@ -34,7 +35,7 @@ Manifest syntax (one item a line; '#' starts a comment line):
   generated GLOB                 generated data (the LUT): carried, but not counted in patch sizes
 """
 
-import fnmatch
+import difflib
 import os
 import re
 import subprocess
@@ -194,13 +195,77 @@ def parse_hunks(base_blob, target_blob):
 			start = int(m.group(1))
 			count = int(m.group(2)) if m.group(2) is not None else 1
 			index = start if count == 0 else start - 1
-			hunks.append([index, count, [], []])
+			hunks.append([index, count, [], [], []])
 		elif hunks and line.startswith(b"+") and not line.startswith(b"+++"):
 			hunks[-1][2].append(line[1:])
 			hunks[-1][3].append(line[1:])
 		elif hunks and line.startswith(b"-") and not line.startswith(b"---"):
 			hunks[-1][3].append(line[1:])
-	return hunks
+			hunks[-1][4].append(line[1:])
+	# A pure insertion is split into top-level blocks (see split_blocks), each its own hunk at the same
+	# place, so one rule can take the Sky lines of an #include or registration list and leave the rest.
+	# A replacement that adds more than it removes keeps only the added lines most like the removed ones
+	# as the replacement; what it adds before and after them becomes insertion blocks too.
+	split = []
+	for index, count, added, text, removed in hunks:
+		if count == 0 and len(added) > 1:
+			for block in split_blocks(added):
+				split.append([index, 0, block, list(block)])
+			continue
+		if count and len(added) > count + 1:
+			best = [max(range(len(added)), key=lambda i: difflib.SequenceMatcher(None, r, added[i]).ratio()) for r in removed]
+			lo, hi = min(best), max(best)
+			for block in split_blocks(added[:lo]) if lo else []:
+				split.append([index, 0, block, list(block)])
+			split.append([index, count, added[lo : hi + 1], removed + added[lo : hi + 1]])
+			for block in split_blocks(added[hi + 1 :]) if hi + 1 < len(added) else []:
+				split.append([index + count, 0, block, list(block)])
+			continue
+		split.append([index, count, added, text])
+	return split
+
+
+def split_blocks(lines):
+	"""Top-level blocks of inserted lines: a line at the smallest indentation starts a block; deeper lines,
+	closing brackets and blank lines continue it; comment lines at that indentation open the next block;
+	#if ... #endif stays one block. Function bodies, enums and loops therefore never split."""
+
+	def indent(line):
+		return len(line) - len(line.lstrip())
+
+	def is_comment(stripped):
+		return stripped.startswith((b"//", b"/*", b"*"))
+
+	code = [l for l in lines if l.strip() and not is_comment(l.strip())]
+	if not code:
+		return [lines]
+	base = min(indent(l) for l in code)
+	blocks = []
+	pending = []
+	depth = 0
+	for line in lines:
+		stripped = line.strip()
+		starts = False
+		if stripped and indent(line) == base and depth == 0 and not stripped.startswith((b"}", b")", b"]", b"#endif", b"#else", b"#elif")):
+			if is_comment(stripped):
+				pending.append(line)
+				continue
+			starts = True
+		if re.match(rb"#\s*if", stripped):
+			depth += 1
+		elif re.match(rb"#\s*endif", stripped):
+			depth = max(0, depth - 1)
+		if starts or not blocks:
+			blocks.append(pending + [line])
+		else:
+			blocks[-1].extend(pending + [line])
+		pending = []
+	if pending:
+		if blocks:
+			blocks[-1].extend(pending)
+		else:
+			blocks.append(pending)
+	return blocks
 
 
 def apply_hunks(base_bytes, hunks, chosen, target_bytes):
@@ -279,8 +344,8 @@ class Plan:
 				if path not in self.home:
 					self.errors.append("%s: hunk rule for %s, which no patch claims" % (p.line, path))
 					continue
-				if self.home[path] >= k:
-					self.errors.append("%s: hunk rule for %s must come after its home patch" % (p.line, path))
+				if self.home[path] > k or (self.home[path] == k and not pin):
+					self.errors.append("%s: hunk rule for %s must come after its home patch (or be a `~!` pin there)" % (p.line, path))
 					continue
 				if self.changed[path] != "M" and path not in self.moved_from:
 					self.errors.append("%s: hunk rules apply to modified files only: %s" % (p.line, path))

@@ -53,6 +53,7 @@ cleanup() {
 	fi
 }
 trap cleanup EXIT
+trap 'exit 130' INT TERM
 if [ ! -f "$series/INDEX" ]; then
 	echo "no committed series: run ./misc/scripts/make_patch_series.sh" >&2
 	exit 1
@@ -87,11 +88,11 @@ while read -r name _; do
 		result="nothing to compile"
 		if [ -n "$objects" ]; then
 			# shellcheck disable=SC2086
-			if (cd "$wt" && scons -Q -j2 target=release $objects >"$tmp/build_$count.log" 2>&1); then
+			if (cd "$wt" && scons -Q -k -j2 target=release $objects >"$tmp/build_$count.log" 2>&1); then
 				result="compiled $(echo "$objects" | wc -l) files"
 			else
 				echo "compile fails after $name (log: $tmp/build_$count.log):" >&2
-				grep -m8 -E 'error' "$tmp/build_$count.log" >&2 || tail -5 "$tmp/build_$count.log" >&2
+				grep -E 'error' "$tmp/build_$count.log" | sort -u | head -12 >&2 || tail -5 "$tmp/build_$count.log" >&2
 				fail=1
 				keep=1
 				result="COMPILE FAILS"
