@@ -35,7 +35,6 @@ Manifest syntax (one item a line; '#' starts a comment line):
   generated GLOB                 generated data (the LUT): carried, but not counted in patch sizes
 """
 
-import difflib
 import os
 import re
 import subprocess
@@ -204,22 +203,11 @@ def parse_hunks(base_blob, target_blob):
 			hunks[-1][4].append(line[1:])
 	# A pure insertion is split into top-level blocks (see split_blocks), each its own hunk at the same
 	# place, so one rule can take the Sky lines of an #include or registration list and leave the rest.
-	# A replacement that adds more than it removes keeps only the added lines most like the removed ones
-	# as the replacement; what it adds before and after them becomes insertion blocks too.
 	split = []
 	for index, count, added, text, removed in hunks:
 		if count == 0 and len(added) > 1:
 			for block in split_blocks(added):
 				split.append([index, 0, block, list(block)])
-			continue
-		if count and len(added) > count + 1:
-			best = [max(range(len(added)), key=lambda i: difflib.SequenceMatcher(None, r, added[i]).ratio()) for r in removed]
-			lo, hi = min(best), max(best)
-			for block in split_blocks(added[:lo]) if lo else []:
-				split.append([index, 0, block, list(block)])
-			split.append([index, count, added[lo : hi + 1], removed + added[lo : hi + 1]])
-			for block in split_blocks(added[hi + 1 :]) if hi + 1 < len(added) else []:
-				split.append([index + count, 0, block, list(block)])
 			continue
 		split.append([index, count, added, text])
 	return split
