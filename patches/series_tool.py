@@ -298,6 +298,7 @@ class Plan:
 		return not self.covers or any(path == c or path.startswith(c + "/") for c in self.covers)
 
 	def assign(self):
+		self.warnings = []
 		self.home = {}
 		self.unassigned = []
 		self.excluded = []
@@ -323,10 +324,10 @@ class Plan:
 		for k, p in enumerate(self.patches):
 			for pattern, r in p.globs:
 				if not any(r.match(path) for path in self.changed):
-					self.errors.append("%s: `+ %s` matches no path changed since BASE" % (p.line, pattern))
+					# A warning, not an error: a pattern may name files another branch is about to bring.
+					self.warnings.append("%s: `+ %s` matches no path changed since BASE" % (p.line, pattern))
 		# Hunk rules: a split file's hunks go to the first later patch whose rule matches them.
 		self.split = {}
-		self.warnings = []
 		for k, p in enumerate(self.patches):
 			for path, regex, pin in p.hunk_rules:
 				if path not in self.home:
@@ -516,7 +517,9 @@ def include_check(plan):
 				content = read_blobs([data])[data]
 			key = (path, content if isinstance(data, bytes) else data)
 			if key not in cache:
-				cache[key] = unconditional_includes(content)
+				# C++: every include (the build defines its conditions, e.g. GODOT_AREA_EDITOR_WINDOW);
+				# GLSL: only unconditional ones (a variant's #ifdef decides at run time).
+				cache[key] = unconditional_includes(content) if path.endswith(".glsl") else [m.decode() for m in INCLUDE.findall(content)]
 			for inc in cache[key]:
 				if inc.endswith(".gen.h") or (inc.endswith(".glsl") and not path.endswith(".glsl")):
 					continue  # Generated, or GLSL text inside a C++ test's string.
