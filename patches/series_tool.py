@@ -214,47 +214,62 @@ def parse_hunks(base_blob, target_blob):
 
 
 def split_blocks(lines):
-	"""Top-level blocks of inserted lines: a line at the smallest indentation starts a block; deeper lines,
-	closing brackets and blank lines continue it; comment lines at that indentation open the next block;
-	#if ... #endif stays one block. Function bodies, enums and loops therefore never split."""
+	"""Blocks of inserted lines that can move between patches on their own. A line starts a new block when
+	nothing is open in the current one ((, [, { all closed) and it is not indented deeper than the current
+	block's first line; deeper lines, matched closing brackets and #if ... #endif continue it; a comment
+	heads the block after it; a closing bracket with nothing open closes a scope of the base text and goes
+	with the next block (which reopens one). Function bodies, enums and calls therefore never split."""
 
 	def indent(line):
 		return len(line) - len(line.lstrip())
 
-	def is_comment(stripped):
-		return stripped.startswith((b"//", b"/*", b"*"))
+	def balance(stripped):
+		code = re.sub(rb'"(\\.|[^"\\])*"', b"", stripped.split(b"//")[0])
+		return sum(code.count(c) for c in b"([{") - sum(code.count(c) for c in b")]}")
 
-	code = [l for l in lines if l.strip() and not is_comment(l.strip())]
-	if not code:
-		return [lines]
-	base = min(indent(l) for l in code)
 	blocks = []
 	pending = []
-	depth = 0
+	first_indent = 0
+	open_count = 0
+	preprocessor = 0
 	for line in lines:
 		stripped = line.strip()
-		starts = False
-		if stripped and indent(line) == base and depth == 0 and not stripped.startswith((b"}", b")", b"]", b"#endif", b"#else", b"#elif")):
-			if is_comment(stripped):
+		if not stripped:
+			(blocks[-1] if blocks and not pending else pending).append(line)
+			continue
+		if preprocessor == 0 and open_count <= 0 and blocks and indent(line) <= first_indent:
+			if stripped.startswith((b"}", b")", b"]")) and balance(stripped) < 0 and not re.search(rb"[({[]", stripped):
+				pending.append(line)  # Closes a scope of the base text: goes with the block that reopens one.
+				continue
+			if stripped.startswith((b"//", b"/*", b"*")):
 				pending.append(line)
 				continue
-			starts = True
-		if re.match(rb"#\s*if", stripped):
-			depth += 1
-		elif re.match(rb"#\s*endif", stripped):
-			depth = max(0, depth - 1)
-		if starts or not blocks:
 			blocks.append(pending + [line])
+			pending = []
+			first_indent = indent(line)
+			open_count = 0
+		elif not blocks:
+			if stripped.startswith((b"//", b"/*", b"*")):
+				pending.append(line)
+				continue
+			blocks.append(pending + [line])
+			pending = []
+			first_indent = indent(line)
 		else:
 			blocks[-1].extend(pending + [line])
-		pending = []
+			pending = []
+		if re.match(rb"#\s*if", stripped):
+			preprocessor += 1
+		elif re.match(rb"#\s*endif", stripped):
+			preprocessor = max(0, preprocessor - 1)
+		elif not stripped.startswith(b"#"):
+			open_count += balance(stripped)
 	if pending:
 		if blocks:
 			blocks[-1].extend(pending)
 		else:
 			blocks.append(pending)
 	return blocks
-
 
 def apply_hunks(base_bytes, hunks, chosen, target_bytes):
 	if len(chosen) == len(hunks):
