@@ -293,6 +293,9 @@ public:
 				return fail(line, vformat("Node \"%s\": type must be a string.", name.c_str()));
 			}
 			String type = p_tag.get("type").to_string();
+			if (type.empty()) {
+				return fail(line, vformat("Node \"%s\": type is empty (name a class, or use instance=ExtResource(...)).", name.c_str()));
+			}
 			if (!ClassDB::class_exists(type) || !ClassDB::is_parent_class(type, "Node") || !ClassDB::can_instantiate(type)) {
 				problem(line, "type:" + type, vformat("Unknown node type \"%s\": kept as a placeholder (acts as Node3D, keeps its children; type and properties written back on save).", type.c_str()));
 				MissingNode *m = new MissingNode;

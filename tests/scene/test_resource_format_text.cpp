@@ -472,6 +472,17 @@ TEST_CASE("[SceneTree][TSCN] Malformed: a sub_resource naming itself is an error
 	CHECK_MESSAGE(err.find("bad.tscn:4: SubResource(\"M\") refers to the sub_resource it is a property of") == 0, err.c_str());
 }
 
+TEST_CASE("[SceneTree][TSCN] Malformed: an empty node type is an error, for the root and for a child") {
+	register_tscn_test_types();
+	// Found by fuzz_resource_format_text (save(load(x)) did not load; seed
+	// tests/fuzz/corpus/tscn/regress_empty_node_type.tscn): type="" made a placeholder of no class, saved
+	// without a type, which then failed to load as a root without a type.
+	String err = load_error("[gd_scene][node name=\"t\"type=\"\"]");
+	CHECK_MESSAGE(err.find("bad.tscn:1: Node \"t\": type is empty") == 0, err.c_str());
+	err = load_error(String(HEADER) + "\n[node name=\"B\" type=\"\" parent=\".\"]\n");
+	CHECK_MESSAGE(err.find("bad.tscn:10: Node \"B\": type is empty") == 0, err.c_str());
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: missing parent or root") {
 	register_tscn_test_types();
 	String err = load_error(String(HEADER) + "\n[node name=\"B\" type=\"Node\" parent=\"Nowhere/Else\"]\n");
