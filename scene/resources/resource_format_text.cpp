@@ -162,11 +162,23 @@ String _trim_right(const String &p_s) {
 	return p_s.substr(0, e);
 }
 
-// Splits "[name k=v k2=[1, 2] k3="a b"]" into its fields as written.
+// Splits "[name k=v k2=[1, 2] k3="a b"]" into its fields as written. Blanks and ';' comments before
+// the tag are skipped: a '[' inside such a comment is not the tag (found by fuzz_resource_format_text).
 std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 	std::vector<std::pair<String, String>> out;
-	size_t p = p_raw.find('[');
-	if (p == String::npos) {
+	size_t p = 0;
+	while (p < p_raw.size() && p_raw[p] != '[') {
+		if (p_raw[p] == ';') {
+			while (p < p_raw.size() && p_raw[p] != '\n') {
+				p++;
+			}
+		} else if (isspace((unsigned char)p_raw[p])) {
+			p++;
+		} else {
+			return out;
+		}
+	}
+	if (p >= p_raw.size()) {
 		return out;
 	}
 	p++;

@@ -483,6 +483,26 @@ TEST_CASE("[SceneTree][TSCN] Malformed: an empty node type is an error, for the 
 	CHECK_MESSAGE(err.find("bad.tscn:10: Node \"B\": type is empty") == 0, err.c_str());
 }
 
+TEST_CASE("[SceneTree][TSCN] A '[' in a comment before a section is not the section's header") {
+	register_tscn_test_types();
+	// Found by fuzz_resource_format_text (save(load(x)) did not load; seed
+	// tests/fuzz/corpus/tscn/regress_comment_bracket.tscn): the header fields written back on save were split
+	// from the first '[' of the raw text, which was the one inside the comment.
+	for (const char *text : { "[gd_scene format=3];[\n[node name=\"o\" type=\"TscnTestNode\"]\n", ";[ x\n[gd_scene format=3]\n; [node name=\"x\"]\n[node name=\"o\" type=\"TscnTestNode\"]\n" }) {
+		CAPTURE(text);
+		String err;
+		Node *root = ResourceFormatText::load_scene_from_string(text, "comment.tscn", &err);
+		REQUIRE_MESSAGE(root, err.c_str());
+		const String saved = ResourceFormatText::save_scene_to_string(root);
+		delete root;
+		CHECK_MESSAGE(saved.find("[node name=\"o\" type=\"TscnTestNode\"]\n") != String::npos, saved.c_str());
+		Node *again = ResourceFormatText::load_scene_from_string(saved, "comment.tscn", &err);
+		REQUIRE_MESSAGE(again, err.c_str());
+		CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
+		delete again;
+	}
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: missing parent or root") {
 	register_tscn_test_types();
 	String err = load_error(String(HEADER) + "\n[node name=\"B\" type=\"Node\" parent=\"Nowhere/Else\"]\n");
