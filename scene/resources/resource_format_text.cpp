@@ -214,6 +214,9 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 					p += p_raw[p] == '\\' ? 2 : 1;
 				}
 				p++;
+				if (depth == 0) {
+					break; // A string value ends at its quote, as the tag parser reads it: name="a"b= is two fields.
+				}
 				continue;
 			}
 			if (c == '(' || c == '[' || c == '{') {

@@ -412,6 +412,12 @@ public:
 	}
 
 	bool run() {
+		// A text scene holds no binary data; a NUL byte would also cut the header text kept for the save
+		// (found by fuzz_resource_format_text).
+		const size_t nul = stream.text.find('\0');
+		if (nul != String::npos) {
+			return fail(1 + (int)std::count(stream.text.begin(), stream.text.begin() + nul, '\n'), "NUL byte: a text scene or resource holds no binary data.");
+		}
 		VariantParser::ResourceFunc res_func = [this](const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
 			return resolve_reference(p_kind, p_id, r_value, r_error);
 		};

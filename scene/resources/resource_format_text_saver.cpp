@@ -310,6 +310,15 @@ String ResourceFormatText::save_scene_to_string(const Node *p_root) {
 	int load_steps = (int)(state.ext_list.size() + state.sub_list.size()) + 1;
 	if (root_data && !root_data->file_header.empty()) {
 		out += "[gd_scene";
+		// Godot 4 always writes the format; a header without one (load_steps only, or none) gets it, so
+		// the file saved is one that saves back the same (found by fuzz_resource_format_text).
+		bool has_format = false;
+		for (const auto &F : root_data->file_header) {
+			has_format = has_format || F.first == "format";
+		}
+		if (!has_format) {
+			out += " format=3";
+		}
 		for (const auto &F : root_data->file_header) {
 			if (F.first == "load_steps") {
 				if (load_steps > 1) {

@@ -503,6 +503,44 @@ TEST_CASE("[SceneTree][TSCN] A '[' in a comment before a section is not the sect
 	}
 }
 
+TEST_CASE("[SceneTree][TSCN] A NUL byte is an error; a header without format saves with format=3, then stays") {
+	register_tscn_test_types();
+	// Both found by fuzz_resource_format_text (seeds tests/fuzz/corpus/tscn/regress_nul_in_header.tscn and
+	// regress_load_steps_only_header.tscn).
+	String err = load_error(String("[gd_scene format=3]\n\n[node name=\"R\" type=\"TscnTestNode\"]\nlabel = \"a", 67) + String(1, '\0') + "b\"\n");
+	CHECK_MESSAGE(err.find("bad.tscn:4: NUL byte") == 0, err.c_str());
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string("[gd_scene load_steps=3]\n\n[node name=\"R\" type=\"TscnTestNode\"]\n", "old.tscn", &error);
+	REQUIRE_MESSAGE(root, error.c_str());
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	delete root;
+	CHECK_MESSAGE(saved.find("[gd_scene format=3]\n") == 0, saved.c_str()); // load_steps dropped (nothing to load).
+	Node *again = ResourceFormatText::load_scene_from_string(saved, "old.tscn", &error);
+	REQUIRE_MESSAGE(again, error.c_str());
+	CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
+	delete again;
+}
+
+TEST_CASE("[SceneTree][TSCN] A header field right after a quoted value is its own field when saved back") {
+	register_tscn_test_types();
+	// Found by fuzz_resource_format_text (seed tests/fuzz/corpus/tscn/regress_field_after_quote.tscn): the
+	// header fields kept for the save read name="L0"e as one value, and wrote the next field without a name.
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n[node name=\"R\" type=\"TscnTestNode\"]\n[node name=\"L0\"e =\"\" parent=\".\"]\n", "field.tscn", &error);
+	if (!root) {
+		CHECK_MESSAGE(error.find("field.tscn:3:") == 0, error.c_str()); // Refused with a line is fine too.
+		return;
+	}
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	delete root;
+	CHECK_MESSAGE(saved.find(" =\"\"") == String::npos, saved.c_str()); // No field without a name.
+	Node *again = ResourceFormatText::load_scene_from_string(saved, "field.tscn", &error);
+	REQUIRE_MESSAGE(again, error.c_str() << "\n"
+										 << saved.c_str());
+	CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
+	delete again;
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: missing parent or root") {
 	register_tscn_test_types();
 	String err = load_error(String(HEADER) + "\n[node name=\"B\" type=\"Node\" parent=\"Nowhere/Else\"]\n");
