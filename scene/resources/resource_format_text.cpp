@@ -162,6 +162,12 @@ String _trim_right(const String &p_s) {
 	return p_s.substr(0, e);
 }
 
+// Blank as the tag parser reads it (core/variant/variant_parser.cpp): any byte up to the space, control
+// characters included.
+static bool _is_blank(char p_c) {
+	return (unsigned char)p_c <= 32;
+}
+
 // Splits "[name k=v k2=[1, 2] k3="a b"]" into its fields as written. Blanks and ';' comments before
 // the tag are skipped: a '[' inside such a comment is not the tag (found by fuzz_resource_format_text).
 std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
@@ -172,7 +178,7 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 			while (p < p_raw.size() && p_raw[p] != '\n') {
 				p++;
 			}
-		} else if (isspace((unsigned char)p_raw[p])) {
+		} else if (_is_blank(p_raw[p])) {
 			p++;
 		} else {
 			return out;
@@ -182,18 +188,18 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 		return out;
 	}
 	p++;
-	while (p < p_raw.size() && !isspace((unsigned char)p_raw[p]) && p_raw[p] != ']') {
+	while (p < p_raw.size() && !_is_blank(p_raw[p]) && p_raw[p] != ']') {
 		p++;
 	}
 	while (p < p_raw.size()) {
-		while (p < p_raw.size() && isspace((unsigned char)p_raw[p])) {
+		while (p < p_raw.size() && _is_blank(p_raw[p])) {
 			p++;
 		}
 		if (p >= p_raw.size() || p_raw[p] == ']') {
 			break;
 		}
 		size_t k = p;
-		while (p < p_raw.size() && p_raw[p] != '=' && !isspace((unsigned char)p_raw[p])) {
+		while (p < p_raw.size() && p_raw[p] != '=' && !_is_blank(p_raw[p])) {
 			p++;
 		}
 		String key = p_raw.substr(k, p - k);
@@ -223,7 +229,7 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 				depth++;
 			} else if (c == ')' || c == '}' || (c == ']' && depth > 0)) {
 				depth--;
-			} else if (depth == 0 && (isspace((unsigned char)c) || c == ']')) {
+			} else if (depth == 0 && (_is_blank(c) || c == ']')) {
 				break;
 			}
 			p++;
