@@ -210,6 +210,9 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 			break; // A key without "=value" ends the tag (found by fuzz_resource_format_text).
 		}
 		p++;
+		while (p < p_raw.size() && _is_blank(p_raw[p])) {
+			p++; // name= "a" and name=\x07"a": the value starts after the blanks, as the tag parser reads it.
+		}
 		size_t v = p;
 		int depth = 0;
 		while (p < p_raw.size()) {

@@ -541,7 +541,7 @@ TEST_CASE("[SceneTree][TSCN] A header field right after a quoted value is its ow
 	delete again;
 	// A control character between fields is a blank to the tag parser, and so to the split (seed
 	// regress_control_char_in_header.tscn).
-	root = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n[node name=\"R\" type=\"TscnTestNode\"]\n[node name=\"C\"\x1c\x1cparent=\".\" type=\"TscnTestNode\"]\n", "field.tscn", &error);
+	root = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n[node name=\"R\" type=\"TscnTestNode\"]\n[node name=\"C\"\x1c\x1cparent=\x07\".\" type= \"TscnTestNode\"]\n", "field.tscn", &error);
 	REQUIRE_MESSAGE(root, error.c_str());
 	const String saved_c = ResourceFormatText::save_scene_to_string(root);
 	delete root;
