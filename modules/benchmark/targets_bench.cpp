@@ -279,8 +279,11 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		if (p_options.shadows_only || p_options.texture_only) {
 			counts.clear();
 		}
+		if (p_options.clusters_only) {
+			counts = p_options.p2_lights; // P5 counts the pairs of the 16- and 64-light LTC scenes.
+		}
 		// T1: the same LTC grid with and without an area_texture (in one process, interleaved below).
-		if (!p_options.shadows_only) {
+		if (!p_options.shadows_only && !p_options.clusters_only) {
 			RID texture = scenes.pattern_texture();
 			for (int n : p_options.t1_lights) {
 				if (std::find(counts.begin(), counts.end(), n) == counts.end()) {
@@ -303,6 +306,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			ok = ok && scenes.add_light_grid(ltc, RS::LIGHT_AREA_SHADING_LTC, n);
 			add(vformat("LTC_%d", n), scenes.viewport(ltc, w, h));
 			ltc_scenarios.push_back({ n, ltc });
+			if (p_options.clusters_only) {
+				continue;
+			}
 			if (std::find(p_options.p1_lights.begin(), p_options.p1_lights.end(), n) != p_options.p1_lights.end()) {
 				RID spot = scenes.scenario_with_floor();
 				scenes.add_light_grid(spot, -1, n);
@@ -318,7 +324,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			error = "an area light rejected its shading method.";
 		}
 		// P4: a scene without area lights (16 spots and a box), with and without the area code.
-		if (!p_options.shadows_only && !p_options.texture_only) {
+		if (!p_options.shadows_only && !p_options.texture_only && !p_options.clusters_only) {
 			RID no_area = scenes.scenario_with_floor();
 			scenes.add_light_grid(no_area, -1, 16);
 			scenes.add_box(no_area, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
@@ -328,7 +334,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		}
 		// S1: one 25-map area light above a box, shadows on / off.
 		for (bool shadow : { true, false }) {
-			if (p_options.texture_only) {
+			if (p_options.texture_only || p_options.clusters_only) {
 				break;
 			}
 			RID s = scenes.scenario_with_floor();
@@ -338,7 +344,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		}
 		// S2: the same light with the PCSS baseline, and 4 / 9 maps with and without the per-sample
 		// penumbra filter (issue 19's default: frame <= 1.5 x PCSS's).
-		if (!p_options.texture_only) {
+		if (!p_options.texture_only && !p_options.clusters_only) {
 			RID s = scenes.scenario_with_floor();
 			scenes.add_box(s, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
 			scenes.add_shadow_light(s, true, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
@@ -358,7 +364,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			add("SHADOW_81", scenes.viewport(g, w, h));
 		}
 		// C1: the embedded demo scene (the CLI's default scene) in a scene tree.
-		const bool no_demo = p_options.shadows_only || p_options.texture_only;
+		const bool no_demo = p_options.shadows_only || p_options.texture_only || p_options.clusters_only;
 		Node *demo = no_demo ? nullptr : GodotInstance::load_scene(String(), &error);
 		if (!demo && !no_demo) {
 			ok = false;
@@ -373,7 +379,8 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 
 		// Interleaved rounds: each configuration draws a discarded frame (the first after a switch) and a
 		// measured one, then the next configuration.
-		for (int round = 0; ok && round < p_options.rounds; round++) {
+		const int rounds = p_options.clusters_only ? 0 : p_options.rounds; // P5 counts pairs: nothing to time.
+		for (int round = 0; ok && round < rounds; round++) {
 			for (Config &c : configs) {
 				rs->viewport_set_active(c.viewport, true);
 				rs->set_debug_disable_area_lights(c.area_code_disabled);
@@ -409,7 +416,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 
 		auto ratio = [&](const String &p_id, const String &p_label, const String &p_a, const String &p_b, double p_goal, bool p_scored) {
 			const int a = find(p_a), b = find(p_b);
-			if (a < 0 || b < 0) {
+			if (a < 0 || b < 0 || configs[a].gpu.empty()) {
 				return;
 			}
 			std::vector<double> g, c;
@@ -429,6 +436,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		if (ok) {
 			// The absolute medians behind the ratios (ms per frame), for the record.
 			for (const Config &c : configs) {
+				if (c.gpu.empty()) {
+					continue; // --clusters-only: not timed.
+				}
 				Result r;
 				r.id = "ms";
 				r.label = c.name;
@@ -552,6 +562,8 @@ int targets_bench_command(const std::vector<String> &p_args) {
 			options.shadows_only = true;
 		} else if (a == "--texture-only") {
 			options.texture_only = true;
+		} else if (a == "--clusters-only") {
+			options.clusters_only = true;
 		} else if (a == "--rounds" && has_value) {
 			if (!parse_int(p_args[++i], 1, 1000, options.rounds)) {
 				fprintf(stderr, "godot-area bench --targets: --rounds must be an integer in 1..1000, got '%s'\n", p_args[i].c_str());
@@ -565,7 +577,7 @@ int targets_bench_command(const std::vector<String> &p_args) {
 				return 2;
 			}
 		} else {
-			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only, --texture-only)\n", a.c_str());
+			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only, --texture-only, --clusters-only)\n", a.c_str());
 			return 2;
 		}
 	}

@@ -49,6 +49,7 @@ public:
 		// T1: LTC lights with an area_texture (a 256 x 256 pattern) / the same lights untextured.
 		std::vector<int> t1_lights = { 16 };
 		bool texture_only = false; // Only the T1 configurations (--texture-only).
+		bool clusters_only = false; // Only P5, the cluster pair counts (--clusters-only): no timed frames.
 	};
 
 	struct Result {
