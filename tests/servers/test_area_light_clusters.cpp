@@ -89,8 +89,8 @@ struct ClusterSetup {
 		}
 		float px = (ndc.x * 0.5f + 0.5f) * width;
 		float py = (ndc.y * 0.5f + 0.5f) * height;
-		r_tx = std::min(uint32_t(px) / ClusterBuilderRD::TILE_SIZE, builder.get_tiles_x() - 1);
-		r_ty = std::min(uint32_t(py) / ClusterBuilderRD::TILE_SIZE, builder.get_tiles_y() - 1);
+		r_tx = std::min(uint32_t(px) / builder.get_tile_size(), builder.get_tiles_x() - 1);
+		r_ty = std::min(uint32_t(py) / builder.get_tile_size(), builder.get_tiles_y() - 1);
 		r_slice = std::min(uint32_t(depth / builder.get_slice_depth() * ClusterBuilderRD::Z_SLICES), ClusterBuilderRD::Z_SLICES - 1);
 		return true;
 	}
@@ -160,6 +160,27 @@ TEST_CASE("[AreaLight3D][Cluster] every point of an area light's influence regio
 		CHECK(assigned < total / 4); // The boxes actually cull.
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+}
+
+TEST_CASE("[AreaLight3D][Cluster] the tile size keeps the tile grid within its budget") {
+	// Small views get fine tiles (a 16 px tile is a twelfth of a 192 px view), 720p and 1080p Godot's 16 px,
+	// 4K coarser ones so the cluster buffer does not grow with the pixel count.
+	CHECK(ClusterBuilderRD::tile_size_for(192, 108) == 8);
+	CHECK(ClusterBuilderRD::tile_size_for(640, 360) == 8);
+	CHECK(ClusterBuilderRD::tile_size_for(1280, 720) == 16);
+	CHECK(ClusterBuilderRD::tile_size_for(1920, 1080) == 16);
+	CHECK(ClusterBuilderRD::tile_size_for(3840, 2160) == 32);
+	for (uint32_t w : { 16u, 100u, 777u, 1920u, 2560u, 4096u }) {
+		for (uint32_t h : { 16u, 99u, 1080u, 1440u, 4096u }) {
+			const uint32_t t = ClusterBuilderRD::tile_size_for(w, h);
+			const uint64_t tiles = uint64_t((w + t - 1) / t) * ((h + t - 1) / t);
+			CHECK(tiles <= ClusterBuilderRD::MAX_TILES);
+			if (t > ClusterBuilderRD::MIN_TILE_SIZE) {
+				const uint32_t finer = t / 2; // The next finer size would break the budget.
+				CHECK(uint64_t((w + finer - 1) / finer) * ((h + finer - 1) / finer) > ClusterBuilderRD::MAX_TILES);
+			}
+		}
+	}
 }
 
 TEST_CASE("[AreaLight3D][Cluster] the oriented box takes no more clusters than the eq. 5.1 bounding sphere") {
@@ -368,7 +389,7 @@ TEST_CASE("[AreaLight3D][Cluster] the cluster debug view writes per-pixel area-l
 				nonzero += count > 0 ? 1 : 0;
 				bool ok = false;
 				for (uint32_t s = 0; s < ClusterBuilderRD::Z_SLICES && !ok; s++) {
-					uint32_t offset = cb->get_cluster_offset(ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT, x / ClusterBuilderRD::TILE_SIZE, y / ClusterBuilderRD::TILE_SIZE, s);
+					uint32_t offset = cb->get_cluster_offset(ClusterBuilderRD::ELEMENT_TYPE_AREA_LIGHT, x / cb->get_tile_size(), y / cb->get_tile_size(), s);
 					int n = 0;
 					for (uint32_t w = 0; w < cb->get_words_per_type(); w++) {
 						n += __builtin_popcount(words[offset + w]);

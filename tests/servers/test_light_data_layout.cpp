@@ -302,7 +302,8 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 			{ MEMBER(SU, clip_from_view), MEMBER(SU, view_from_clip), MEMBER(SU, view_from_world), MEMBER(SU, world_from_view), MEMBER(SU, viewport_size),
 					MEMBER(SU, z_near), MEMBER(SU, z_far), MEMBER(SU, ambient_light), MEMBER(SU, omni_light_count), MEMBER(SU, spot_light_count),
 					MEMBER(SU, cluster_tiles_x), MEMBER(SU, cluster_tile_count), MEMBER(SU, cluster_words_per_type), MEMBER(SU, flags),
-					MEMBER(SU, area_light_count), MEMBER(SU, debug_cluster_type) });
+					MEMBER(SU, area_light_count), MEMBER(SU, debug_cluster_type), MEMBER(SU, cluster_tile_size),
+					MEMBER(SU, pad_scene0), MEMBER(SU, pad_scene1), MEMBER(SU, pad_scene2) });
 	using DL = RendererRD::LightStorage::DirectionalLightData;
 	check_block(scene_fragment, "DirectionalLightData",
 			{ MEMBER(DL, direction), MEMBER(DL, energy), MEMBER(DL, color), MEMBER(DL, size), MEMBER(DL, specular_amount), MEMBER(DL, cull_mask),
@@ -327,7 +328,7 @@ TEST_CASE("[RenderForwardClustered] the scene UBO, push constants and the other 
 	using BP = ClusterBuilderRD::BuildPushConstant;
 	check_block(compile_production_stage(rd, "cluster_build.glsl", "#define CLUSTER_TYPE 0\n", RenderingDevice::SHADER_STAGE_COMPUTE), "Params",
 			{ MEMBER(BP, view_from_clip), MEMBER(BP, screen_size), MEMBER(BP, z_far), MEMBER(BP, words_per_type), MEMBER(BP, tiles_x), MEMBER(BP, tiles_y),
-					MEMBER(BP, pad0), MEMBER(BP, pad1), MEMBER(BP, element_count) });
+					MEMBER(BP, tile_size), MEMBER(BP, pad0), MEMBER(BP, element_count) });
 
 	using DD = AreaShadowRendererRD::DepthPushConstant;
 	check_block(compile_production_stage(rd, "area_shadow_depth.glsl", "", RenderingDevice::SHADER_STAGE_VERTEX), "DrawData",

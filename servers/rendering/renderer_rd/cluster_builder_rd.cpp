@@ -73,6 +73,14 @@ ClusterBuilderRD::~ClusterBuilderRD() {
 	finalize();
 }
 
+uint32_t ClusterBuilderRD::tile_size_for(uint32_t p_width, uint32_t p_height) {
+	uint32_t size = MIN_TILE_SIZE;
+	while (size < 128 && uint64_t((p_width + size - 1) / size) * ((p_height + size - 1) / size) > MAX_TILES) {
+		size *= 2;
+	}
+	return size;
+}
+
 bool ClusterBuilderRD::setup(uint32_t p_width, uint32_t p_height) {
 	ERR_FAIL_COND_V_MSG(!is_initialized(), false, "ClusterBuilderRD::setup() called before initialize().");
 	ERR_FAIL_COND_V_MSG(p_width == 0 || p_height == 0, false, vformat("ClusterBuilderRD: render size must be positive, got %ux%u.", p_width, p_height));
@@ -87,8 +95,9 @@ bool ClusterBuilderRD::setup(uint32_t p_width, uint32_t p_height) {
 	}
 	width = p_width;
 	height = p_height;
-	tiles_x = (width + TILE_SIZE - 1) / TILE_SIZE;
-	tiles_y = (height + TILE_SIZE - 1) / TILE_SIZE;
+	tile_size = tile_size_for(width, height);
+	tiles_x = (width + tile_size - 1) / tile_size;
+	tiles_y = (height + tile_size - 1) / tile_size;
 	// The first bake writes every word of the new buffer (written_words), later ones only the live ones.
 	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
 		written_words[t] = get_words_per_type();
@@ -227,6 +236,7 @@ void ClusterBuilderRD::bake_cluster(uint32_t p_type_count) {
 	pc.words_per_type = get_words_per_type();
 	pc.tiles_x = tiles_x;
 	pc.tiles_y = tiles_y;
+	pc.tile_size = tile_size;
 	for (uint32_t t = 0; t < ELEMENT_TYPE_MAX; t++) {
 		pc.element_count[t] = element_count[t];
 	}

@@ -2,7 +2,7 @@
 /*  cluster_builder_rd.h                                                  */
 /**************************************************************************/
 /* godot-area: the Forward+ cluster builder (Godot's ClusterBuilderRD).   */
-/* 16-pixel screen tiles x 32 linear depth slices; per element type and   */
+/* Square screen tiles (8-128 px) x 32 linear depth slices; per type and  */
 /* cluster one bit per element. Layout and bounding-volume tests:         */
 /* shaders/cluster_data_inc.glsl and shaders/cluster_build.glsl.          */
 /*                                                                        */
@@ -29,7 +29,13 @@ class ClusterBuilderRD {
 public:
 	/* Definition */
 
-	static constexpr uint32_t TILE_SIZE = 16; // Pixels. Must match CLUSTER_TILE_SIZE. 16 as Godot: bench --targets P5.
+	// Tiles are the smallest power of two from 8 px whose grid has at most MAX_TILES tiles (a budget, as
+	// Doom 2016's fixed cluster grid, not a fixed size): 8 px up to 960x540 (at 192x108 a 16 px tile is a
+	// twelfth of the view: bench --targets P5), 16 px (Godot's size) from 1280x720 to 1920x1080, 32 px at 4K,
+	// so the cluster buffer stays within ~50 MB at 512 lights per type whatever the resolution.
+	static constexpr uint32_t MIN_TILE_SIZE = 8;
+	static constexpr uint32_t MAX_TILES = 8192;
+	static uint32_t tile_size_for(uint32_t p_width, uint32_t p_height);
 	static constexpr uint32_t Z_SLICES = 32; // Must match CLUSTER_Z_SLICES.
 
 	// Must match CLUSTER_ELEMENT_TYPE_* (shaders/cluster_data_inc.glsl).
@@ -62,8 +68,8 @@ public:
 		uint32_t words_per_type;
 		uint32_t tiles_x;
 		uint32_t tiles_y;
+		uint32_t tile_size; // Pixels.
 		uint32_t pad0;
-		uint32_t pad1;
 		uint32_t element_count[4];
 	};
 	static_assert(sizeof(BuildPushConstant) == 112, "BuildPushConstant must match shaders/cluster_build.glsl.");
@@ -83,6 +89,7 @@ private:
 	// Per screen size.
 	uint32_t width = 0;
 	uint32_t height = 0;
+	uint32_t tile_size = 16;
 	uint32_t tiles_x = 0;
 	uint32_t tiles_y = 0;
 	RID cluster_buffer;
@@ -131,6 +138,7 @@ public:
 	void bake_cluster(uint32_t p_type_count = ELEMENT_TYPE_MAX);
 
 	RID get_cluster_buffer() const { return cluster_buffer; }
+	uint32_t get_tile_size() const { return tile_size; } // Pixels, set by set_size() (tile_size_for()).
 	uint32_t get_tiles_x() const { return tiles_x; }
 	uint32_t get_tiles_y() const { return tiles_y; }
 	uint32_t get_words_per_type() const { return max_elements / 32; }

@@ -523,6 +523,7 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 	ubo.cluster_tiles_x = cluster_builder.get_tiles_x();
 	ubo.cluster_tile_count = cluster_builder.get_tiles_x() * cluster_builder.get_tiles_y();
 	ubo.cluster_words_per_type = cluster_builder.get_words_per_type();
+	ubo.cluster_tile_size = cluster_builder.get_tile_size();
 	ubo.area_light_count = area_code ? light_storage->get_area_light_count() : 0u;
 	ubo.flags = force_all_lights ? SCENE_FLAG_FORCE_ALL_LIGHTS : 0;
 	int cluster_debug = -1;

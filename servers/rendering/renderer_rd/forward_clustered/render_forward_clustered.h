@@ -114,8 +114,12 @@ public:
 		uint32_t flags; // SceneFlags.
 		uint32_t area_light_count;
 		uint32_t debug_cluster_type; // ClusterBuilderRD::ElementType shown by SCENE_FLAG_DEBUG_CLUSTER.
+		uint32_t cluster_tile_size; // Pixels.
+		uint32_t pad_scene0;
+		uint32_t pad_scene1;
+		uint32_t pad_scene2;
 	};
-	static_assert(sizeof(SceneDataUBO) == 320, "SceneDataUBO must match scene_forward_clustered_inc.glsl.");
+	static_assert(sizeof(SceneDataUBO) == 336, "SceneDataUBO must match scene_forward_clustered_inc.glsl.");
 	static_assert(sizeof(SceneDataUBO) % 16 == 0, "SceneDataUBO must stay a multiple of 16 bytes.");
 
 	// DrawData::flags (DRAW_FLAG_* in scene_forward_clustered_inc.glsl).

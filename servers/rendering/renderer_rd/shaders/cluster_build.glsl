@@ -44,8 +44,8 @@ layout(push_constant, std430) uniform Params { // 112 bytes. Mirror: ClusterBuil
 	uint words_per_type; // Mask words per cluster and type (max elements per type / 32).
 	uint tiles_x;
 	uint tiles_y;
+	uint tile_size; // Pixels (ClusterBuilderRD::tile_size_for()).
 	uint pad0;
-	uint pad1;
 	uvec4 element_count; // Elements of each type (x = omni, y = spot, z = area).
 }
 params;
@@ -130,6 +130,45 @@ bool test_obb(vec3 p_box_min, vec3 p_box_max, vec3 p_center, vec3 p_u0, vec3 p_u
 	return true;
 }
 
+// Support of the cluster's frustum piece (its 8 corners) along p_n: max over the piece of dot(p_n, x).
+float frustum_support(vec3 p_corners[8], vec3 p_n) {
+	float m = -1e30;
+	for (uint i = 0; i < 8; i++) {
+		m = max(m, dot(p_n, p_corners[i]));
+	}
+	return m;
+}
+
+vec3 closest_on_rect(vec3 p_point, vec3 p_center, vec3 p_u0, vec3 p_u1, vec2 p_half) {
+	vec3 v = p_point - p_center;
+	return p_center + p_u0 * clamp(dot(v, p_u0), -p_half.x, p_half.x) + p_u1 * clamp(dot(v, p_u1), -p_half.y, p_half.y);
+}
+
+// The influence region of a one-sided rectangle light: the points in front of it (p_n side) within p_range
+// of the rectangle (the support of the range window W(d), area_light_common_inc.glsl). The cluster's frustum
+// piece misses it if it lies wholly behind the light's plane, or if a separating axis shows it farther than
+// p_range from the rectangle. Any axis gives a lower bound of the distance between the two convex sets; the
+// one used is the direction between the closest pair found by two rounds of alternating projections
+// (rectangle <-> the piece's AABB), which converge to the closest pair, so the bound is nearly the distance.
+// Conservative whatever the number of rounds; p_slack (metres) absorbs the rounding of the corners.
+bool test_rounded_rect(vec3 p_corners[8], vec3 p_box_min, vec3 p_box_max, vec3 p_center, vec3 p_u0, vec3 p_u1, vec3 p_n, vec2 p_half, float p_range, float p_slack) {
+	if (frustum_support(p_corners, p_n) + p_slack < dot(p_n, p_center)) {
+		return false; // Wholly behind the emitting side.
+	}
+	vec3 q = closest_on_rect((p_box_min + p_box_max) * 0.5, p_center, p_u0, p_u1, p_half);
+	vec3 b = clamp(q, p_box_min, p_box_max);
+	q = closest_on_rect(b, p_center, p_u0, p_u1, p_half);
+	b = clamp(q, p_box_min, p_box_max);
+	vec3 d = q - b;
+	float len = length(d);
+	if (len <= p_range) {
+		return true; // The pair found is within range: the region is reached (or nearly: keep the cluster).
+	}
+	vec3 axis = d / len; // From the piece towards the rectangle.
+	float rect_min = dot(axis, p_center) - abs(dot(axis, p_u0)) * p_half.x - abs(dot(axis, p_u1)) * p_half.y;
+	return rect_min - frustum_support(p_corners, axis) <= p_range + p_slack;
+}
+
 void main() {
 	uint cluster_count = params.tiles_x * params.tiles_y * CLUSTER_Z_SLICES;
 	uint index = gl_GlobalInvocationID.x;
@@ -152,8 +191,8 @@ void main() {
 	}
 
 	// View-space AABB of the cluster: the 8 corners of its frustum piece.
-	vec2 px_min = vec2(tile) * float(CLUSTER_TILE_SIZE);
-	vec2 px_max = px_min + vec2(float(CLUSTER_TILE_SIZE));
+	vec2 px_min = vec2(tile) * float(params.tile_size);
+	vec2 px_max = px_min + vec2(float(params.tile_size));
 	vec2 ndc_min = px_min / params.screen_size * 2.0 - 1.0;
 	vec2 ndc_max = px_max / params.screen_size * 2.0 - 1.0;
 	float slice_size = params.z_far / float(CLUSTER_Z_SLICES);
@@ -165,9 +204,11 @@ void main() {
 
 	vec3 box_min = vec3(1e30);
 	vec3 box_max = vec3(-1e30);
+	vec3 corners[8];
 	for (uint i = 0; i < 8; i++) {
 		vec2 ndc = vec2((i & 1) != 0 ? ndc_max.x : ndc_min.x, (i & 2) != 0 ? ndc_max.y : ndc_min.y);
 		vec3 p = unproject_at_depth(ndc, (i & 4) != 0 ? depth_far : depth_near);
+		corners[i] = p;
 		box_min = min(box_min, p);
 		box_max = max(box_max, p);
 	}
@@ -203,6 +244,10 @@ void main() {
 			vec3 u0 = e.axis_x;
 			vec3 u1 = cross(u2, u0);
 			hit = test_obb(box_min, box_max, e.position, u0, u1, u2, e.extents * (1.0 + CLUSTER_ELEMENT_MARGIN) + vec3(1e-5));
+			if (hit && e.sphere_offset > 0.0) {
+				// A rectangle (or disk) light: the region itself, both bounds above being boxes or spheres around it.
+				hit = test_rounded_rect(corners, box_min, box_max, e.position - u2 * e.sphere_offset, u0, u1, u2, e.extents.xy - vec2(2.0 * e.extents.z), 2.0 * e.extents.z * (1.0 + CLUSTER_ELEMENT_MARGIN), length(margin));
+			}
 		}
 		if (hit) {
 			mask |= 1u << (i - first);

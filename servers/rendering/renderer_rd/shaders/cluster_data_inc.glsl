@@ -7,8 +7,9 @@
 /* ClusterBuilderRD::ElementData in                                       */
 /* servers/rendering/renderer_rd/cluster_builder_rd.h.                    */
 /*                                                                        */
-/* Clusters: the screen is cut into CLUSTER_TILE_SIZE-pixel square tiles  */
-/* (tile = gl_FragCoord.xy / 16) and the view depth 0..z_far into         */
+/* Clusters: the screen is cut into square tiles of tile_size pixels (8 */
+/* to 128, ClusterBuilderRD::tile_size_for(); tile = gl_FragCoord.xy /    */
+/* tile_size, from the scene data) and the view depth 0..z_far into       */
 /* CLUSTER_Z_SLICES linear slices (slice = -z_view / z_far * 32, clamped  */
 /* to 0..31, as Godot). For every element type, every cluster stores one  */
 /* bit per element: words_per_type 32-bit words, bit (i & 31) of word     */
@@ -27,7 +28,6 @@
 #ifndef CLUSTER_DATA_INC_GLSL
 #define CLUSTER_DATA_INC_GLSL
 
-#define CLUSTER_TILE_SIZE 16 // Pixels. Must match ClusterBuilderRD::TILE_SIZE.
 #define CLUSTER_Z_SLICES 32 // Must match ClusterBuilderRD::Z_SLICES.
 
 // Element types. Must match ClusterBuilderRD::ElementType.

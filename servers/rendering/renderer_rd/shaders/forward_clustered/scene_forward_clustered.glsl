@@ -135,7 +135,7 @@ void main() {
 	if ((scene_data.flags & SCENE_FLAG_DEBUG_CLUSTER) != 0u) {
 		// Debug view (RS::VIEWPORT_DEBUG_DRAW_CLUSTER_*): how many elements of one type the cluster of
 		// this fragment lists, written to every colour channel.
-		uvec2 dtile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
+		uvec2 dtile = uvec2(gl_FragCoord.xy) / scene_data.cluster_tile_size;
 		uint dslice = cluster_get_slice(-vertex_interp.z, scene_data.z_far);
 		uint doffset = cluster_get_offset(min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1)), dtile, dslice, scene_data.cluster_tiles_x, scene_data.cluster_tile_count, scene_data.cluster_words_per_type);
 		uint dtype = min(scene_data.debug_cluster_type, uint(CLUSTER_ELEMENT_TYPE_MAX - 1));
@@ -269,7 +269,7 @@ void main() {
 	} else
 #endif // MODE_FORCE_ALL_LIGHTS
 	{
-		uvec2 tile = uvec2(gl_FragCoord.xy) / uint(CLUSTER_TILE_SIZE);
+		uvec2 tile = uvec2(gl_FragCoord.xy) / scene_data.cluster_tile_size;
 		uint slice = cluster_get_slice(-vertex.z, scene_data.z_far);
 		uint words = scene_data.cluster_words_per_type;
 		// Each type's loop walks only the mask words that can hold a live light of that type: a SIMD

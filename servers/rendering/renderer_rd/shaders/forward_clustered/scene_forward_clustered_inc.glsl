@@ -39,7 +39,7 @@
 /* Set 0: render pass data                                               */
 /*************************************************************************/
 
-layout(set = 0, binding = 0, std140) uniform SceneDataBlock { // 320 bytes; running std140 offsets.
+layout(set = 0, binding = 0, std140) uniform SceneDataBlock { // 336 bytes; running std140 offsets.
 	mat4 clip_from_view; // 0: projection with Vulkan depth correction (y flipped, depth 0..1).
 	mat4 view_from_clip; // 64
 	mat4 view_from_world; // 128
@@ -56,6 +56,10 @@ layout(set = 0, binding = 0, std140) uniform SceneDataBlock { // 320 bytes; runn
 	uint flags; // 308: SCENE_FLAG_*.
 	uint area_light_count; // 312
 	uint debug_cluster_type; // 316: CLUSTER_ELEMENT_TYPE_* shown by SCENE_FLAG_DEBUG_CLUSTER.
+	uint cluster_tile_size; // 320: pixels (ClusterBuilderRD::get_tile_size()).
+	uint pad_scene0; // 324
+	uint pad_scene1; // 328
+	uint pad_scene2; // 332
 }
 scene_data;
 
