@@ -417,7 +417,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	}
 	// Texture (area_light_texture_inc.glsl; vec3(1.0) and no work without AREA_LIGHT_TEXTURE): one fetch
 	// for both lobes, weighted by their radiance.
-	vec3 tex = area_texture_ltc(p_light, q, m_inv, spec_vector, diffuse, spec * p_light.specular_amount * F);
+	vec3 tex = area_texture_ltc(p_light, q, mat3(vec3(a, 0.0, d), vec3(0.0, c, 0.0), vec3(b, 0.0, e)), spec_vector, diffuse, spec * p_light.specular_amount * F);
 	r_diffuse += lr.radiance * diffuse * tex;
 	if (p_specular_enabled) {
 		r_specular += lr.radiance * p_light.specular_amount * spec * F * tex;

@@ -117,45 +117,49 @@ vec3 area_texture_mrp(AreaLightData p_light, vec2 p_coords, vec2 p_half, float p
 	return area_texture_filtered(p_light, area_texture_uv(p_coords, p_half), p_sigma / (2.0 * sqrt(p_half.x * p_half.y)));
 }
 
-// LTC lookup of one lobe for the quad with corner p_q0 and edges p_e1, p_e2 (corners at local (-x, -y),
-// (+x, -y), (+x, +y), (-x, +y) of the light, relative to the shading point, in the lobe's space): where
-// p_dir from the shading point meets the quad's plane (p_at_foot: the foot of the perpendicular instead),
-// as uv in r_uv, with the footprint r_sigma (uv units) k h / sqrt(A) of that space.
-void area_texture_ltc_lookup(vec3 p_q0, vec3 p_e1, vec3 p_e2, vec3 p_dir, bool p_at_foot, out vec2 r_uv, out float r_sigma) {
-	vec3 n = cross(p_e1, p_e2);
-	float nn = dot(n, n);
-	float plane = dot(n, p_q0); // |n| times the signed plane distance.
-	float fn = dot(n, p_dir);
-	r_uv = vec2(0.5);
-	r_sigma = 1.0; // No usable direction: the light's average.
-	if (nn > 0.0 && abs(plane) > 1e-12 * nn && (p_at_foot || abs(fn) > 1e-9 * sqrt(nn * dot(p_dir, p_dir)))) {
-		vec3 rel = (p_at_foot ? n * (plane / nn) : p_dir * (plane / fn)) - p_q0;
-		r_uv = vec2(1.0) - vec2(dot(rel, cross(p_e2, n)), dot(rel, cross(n, p_e1))) / nn;
-		r_sigma = AREA_TEXTURE_FOOTPRINT * abs(plane) / pow(nn, 0.75); // k h / sqrt(A): h = |plane| / |n|, sqrt(A) = |n|^(1/2).
-	}
-}
-
-// LTC, both lobes from ONE fetch: the prefiltered texture for the quad p_q (receiver frame, see above).
-// Diffuse looks up at the foot of the perpendicular in the receiver frame, specular where p_spec_vector
-// (the vector form factor of the lit polygon in M^-1 space, ltc_rect_form_factors) meets the quad
-// mapped by p_m_inv. The fetch reads the single Gaussian that matches the mean and variance of the two
+// LTC, both lobes from ONE fetch: the prefiltered texture for the quad p_q (corners at local (-x, -y),
+// (+x, -y), (+x, +y), (-x, +y) of the light, relative to the shading point, in the receiver frame).
+// Diffuse looks up at the foot of the perpendicular, specular where p_spec_vector (the vector form
+// factor of the lit polygon in M^-1 space, ltc_rect_form_factors) meets the quad mapped by M^-1
+// (p_m = M). The fetch reads the single Gaussian that matches the mean and variance of the two
 // lookups' Gaussians mixed by the lobes' radiance (known before the fetch: the diffuse form factor
 // p_diffuse times area_texture_diffuse_albedo, the specular lobe's p_specular = coverage times its
 // Fresnel weight): exact where one lobe dominates, the mixture's blur where both matter.
-vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], mat3 p_m_inv, vec3 p_spec_vector, float p_diffuse, vec3 p_specular) {
+vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], mat3 p_m, vec3 p_spec_vector, float p_diffuse, vec3 p_specular) {
 	if (!(p_light.texture_rect.z > 0.0)) {
 		return vec3(1.0);
 	}
-	vec2 uv_d, uv_s;
-	float sigma_d, sigma_s;
-	area_texture_ltc_lookup(p_q[0], p_q[1] - p_q[0], p_q[3] - p_q[0], vec3(0.0, 0.0, 1.0), true, uv_d, sigma_d);
-	vec3 s0 = p_m_inv * p_q[0];
-	area_texture_ltc_lookup(s0, p_m_inv * p_q[1] - s0, p_m_inv * p_q[3] - s0, p_spec_vector, false, uv_s, sigma_s);
+	vec3 e1 = p_q[1] - p_q[0];
+	vec3 e2 = p_q[3] - p_q[0];
+	vec3 n = cross(e1, e2); // |n| = A.
+	float nn = dot(n, n);
+	float plane = dot(n, p_q[0]); // |n| times the signed plane distance h.
+	bool valid = nn > 0.0 && abs(plane) > 1e-12 * nn;
+	// uv of a point p of the plane: 1 - ((p - q0).(e2 x n), (p - q0).(n x e1)) / nn.
+	vec3 u_axis = cross(e2, n);
+	vec3 v_axis = cross(n, e1);
+	// Diffuse: the foot n plane / nn, footprint sigma = k h / sqrt(A) = k |plane| / |n|^(3/2) (squared below).
+	vec3 foot = n * (plane / nn) - p_q[0];
+	vec2 uv_d = valid ? vec2(1.0) - vec2(dot(foot, u_axis), dot(foot, v_axis)) / nn : vec2(0.5);
+	float k2_plane2 = AREA_TEXTURE_FOOTPRINT * AREA_TEXTURE_FOOTPRINT * plane * plane;
+	float var_d = valid ? k2_plane2 / (nn * sqrt(nn)) : 1.0; // No usable direction: the light's average.
+	// Specular, without mapping the corners: a linear map keeps the uv of a point of the quad, so the
+	// hit of the vector form factor f on M^-1 P, mapped by M, is the hit of M f on P; and M^-1 P has
+	// the normal det(M^-1) M^T n and the plane value det(M^-1) plane, hence
+	// k h / sqrt(A) = k |plane| sqrt(|det M|) / |M^T n|^(3/2) there.
+	vec3 g = p_m * p_spec_vector;
+	float gn = dot(g, n);
+	bool valid_s = valid && gn * gn > 1e-18 * nn * dot(g, g);
+	vec3 hit = g * (plane / gn) - p_q[0];
+	vec2 uv_s = valid_s ? vec2(1.0) - vec2(dot(hit, u_axis), dot(hit, v_axis)) / nn : vec2(0.5);
+	vec3 mn = n * p_m; // M^T n.
+	float mnn = dot(mn, mn);
+	float var_s = valid_s ? k2_plane2 * abs(determinant(p_m)) / (mnn * sqrt(mnn)) : 1.0;
 	float w_specular = (p_specular.r + p_specular.g + p_specular.b) * (1.0 / 3.0);
 	float w = p_diffuse * area_texture_diffuse_albedo + w_specular;
 	float t = w > 0.0 ? w_specular / w : 0.0;
 	vec2 d = uv_s - uv_d;
-	float variance = mix(sigma_d * sigma_d, sigma_s * sigma_s, t) + t * (1.0 - t) * dot(d, d);
+	float variance = mix(var_d, var_s, t) + t * (1.0 - t) * dot(d, d);
 	return area_texture_filtered(p_light, mix(uv_d, uv_s, t), sqrt(variance));
 }
 
@@ -170,7 +174,7 @@ vec3 area_texture_mrp(AreaLightData p_light, vec2 p_coords, vec2 p_half, float p
 	return vec3(1.0);
 }
 
-vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], mat3 p_m_inv, vec3 p_spec_vector, float p_diffuse, vec3 p_specular) {
+vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], mat3 p_m, vec3 p_spec_vector, float p_diffuse, vec3 p_specular) {
 	return vec3(1.0);
 }
 
