@@ -380,10 +380,11 @@ TEST_CASE("[AreaLight3D][Texture] textured LTC and MRP stay within their measure
 					plain.mean_ratio, ", ", plain.flip);
 			CHECK(ltc.non_finite == 0);
 			CHECK(mrp.non_finite == 0);
-			// Bounds at about 1.4x the values measured on lavapipe (doc/methods.md, section 11): dielectrics
-			// 0.14 / 0.98 / 0.15 (relative RMSE / mean ratio / FLIP), the glossy metal 0.45 / 1.00 / 0.043
-			// (its RMSE is that of a sharp textured highlight a texel off). The untextured LTC errors are
-			// printed beside them: the texture approximation, not the form factor, dominates.
+			// Bounds at 1.35-1.5x the values measured on lavapipe (doc/methods.md, section 12; one fetch
+			// shared by both lobes): dielectrics 0.135 and 0.148 / 0.98 / 0.14 and 0.15 (relative RMSE /
+			// mean ratio / FLIP), the glossy metal 0.44 / 1.00 / 0.037 (its RMSE is that of a sharp
+			// textured highlight a texel off). The untextured LTC errors are printed beside them: the
+			// texture approximation, not the form factor, dominates.
 			const bool metal = config.metallic > 0.0f;
 			CHECK(ltc.relative_rmse < (metal ? 0.65 : 0.2));
 			CHECK(std::fabs(ltc.mean_ratio - 1.0) < 0.05);

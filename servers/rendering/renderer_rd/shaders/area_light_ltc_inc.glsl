@@ -409,20 +409,18 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	float spec;
 	vec3 spec_vector;
 	ltc_rect_form_factors(q, p_specular_enabled, m_inv, diffuse, spec, spec_vector);
-	r_diffuse += lr.radiance * diffuse * area_texture_ltc(p_light, q, true); // Texture: area_light_texture_inc.glsl.
+	vec3 F = vec3(0.0);
 	if (p_specular_enabled) {
-		// The texture is fetched where the lobe's vector form factor meets the light in LTC space
-		// (the unclipped corners mapped by M^-1); vec3(1.0) and no work without AREA_LIGHT_TEXTURE.
-		vec3 qs[4];
-#ifdef AREA_LIGHT_TEXTURE
-		for (int i = 0; i < 4; i++) {
-			qs[i] = m_inv * q[i];
-		}
-#endif
 		// Thesis eq. 5.10 with the Fresnel weight of the lit part of the lobe (ltc_polygon_fresnel).
 		vec2 fresnel = ltc_polygon_fresnel(vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV), t0, t1, spec_vector, spec);
-		vec3 F = p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y;
-		r_specular += lr.radiance * p_light.specular_amount * spec * F * area_texture_ltc(p_light, qs, false);
+		F = p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y;
+	}
+	// Texture (area_light_texture_inc.glsl; vec3(1.0) and no work without AREA_LIGHT_TEXTURE): one fetch
+	// for both lobes, weighted by their radiance.
+	vec3 tex = area_texture_ltc(p_light, q, mat3(vec3(a, 0.0, d), vec3(0.0, c, 0.0), vec3(b, 0.0, e)), spec_vector, diffuse, spec * p_light.specular_amount * F);
+	r_diffuse += lr.radiance * diffuse * tex;
+	if (p_specular_enabled) {
+		r_specular += lr.radiance * p_light.specular_amount * spec * F * tex;
 	}
 }
 

@@ -16,30 +16,30 @@
 /* LTC (Heitz, Dupuy, Hill and Neubelt 2016, section 6, "Textured         */
 /* polygons"): L_o ~ FF(P) * T(P), FF the form factor of the polygon in   */
 /* the LTC's cosine space and T the texture prefiltered by the lobe,      */
-/* fetched for specular where the vector form factor's direction meets   */
-/* the polygon's plane (the lobe's centre of mass on the light), for     */
-/* diffuse at the foot of the perpendicular from the shading point (the  */
-/* paper's choice; measured: diffuse relative RMSE 0.14 at the foot vs    */
-/* 0.21 at the form factor's hit, specular 0.45 at the hit vs 0.64 at the */
-/* foot, tests/servers/test_area_light_texture.cpp), with the footprint   */
-/* the plane distance over the polygon's size in that space:              */
-/*   sigma = k * |p|^2 / (h sqrt(A)),  k = 1/2,                           */
-/* p the fetch point seen from the shading point, h the plane distance.   */
-/* At the lobe's foot (p = h n) that is k h / sqrt(A), with k = 1/2:      */
-/* the clamped cosine seen from height h, projected on the plane, has the */
-/* density (h^2 / (h^2 + r^2))^2 / (pi h^2) = exp(-2 r^2 / h^2) + O(r^4)  */
-/* around its foot, the Gaussian of sigma = h / 2 (matched at the peak,   */
-/* where the light is; the heavy tail beyond the light does not count    */
-/* because the prefilter is normalised over the light). Away from the    */
-/* foot the lobe's angular spread k reaches the plane |p| away and at the */
-/* incidence cos = h / |p|: a footprint k |p|^2 / h, so a light seen at a */
-/* grazing angle gives its average colour, not the colour of its edge.    */
-/* The vector form factor uses Hill and Heitz's rational fit of           */
-/* theta / sin(theta) (only the fetch position depends on it; the form    */
-/* factor that scales the light is the exact one of area_light_ltc_inc).  */
-/* Diffuse and specular each get their own fetch (P in the receiver frame */
-/* and M^-1 P). The polygon is the unclipped quad: the fetch position of  */
-/* a light crossing the horizon is the direction of the whole quad.       */
+/* looked up for specular where the vector form factor of the lit         */
+/* polygon in M^-1 space (ltc_rect_form_factors' r_specular_vector, no    */
+/* second evaluation) meets the quad's plane (the lobe's centre of mass   */
+/* on the light), for diffuse at the foot of the perpendicular from the   */
+/* shading point (the paper's choice; measured: diffuse relative RMSE     */
+/* 0.14 at the foot vs 0.21 at the form factor's hit, specular 0.45 at    */
+/* the hit vs 0.64 at the foot, tests/servers/test_area_light_texture),   */
+/* with the footprint the plane distance over the polygon's size in that  */
+/* space:                                                                 */
+/*   sigma = k h / sqrt(A),  k = 1/2,                                     */
+/* h the plane distance, A the area. At the lobe's foot the clamped       */
+/* cosine seen from height h, projected on the plane, has the density     */
+/* (h^2 / (h^2 + r^2))^2 / (pi h^2) = exp(-2 r^2 / h^2) + O(r^4) around   */
+/* its foot, the Gaussian of sigma = h / 2 (matched at the peak, where    */
+/* the light is; the heavy tail beyond the light does not count because   */
+/* the prefilter is normalised over the light).                           */
+/* ONE fetch serves both lobes (issue 21, T1: each trilinear fetch costs  */
+/* about 0.07 of an untextured light on llvmpipe, where a branch skips    */
+/* nothing): the two lookups are Gaussians (uv_d, sigma_d), (uv_s,        */
+/* sigma_s); mixed with the weight t of the specular lobe in the pixel's  */
+/* radiance (known before the fetch), the single Gaussian of the same     */
+/* mean and variance is uv = mix(uv_d, uv_s, t), sigma^2 = mix(sigma_d^2, */
+/* sigma_s^2, t) + t (1 - t) |uv_s - uv_d|^2. Exact where one lobe        */
+/* dominates (t = 0 or 1); where both matter both get the mixture's blur. */
 /*                                                                        */
 /* MRP (Drobot 2014, section 1.3.5, eqs. 1.24 and 1.28): the result of    */
 /* each lobe is multiplied by the prefiltered texture at its most         */
@@ -67,6 +67,10 @@
 
 layout(set = 0, binding = 4) uniform texture3D area_light_atlas; // AreaLightAtlas: RGBA16F linear, premultiplied; depth = level.
 layout(set = 0, binding = 10) uniform sampler area_light_atlas_sampler; // Linear, clamp to edge, no mipmaps.
+
+// The diffuse albedo of the shading point (channel mean of albedo * (1 - metallic)): the diffuse lobe's
+// weight in the LTC's single fetch (area_texture_ltc). Set by the fragment shader before its light loop.
+float area_texture_diffuse_albedo = 1.0;
 
 // k: footprint sigma per unit of plane distance over the light's size (see above).
 #define AREA_TEXTURE_FOOTPRINT 0.5
@@ -113,49 +117,50 @@ vec3 area_texture_mrp(AreaLightData p_light, vec2 p_coords, vec2 p_half, float p
 	return area_texture_filtered(p_light, area_texture_uv(p_coords, p_half), p_sigma / (2.0 * sqrt(p_half.x * p_half.y)));
 }
 
-// Vector edge integral of the arc from unit a to unit b: theta / sin(theta) (Hill and Heitz's rational
-// fit in cos theta) times a x b.
-vec3 area_texture_edge_vector(vec3 p_a, vec3 p_b) {
-	float x = dot(p_a, p_b);
-	float y = abs(x);
-	float v = (5.42031 + (3.12829 + 0.0902326 * y) * y) / (3.45068 + (4.18814 + y) * y);
-	if (x < 0.0) {
-		v = M_PI * inversesqrt(max(1.0 - x * x, 1e-7)) - v;
-	}
-	return v * cross(p_a, p_b);
-}
-
-// LTC: the prefiltered texture for the quad p_q (corners at local (-x, -y), (+x, -y), (+x, +y), (-x, +y)
-// of the light, relative to the shading point, in the space of the integral: the receiver frame for
-// diffuse, M^-1 of it for specular). p_at_foot: fetch at the foot of the perpendicular from the shading
-// point (diffuse) instead of where the vector form factor points (specular).
-vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], bool p_at_foot) {
+// LTC, both lobes from ONE fetch: the prefiltered texture for the quad p_q (corners at local (-x, -y),
+// (+x, -y), (+x, +y), (-x, +y) of the light, relative to the shading point, in the receiver frame).
+// Diffuse looks up at the foot of the perpendicular, specular where p_spec_vector (the vector form
+// factor of the lit polygon in M^-1 space, ltc_rect_form_factors) meets the quad mapped by M^-1
+// (p_m = M). The fetch reads the single Gaussian that matches the mean and variance of the two
+// lookups' Gaussians mixed by the lobes' radiance (known before the fetch: the diffuse form factor
+// p_diffuse times area_texture_diffuse_albedo, the specular lobe's p_specular = coverage times its
+// Fresnel weight): exact where one lobe dominates, the mixture's blur where both matter.
+vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], mat3 p_m, vec3 p_spec_vector, float p_diffuse, vec3 p_specular) {
 	if (!(p_light.texture_rect.z > 0.0)) {
 		return vec3(1.0);
 	}
-	vec3 f = vec3(0.0, 0.0, 1.0);
-	if (!p_at_foot) {
-		vec3 a0 = normalize(p_q[0]);
-		vec3 a1 = normalize(p_q[1]);
-		vec3 a2 = normalize(p_q[2]);
-		vec3 a3 = normalize(p_q[3]);
-		f = area_texture_edge_vector(a0, a1) + area_texture_edge_vector(a1, a2) + area_texture_edge_vector(a2, a3) + area_texture_edge_vector(a3, a0);
-	}
 	vec3 e1 = p_q[1] - p_q[0];
 	vec3 e2 = p_q[3] - p_q[0];
-	vec3 n = cross(e1, e2);
+	vec3 n = cross(e1, e2); // |n| = A.
 	float nn = dot(n, n);
-	float plane = dot(n, p_q[0]); // |n| times the signed plane distance.
-	float fn = dot(n, f);
-	vec2 st = vec2(0.5);
-	float sigma = 1.0; // No usable direction: the light's average.
-	if (nn > 0.0 && abs(plane) > 1e-12 * nn && (p_at_foot || abs(fn) > 1e-9 * sqrt(nn * dot(f, f)))) {
-		vec3 p = p_at_foot ? n * (plane / nn) : f * (plane / fn);
-		vec3 rel = p - p_q[0];
-		st = vec2(dot(rel, cross(e2, n)), dot(rel, cross(n, e1))) / nn;
-		sigma = AREA_TEXTURE_FOOTPRINT * abs(plane) / pow(nn, 0.75); // k h / sqrt(A): h = |plane| / |n|, sqrt(A) = |n|^(1/2).
-	}
-	return area_texture_filtered(p_light, vec2(1.0) - st, sigma);
+	float plane = dot(n, p_q[0]); // |n| times the signed plane distance h.
+	bool valid = nn > 0.0 && abs(plane) > 1e-12 * nn;
+	// uv of a point p of the plane: 1 - ((p - q0).(e2 x n), (p - q0).(n x e1)) / nn.
+	vec3 u_axis = cross(e2, n);
+	vec3 v_axis = cross(n, e1);
+	// Diffuse: the foot n plane / nn, footprint sigma = k h / sqrt(A) = k |plane| / |n|^(3/2) (squared below).
+	vec3 foot = n * (plane / nn) - p_q[0];
+	vec2 uv_d = valid ? vec2(1.0) - vec2(dot(foot, u_axis), dot(foot, v_axis)) / nn : vec2(0.5);
+	float k2_plane2 = AREA_TEXTURE_FOOTPRINT * AREA_TEXTURE_FOOTPRINT * plane * plane;
+	float var_d = valid ? k2_plane2 / (nn * sqrt(nn)) : 1.0; // No usable direction: the light's average.
+	// Specular, without mapping the corners: a linear map keeps the uv of a point of the quad, so the
+	// hit of the vector form factor f on M^-1 P, mapped by M, is the hit of M f on P; and M^-1 P has
+	// the normal det(M^-1) M^T n and the plane value det(M^-1) plane, hence
+	// k h / sqrt(A) = k |plane| sqrt(|det M|) / |M^T n|^(3/2) there.
+	vec3 g = p_m * p_spec_vector;
+	float gn = dot(g, n);
+	bool valid_s = valid && gn * gn > 1e-18 * nn * dot(g, g);
+	vec3 hit = g * (plane / gn) - p_q[0];
+	vec2 uv_s = valid_s ? vec2(1.0) - vec2(dot(hit, u_axis), dot(hit, v_axis)) / nn : vec2(0.5);
+	vec3 mn = n * p_m; // M^T n.
+	float mnn = dot(mn, mn);
+	float var_s = valid_s ? k2_plane2 * abs(determinant(p_m)) / (mnn * sqrt(mnn)) : 1.0;
+	float w_specular = (p_specular.r + p_specular.g + p_specular.b) * (1.0 / 3.0);
+	float w = p_diffuse * area_texture_diffuse_albedo + w_specular;
+	float t = w > 0.0 ? w_specular / w : 0.0;
+	vec2 d = uv_s - uv_d;
+	float variance = mix(var_d, var_s, t) + t * (1.0 - t) * dot(d, d);
+	return area_texture_filtered(p_light, mix(uv_d, uv_s, t), sqrt(variance));
 }
 
 #else // AREA_LIGHT_TEXTURE
@@ -169,7 +174,7 @@ vec3 area_texture_mrp(AreaLightData p_light, vec2 p_coords, vec2 p_half, float p
 	return vec3(1.0);
 }
 
-vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], bool p_at_foot) {
+vec3 area_texture_ltc(AreaLightData p_light, vec3 p_q[4], mat3 p_m, vec3 p_spec_vector, float p_diffuse, vec3 p_specular) {
 	return vec3(1.0);
 }
 

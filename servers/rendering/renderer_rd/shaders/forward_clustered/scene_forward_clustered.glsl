@@ -237,6 +237,9 @@ void main() {
 
 	vec3 diffuse_light = vec3(0.0);
 	vec3 specular_light = vec3(0.0);
+#if defined(USE_AREA_LIGHTS) && defined(AREA_LIGHT_TEXTURE)
+	area_texture_diffuse_albedo = dot(albedo, vec3(1.0 / 3.0)) * (1.0 - metallic); // Weighs the LTC's texture fetch.
+#endif
 
 #ifdef MODE_FORCE_ALL_LIGHTS
 	if ((scene_data.flags & SCENE_FLAG_FORCE_ALL_LIGHTS) != 0u) {
