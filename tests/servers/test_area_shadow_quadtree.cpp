@@ -361,6 +361,53 @@ TEST_CASE("[AreaShadowQuadtree] point weights sum to one") {
 	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
 }
 
+TEST_CASE("[AreaShadowQuadtree] point cells: the quarters of the point's leaves, their areas the weights, none across a T-junction") {
+	TilePool pool(81);
+	AreaShadowQuadtree tree;
+	REQUIRE(tree.reset(&pool));
+	tree.expand(AreaShadowQuadtree::root_key());
+	tree.expand(key(1, 1, 1)); // The (+u, +v) quarter at depth 2: T-junctions on its edges at u = 0.75, v = 0.75.
+	tree.expand(key(2, 2, 2));
+	std::vector<AreaShadowQuadtree::Point> points = tree.get_points();
+	std::vector<uint32_t> cells = tree.get_point_cells();
+	std::vector<float> w = tree.get_point_weights();
+	REQUIRE(cells.size() == points.size());
+	double sum = 0.0;
+	for (size_t i = 0; i < cells.size(); i++) {
+		CAPTURE(points[i].uv);
+		CHECK(AreaShadowQuadtree::get_cell_weight(cells[i]) == doctest::Approx(w[i]).epsilon(1e-6));
+		CHECK(cells[i] != 0u); // Every point is a corner of some leaf.
+		sum += AreaShadowQuadtree::get_cell_weight(cells[i]);
+		float e[4];
+		AreaShadowQuadtree::get_cell_extent(cells[i], e);
+		// The box stays on the light.
+		CHECK(points[i].uv.x - e[0] >= -1e-6f);
+		CHECK(points[i].uv.x + e[1] <= 1.0f + 1e-6f);
+		CHECK(points[i].uv.y - e[2] >= -1e-6f);
+		CHECK(points[i].uv.y + e[3] <= 1.0f + 1e-6f);
+		if (points[i].uv == Vector2(0, 0)) {
+			// A corner of the depth-1 leaf (0, 0): its quarter, a square of 1/4 towards +u, +v.
+			CHECK(cells[i] == (2u << (3 * 3)));
+			CHECK(e[0] == 0.0f);
+			CHECK(e[1] == doctest::Approx(0.25f));
+		}
+		if (points[i].uv == Vector2(1.0f, 0.75f)) {
+			// On the light's edge between the depth-2 leaves (3, 2) and (3, 3): towards -u only.
+			CHECK(e[1] == 0.0f);
+			CHECK(e[0] == doctest::Approx(0.125f));
+			CHECK(e[2] == doctest::Approx(0.125f));
+			CHECK(e[3] == doctest::Approx(0.125f));
+		}
+		if (points[i].uv == Vector2(0.5f, 0.75f)) {
+			// A T-junction: the midpoint of the coarse leaf (1, 0, 1)'s edge, a corner of the finer leaves on
+			// the +u side only, so nothing of the coarse leaf (the box does not reach towards -u).
+			CHECK(e[0] == 0.0f);
+			CHECK(e[1] == doctest::Approx(0.125f));
+		}
+	}
+	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
+}
+
 // A fake GPU: answers each query with a banding oracle; a frame's answers complete p_latency frames later.
 struct Simulation {
 	TilePool pool;

@@ -413,6 +413,57 @@ std::vector<float> AreaShadowQuadtree::get_point_weights() const {
 	return out;
 }
 
+std::vector<uint32_t> AreaShadowQuadtree::get_point_cells() const {
+	std::map<uint32_t, uint32_t> cells;
+	for (const auto &kv : nodes) {
+		const Node &n = kv.second;
+		if (n.has_children) {
+			continue;
+		}
+		uint32_t xs[4], ys[4];
+		_corners(n, xs, ys);
+		for (uint32_t c = 0; c < 4; c++) {
+			// Corner c = (c & 1 ? u1 : u0, c & 2 ? v1 : v0): the leaf lies on the other side of it, quadrant 3 - c.
+			cells[_point_key(xs[c], ys[c])] |= (std::min(n.depth + 1, 7u)) << (CELL_BITS * (3u - c));
+		}
+	}
+	std::vector<uint32_t> out;
+	out.reserve(points.size());
+	for (const auto &kv : points) {
+		auto it = cells.find(kv.first);
+		out.push_back(it == cells.end() ? 0u : it->second);
+	}
+	return out;
+}
+
+float AreaShadowQuadtree::get_cell_weight(uint32_t p_cell) {
+	float w = 0.0f;
+	for (uint32_t q = 0; q < 4; q++) {
+		uint32_t code = (p_cell >> (CELL_BITS * q)) & 7u;
+		if (code > 0) {
+			float half = 0.5f / float(1u << (code - 1));
+			w += half * half;
+		}
+	}
+	return w;
+}
+
+void AreaShadowQuadtree::get_cell_extent(uint32_t p_cell, float r_extent[4]) {
+	for (uint32_t i = 0; i < 4; i++) {
+		r_extent[i] = 0.0f;
+	}
+	for (uint32_t q = 0; q < 4; q++) {
+		uint32_t code = (p_cell >> (CELL_BITS * q)) & 7u;
+		if (code > 0) {
+			float half = 0.5f / float(1u << (code - 1));
+			float &eu = r_extent[(q & 1u) ? 1 : 0];
+			float &ev = r_extent[(q & 2u) ? 3 : 2];
+			eu = std::max(eu, half);
+			ev = std::max(ev, half);
+		}
+	}
+}
+
 /* Heuristic */
 
 AreaShadowQuadtree::HeuristicResult AreaShadowQuadtree::estimate_heuristic(const HeuristicInput &p_input) {

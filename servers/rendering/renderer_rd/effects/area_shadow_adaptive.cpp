@@ -255,7 +255,7 @@ AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaS
 	return ptr;
 }
 
-bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights) {
+bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<uint32_t> *r_cells) {
 	AreaShadowQuadtree *tree = light_get_tree(p_light, p_tiles);
 	if (!tree) {
 		return false;
@@ -279,7 +279,7 @@ bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::T
 		r_draws.push_back(d);
 	}
 	points = tree->get_points(); // Drawn this frame: valid now.
-	std::vector<float> weights = tree->get_point_weights();
+	std::vector<uint32_t> cells = tree->get_point_cells();
 	for (size_t i = 0; i < points.size(); i++) {
 		const AreaShadowQuadtree::Point &p = points[i];
 		if (p.valid) {
@@ -289,8 +289,8 @@ bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::T
 			m.valid = true;
 			m.dirty = p.dirty;
 			r_maps.push_back(m);
-			if (r_weights) {
-				r_weights->push_back(i < weights.size() ? weights[i] : 0.0f);
+			if (r_cells) {
+				r_cells->push_back(i < cells.size() ? cells[i] : 0u);
 			}
 		}
 	}

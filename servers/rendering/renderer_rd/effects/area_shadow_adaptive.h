@@ -264,9 +264,9 @@ public:
 	// (created on first use), its maps redrawn when p_content_hash changed, up to p_max_draws draw
 	// requests appended to r_draws (as the atlas' own, map_index = point index), and the drawn maps
 	// (tile, uv) for the shader in r_maps. false when the light has no tree (no four free tiles).
-	// r_weights (optional): each map's share of the light (AreaShadowQuadtree::get_point_weights()), same
-	// order as r_maps.
-	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights = nullptr);
+	// r_cells (optional): each map's cell code (AreaShadowQuadtree::get_point_cells(): its share of the light
+	// and filter box), same order as r_maps.
+	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<uint32_t> *r_cells = nullptr);
 	const AreaShadowQuadtree *light_get_tree_or_null(uint64_t p_light) const;
 	uint32_t get_light_count() const { return uint32_t(trees.size()); }
 	// The most tiles p_light's tree may hold from now on (the renderer's share of the atlas for it; at
