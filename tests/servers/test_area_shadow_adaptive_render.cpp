@@ -327,6 +327,68 @@ TEST_CASE("[AreaShadowAdaptive][Render] fair sharing between trees: two and four
 	}
 }
 
+TEST_CASE("[AreaShadowAdaptive][Render] fair sharing between trees follows importance; a light that loses importance is evicted down to its share") {
+	RenderingDevice *rd = rd_test_get_device();
+	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");
+	// Every range box covers the screen, so importance goes with the light's area (the width of its
+	// penumbra): two lights 1.6 and 0.8 m (shares 80 % and 20 % of 64 tiles), four lights 1.6, 1.2, 0.8 and
+	// 0.6 m (51 %, 29 %, 13 %, 7 %). Then the sizes are reversed: the big trees are far over their new shares
+	// and give their finest quads back, the others grow into the tiles.
+	for (int lights : { 2, 4 }) {
+		CAPTURE(lights);
+		const std::vector<float> sizes = lights == 2 ? std::vector<float>{ 1.6f, 0.8f } : std::vector<float>{ 1.6f, 1.2f, 0.8f, 0.6f };
+		AdaptiveScene s;
+		REQUIRE(s.init(Vector3(0.3f, 1.4f, 0.2f), 48, RS::LIGHT_AREA_SHADOW_ADAPTIVE));
+		REQUIRE(s.f.renderer.area_shadow_atlas_set_size(512, 8)); // 64 tiles.
+		REQUIRE(s.shadows().set_adaptive_reprojection_divisor(1));
+		std::vector<RID> all = { s.light };
+		for (int i = 1; i < lights; i++) {
+			RID l = s.f.area_light(Vector2(sizes[i], sizes[i]), 2.0f, 20.0f, 2.0f);
+			s.f.light_storage.light_set_param(l, RS::LIGHT_PARAM_SHADOW_BLUR, 0.5f);
+			s.f.light_storage.light_set_shadow(l, true);
+			s.f.light_storage.light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_ADAPTIVE);
+			RenderTest::add_light(s.scene, l, RS::LIGHT_AREA, light_transform());
+			all.push_back(l);
+		}
+		const AreaShadowAtlas &atlas = s.shadows().get_atlas();
+		float area_sum = 0.0f;
+		for (float a : sizes) {
+			area_sum += a * a;
+		}
+		// p_order: the lights from the most to the least important.
+		auto run = [&](const std::vector<RID> &p_order, const std::vector<float> &p_sizes, const char *p_phase) {
+			for (int frame = 0; frame < 40; frame++) {
+				s.frame();
+				for (RID l : p_order) { // No light waits while the four tiles of a first tree are free.
+					CHECK((s.shadows().light_get_shadow_map_count(l) >= 4 || atlas.get_free_tile_count() < 4));
+				}
+			}
+			String counts;
+			for (size_t i = 0; i < p_order.size(); i++) {
+				const uint32_t maps = s.shadows().light_get_shadow_map_count(p_order[i]);
+				const float share = std::max(64.0f * p_sizes[i] * p_sizes[i] / area_sum, 4.0f);
+				counts += vformat(" %d (share %d)", maps, int(share));
+				CHECK(maps >= 4);
+				CHECK(float(maps) <= share * (1.0f + AreaShadowAdaptiveRD::EVICTION_SLACK) + 4.0f);
+				if (i > 0) { // Shares follow importance.
+					CHECK(maps <= s.shadows().light_get_shadow_map_count(p_order[i - 1]));
+				}
+			}
+			MESSAGE(String(p_phase), ": maps by importance", counts, "; evictions ", s.shadows().get_adaptive()->get_eviction_count());
+			CHECK(s.shadows().light_get_shadow_map_count(p_order[0]) > s.shadows().light_get_shadow_map_count(p_order.back()));
+		};
+		run(all, sizes, "before");
+		CHECK(s.shadows().get_adaptive()->get_eviction_count() == 0);
+		std::vector<RID> reversed(all.rbegin(), all.rend());
+		for (int i = 0; i < lights; i++) {
+			s.f.light_storage.light_area_set_size(reversed[i], Vector2(sizes[i], sizes[i]));
+		}
+		run(reversed, sizes, "reversed");
+		CHECK(s.shadows().get_adaptive()->get_eviction_count() > 0);
+		RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
+	}
+}
+
 TEST_CASE("[AreaShadowAdaptive][Render] a static view converges within a bounded number of frames, then stays unchanged for 300 frames, and never stalls") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE_MESSAGE(rd != nullptr, "A Vulkan device (lavapipe) is required.");

@@ -408,6 +408,37 @@ TEST_CASE("[AreaShadowQuadtree] point cells: the quarters of the point's leaves,
 	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
 }
 
+TEST_CASE("[AreaShadowQuadtree] shrink evicts the finest quads first, down to a point budget") {
+	TilePool pool(81);
+	AreaShadowQuadtree tree;
+	REQUIRE(tree.reset(&pool));
+	tree.expand(AreaShadowQuadtree::root_key());
+	for (uint32_t c = 0; c < 4; c++) {
+		tree.expand(key(1, c & 1u, c >> 1u));
+	}
+	tree.expand(key(2, 0, 0));
+	REQUIRE(tree.get_depth() == 3);
+	const uint32_t before = tree.get_point_count();
+	CHECK(tree.shrink(before) == 0); // Within budget: nothing.
+	CHECK(tree.shrink(before - 1) == 1); // The one depth-3 quad goes first.
+	CHECK(tree.get_depth() == 2);
+	CHECK(tree.get_point_count() < before);
+	check_accounting(tree, pool);
+	CHECK(tree.shrink(12) > 0);
+	CHECK(tree.get_point_count() <= 12);
+	CHECK(tree.get_depth() <= 2);
+	check_accounting(tree, pool);
+	double sum = 0.0;
+	for (float w : tree.get_point_weights()) {
+		sum += w;
+	}
+	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
+	tree.shrink(0); // Never below the root quad.
+	CHECK(tree.get_point_count() == 4);
+	CHECK(tree.get_node_count() == 1);
+	check_accounting(tree, pool);
+}
+
 // A fake GPU: answers each query with a banding oracle; a frame's answers complete p_latency frames later.
 struct Simulation {
 	TilePool pool;

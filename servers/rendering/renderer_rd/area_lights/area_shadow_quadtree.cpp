@@ -196,6 +196,36 @@ bool AreaShadowQuadtree::prune(uint64_t p_node) {
 	return true;
 }
 
+uint32_t AreaShadowQuadtree::shrink(uint32_t p_max_points) {
+	uint32_t pruned = 0;
+	while (points.size() > p_max_points) {
+		uint64_t best = 0;
+		uint32_t best_depth = 0;
+		bool found = false;
+		for (const auto &kv : nodes) {
+			const Node &n = kv.second;
+			if (!n.has_children || (found && n.depth <= best_depth)) {
+				continue;
+			}
+			bool leaves = true;
+			for (uint32_t c = 0; c < 4 && leaves; c++) {
+				auto cit = nodes.find(make_node_key(n.depth + 1, n.i * 2 + (c & 1u), n.j * 2 + ((c >> 1u) & 1u)));
+				leaves = cit == nodes.end() || !cit->second.has_children;
+			}
+			if (leaves) {
+				best = kv.first;
+				best_depth = n.depth;
+				found = true;
+			}
+		}
+		if (!found || !prune(best)) {
+			break;
+		}
+		pruned++;
+	}
+	return pruned;
+}
+
 bool AreaShadowQuadtree::_children_idle_leaves(const Node &p_node) const {
 	if (!p_node.has_children) {
 		return false;

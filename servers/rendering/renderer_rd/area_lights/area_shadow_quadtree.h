@@ -171,6 +171,11 @@ public:
 	bool expand(uint64_t p_node);
 	// Removes the children of p_node (they must be leaves); points no other quad uses are freed.
 	bool prune(uint64_t p_node);
+	// Eviction (fair sharing, when the light's share of the atlas fell): prunes the deepest parents whose
+	// children are all leaves, finest first (ties: lattice order), until at most p_max_points points are
+	// left or only the root quad is. Returns how many parents were pruned.
+	uint32_t shrink(uint32_t p_max_points);
+
 	// Per frame: begin_frame(); apply_results(newest completed answers); draw collect_draws();
 	// render; issue build_queries().
 	void begin_frame() { frame++; }

@@ -230,8 +230,16 @@ void AreaShadowAdaptiveRD::light_set_tile_cap(uint64_t p_light, uint32_t p_cap) 
 	p_cap = std::max(p_cap, 4u);
 	tile_caps[p_light] = p_cap;
 	auto it = tree_tiles.find(p_light);
-	if (it != tree_tiles.end()) {
-		it->second->cap = p_cap;
+	if (it == tree_tiles.end()) {
+		return;
+	}
+	it->second->cap = p_cap;
+	// Eviction with hysteresis: a tree over its share by more than EVICTION_SLACK of it gives back its finest
+	// quads down to the share, so the tiles go to the lights that now matter more; within the slack it keeps
+	// them (importance noise never churns maps).
+	auto tree = trees.find(p_light);
+	if (tree != trees.end() && float(it->second->get_held()) > float(p_cap) * (1.0f + EVICTION_SLACK) + 4.0f) {
+		evictions += tree->second->shrink(p_cap);
 	}
 }
 

@@ -577,7 +577,8 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		for (AdaptiveLight &al : adaptive_lights) {
 			waiting -= inst.adaptive->light_get_tree_or_null(al.key) ? 0 : 1;
 			const float share = importance_sum > 0.0f ? std::max(al.importance, 0.0f) / importance_sum : 1.0f / float(adaptive_lights.size());
-			inst.adaptive->light_set_tile_cap(al.key, uint32_t(float(pool) * share));
+			const uint32_t tile_cap = uint32_t(float(pool) * share);
+			inst.adaptive->light_set_tile_cap(al.key, tile_cap); // May evict: shrinks a tree far over it.
 			uint32_t used = uint32_t(atlas.get_draws().size() + inst.adaptive_draws.size());
 			uint32_t budget = used < cap ? cap - used : 0;
 			if (!inst.adaptive->light_prepare(al.key, inst.adaptive_tiles.get(), al.hash, budget, inst.adaptive_draws, al.maps, &al.cells)) {
@@ -603,6 +604,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			_hash_bytes(state, &al.hash, sizeof(al.hash));
 			_hash_bytes(state, &in.bias, sizeof(in.bias));
 			_hash_bytes(state, &in.can_grow, sizeof(in.can_grow));
+			_hash_bytes(state, &tile_cap, sizeof(tile_cap)); // A new share: test again (grow into it, or re-find after an eviction).
 			in.state_hash = state != 0 ? state : 1;
 			inst.adaptive_lights.push_back(in);
 		}
