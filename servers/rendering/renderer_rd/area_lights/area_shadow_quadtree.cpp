@@ -421,24 +421,9 @@ uint32_t AreaShadowQuadtree::get_point_refs(const Vector2 &p_uv) const {
 }
 
 std::vector<float> AreaShadowQuadtree::get_point_weights() const {
-	std::map<uint32_t, float> w;
-	for (const auto &kv : nodes) {
-		const Node &n = kv.second;
-		if (n.has_children) {
-			continue;
-		}
-		float side = 1.0f / float(1u << n.depth);
-		uint32_t xs[4], ys[4];
-		_corners(n, xs, ys);
-		for (uint32_t c = 0; c < 4; c++) {
-			w[_point_key(xs[c], ys[c])] += side * side * 0.25f;
-		}
-	}
 	std::vector<float> out;
-	out.reserve(points.size());
-	for (const auto &kv : points) {
-		auto it = w.find(kv.first);
-		out.push_back(it == w.end() ? 0.0f : it->second); // 0: only on a finer neighbour's edge (T-junction).
+	for (uint32_t cell : get_point_cells()) {
+		out.push_back(get_cell_weight(cell)); // A quarter of every leaf the point is a corner of.
 	}
 	return out;
 }
@@ -466,14 +451,17 @@ std::vector<uint32_t> AreaShadowQuadtree::get_point_cells() const {
 	return out;
 }
 
+// Half the side of the leaf in quadrant p_quadrant of a cell code (0: none).
+static float _cell_half_side(uint32_t p_cell, uint32_t p_quadrant) {
+	uint32_t code = (p_cell >> (AreaShadowQuadtree::CELL_BITS * p_quadrant)) & 7u;
+	return code > 0 ? 0.5f / float(1u << (code - 1)) : 0.0f;
+}
+
 float AreaShadowQuadtree::get_cell_weight(uint32_t p_cell) {
 	float w = 0.0f;
 	for (uint32_t q = 0; q < 4; q++) {
-		uint32_t code = (p_cell >> (CELL_BITS * q)) & 7u;
-		if (code > 0) {
-			float half = 0.5f / float(1u << (code - 1));
-			w += half * half;
-		}
+		float half = _cell_half_side(p_cell, q);
+		w += half * half;
 	}
 	return w;
 }
@@ -483,14 +471,11 @@ void AreaShadowQuadtree::get_cell_extent(uint32_t p_cell, float r_extent[4]) {
 		r_extent[i] = 0.0f;
 	}
 	for (uint32_t q = 0; q < 4; q++) {
-		uint32_t code = (p_cell >> (CELL_BITS * q)) & 7u;
-		if (code > 0) {
-			float half = 0.5f / float(1u << (code - 1));
-			float &eu = r_extent[(q & 1u) ? 1 : 0];
-			float &ev = r_extent[(q & 2u) ? 3 : 2];
-			eu = std::max(eu, half);
-			ev = std::max(ev, half);
-		}
+		float half = _cell_half_side(p_cell, q);
+		float &eu = r_extent[(q & 1u) ? 1 : 0];
+		float &ev = r_extent[(q & 2u) ? 3 : 2];
+		eu = std::max(eu, half);
+		ev = std::max(ev, half);
 	}
 }
 
