@@ -77,6 +77,20 @@ struct AdaptiveScene {
 		rt = f.renderer.render_target_create(p_size, p_size);
 		return rt.is_valid();
 	}
+	// An ADAPTIVE light close over the penumbra, so every tree wants to grow past its share of a 64-tile atlas;
+	// tests at full resolution.
+	bool init_crowded() {
+		return init(Vector3(0.3f, 1.4f, 0.2f), 48, RS::LIGHT_AREA_SHADOW_ADAPTIVE) && f.renderer.area_shadow_atlas_set_size(512, 8) && shadows().set_adaptive_reprojection_divisor(1);
+	}
+	// Another shadowed ADAPTIVE light of size p_size at the first one's place.
+	RID add_adaptive_light(const Vector2 &p_size) {
+		RID l = f.area_light(p_size, 2.0f, 20.0f, 2.0f);
+		f.light_storage.light_set_param(l, RS::LIGHT_PARAM_SHADOW_BLUR, 0.5f);
+		f.light_storage.light_set_shadow(l, true);
+		f.light_storage.light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_ADAPTIVE);
+		RenderTest::add_light(scene, l, RS::LIGHT_AREA, light_transform());
+		return l;
+	}
 	void set_camera(const Vector3 &p_origin) {
 		RenderSceneData v = make_view(p_origin, size);
 		scene.cam_transform = v.cam_transform;
@@ -289,19 +303,11 @@ TEST_CASE("[AreaShadowAdaptive][Render] fair sharing between trees: two and four
 	for (int lights : { 2, 4 }) {
 		CAPTURE(lights);
 		AdaptiveScene s;
-		// Close over the penumbra, so every tree wants to grow past its share.
-		REQUIRE(s.init(Vector3(0.3f, 1.4f, 0.2f), 48, RS::LIGHT_AREA_SHADOW_ADAPTIVE));
-		REQUIRE(s.f.renderer.area_shadow_atlas_set_size(512, 8)); // 64 tiles.
-		REQUIRE(s.shadows().set_adaptive_reprojection_divisor(1));
+		REQUIRE(s.init_crowded());
 		std::vector<RID> all = { s.light };
 		for (int i = 1; i < lights; i++) {
-			RID l = s.f.area_light(LIGHT_SIZE, 2.0f, 20.0f, 2.0f);
-			s.f.light_storage.light_set_param(l, RS::LIGHT_PARAM_SHADOW_BLUR, 0.5f);
-			s.f.light_storage.light_set_shadow(l, true);
-			s.f.light_storage.light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_ADAPTIVE);
 			// The same light at the same place: the same importance and the same penumbra.
-			RenderTest::add_light(s.scene, l, RS::LIGHT_AREA, light_transform());
-			all.push_back(l);
+			all.push_back(s.add_adaptive_light(LIGHT_SIZE));
 		}
 		const AreaShadowAtlas &atlas = s.shadows().get_atlas();
 		uint32_t most = 0;
@@ -338,17 +344,10 @@ TEST_CASE("[AreaShadowAdaptive][Render] fair sharing between trees follows impor
 		CAPTURE(lights);
 		const std::vector<float> sizes = lights == 2 ? std::vector<float>{ 1.6f, 0.8f } : std::vector<float>{ 1.6f, 1.2f, 0.8f, 0.6f };
 		AdaptiveScene s;
-		REQUIRE(s.init(Vector3(0.3f, 1.4f, 0.2f), 48, RS::LIGHT_AREA_SHADOW_ADAPTIVE));
-		REQUIRE(s.f.renderer.area_shadow_atlas_set_size(512, 8)); // 64 tiles.
-		REQUIRE(s.shadows().set_adaptive_reprojection_divisor(1));
+		REQUIRE(s.init_crowded());
 		std::vector<RID> all = { s.light };
 		for (int i = 1; i < lights; i++) {
-			RID l = s.f.area_light(Vector2(sizes[i], sizes[i]), 2.0f, 20.0f, 2.0f);
-			s.f.light_storage.light_set_param(l, RS::LIGHT_PARAM_SHADOW_BLUR, 0.5f);
-			s.f.light_storage.light_set_shadow(l, true);
-			s.f.light_storage.light_area_set_shadow_mode(l, RS::LIGHT_AREA_SHADOW_ADAPTIVE);
-			RenderTest::add_light(s.scene, l, RS::LIGHT_AREA, light_transform());
-			all.push_back(l);
+			all.push_back(s.add_adaptive_light(Vector2(sizes[i], sizes[i])));
 		}
 		const AreaShadowAtlas &atlas = s.shadows().get_atlas();
 		float area_sum = 0.0f;

@@ -361,11 +361,16 @@ TEST_CASE("[AreaShadowQuadtree] point weights sum to one") {
 	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
 }
 
+// The root quad, split once (nine points).
+static void start_split(AreaShadowQuadtree &r_tree, TilePool &r_pool) {
+	REQUIRE(r_tree.reset(&r_pool));
+	REQUIRE(r_tree.expand(AreaShadowQuadtree::root_key()));
+}
+
 TEST_CASE("[AreaShadowQuadtree] point cells: the quarters of the point's leaves, their areas the weights, none across a T-junction") {
 	TilePool pool(81);
 	AreaShadowQuadtree tree;
-	REQUIRE(tree.reset(&pool));
-	tree.expand(AreaShadowQuadtree::root_key());
+	start_split(tree, pool);
 	tree.expand(key(1, 1, 1)); // The (+u, +v) quarter at depth 2: T-junctions on its edges at u = 0.75, v = 0.75.
 	tree.expand(key(2, 2, 2));
 	std::vector<AreaShadowQuadtree::Point> points = tree.get_points();
@@ -412,8 +417,7 @@ TEST_CASE("[AreaShadowQuadtree] point cells: the quarters of the point's leaves,
 TEST_CASE("[AreaShadowQuadtree] shrink evicts the finest quads first, down to a point budget") {
 	TilePool pool(81);
 	AreaShadowQuadtree tree;
-	REQUIRE(tree.reset(&pool));
-	tree.expand(AreaShadowQuadtree::root_key());
+	start_split(tree, pool);
 	for (uint32_t c = 0; c < 4; c++) {
 		tree.expand(key(1, c & 1u, c >> 1u));
 	}
