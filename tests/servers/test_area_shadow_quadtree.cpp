@@ -361,6 +361,89 @@ TEST_CASE("[AreaShadowQuadtree] point weights sum to one") {
 	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
 }
 
+// The root quad, split once (nine points).
+static void start_split(AreaShadowQuadtree &r_tree, TilePool &r_pool) {
+	REQUIRE(r_tree.reset(&r_pool));
+	REQUIRE(r_tree.expand(AreaShadowQuadtree::root_key()));
+}
+
+TEST_CASE("[AreaShadowQuadtree] point cells: the quarters of the point's leaves, their areas the weights, none across a T-junction") {
+	TilePool pool(81);
+	AreaShadowQuadtree tree;
+	start_split(tree, pool);
+	tree.expand(key(1, 1, 1)); // The (+u, +v) quarter at depth 2: T-junctions on its edges at u = 0.75, v = 0.75.
+	tree.expand(key(2, 2, 2));
+	std::vector<AreaShadowQuadtree::Point> points = tree.get_points();
+	std::vector<uint32_t> cells = tree.get_point_cells();
+	REQUIRE(cells.size() == points.size());
+	double sum = 0.0;
+	for (size_t i = 0; i < cells.size(); i++) {
+		CAPTURE(points[i].uv);
+		CHECK(cells[i] != 0u); // Every point is a corner of some leaf.
+		sum += AreaShadowQuadtree::get_cell_weight(cells[i]);
+		float e[4];
+		AreaShadowQuadtree::get_cell_extent(cells[i], e);
+		// The box stays on the light.
+		CHECK(points[i].uv.x - e[0] >= -1e-6f);
+		CHECK(points[i].uv.x + e[1] <= 1.0f + 1e-6f);
+		CHECK(points[i].uv.y - e[2] >= -1e-6f);
+		CHECK(points[i].uv.y + e[3] <= 1.0f + 1e-6f);
+		if (points[i].uv == Vector2(0, 0)) {
+			// A corner of the depth-1 leaf (0, 0): its quarter, a square of 1/4 towards +u, +v.
+			CHECK(cells[i] == (2u << (3 * 3)));
+			CHECK(AreaShadowQuadtree::get_cell_weight(cells[i]) == doctest::Approx(1.0 / 16.0));
+			CHECK(e[0] == 0.0f);
+			CHECK(e[1] == doctest::Approx(0.25f));
+		}
+		if (points[i].uv == Vector2(1.0f, 0.75f)) {
+			// On the light's edge between the depth-2 leaves (3, 2) and (3, 3): towards -u only.
+			CHECK(e[1] == 0.0f);
+			CHECK(e[0] == doctest::Approx(0.125f));
+			CHECK(e[2] == doctest::Approx(0.125f));
+			CHECK(e[3] == doctest::Approx(0.125f));
+			CHECK(AreaShadowQuadtree::get_cell_weight(cells[i]) == doctest::Approx(2.0 / 64.0));
+		}
+		if (points[i].uv == Vector2(0.5f, 0.75f)) {
+			// A T-junction: the midpoint of the coarse leaf (1, 0, 1)'s edge, a corner of the finer leaves on
+			// the +u side only, so nothing of the coarse leaf (the box does not reach towards -u).
+			CHECK(e[0] == 0.0f);
+			CHECK(e[1] == doctest::Approx(0.125f));
+			CHECK(AreaShadowQuadtree::get_cell_weight(cells[i]) == doctest::Approx(1.0 / 64.0 + 1.0 / 256.0));
+		}
+	}
+	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
+}
+
+TEST_CASE("[AreaShadowQuadtree] shrink evicts the finest quads first, down to a point budget") {
+	TilePool pool(81);
+	AreaShadowQuadtree tree;
+	start_split(tree, pool);
+	for (uint32_t c = 0; c < 4; c++) {
+		tree.expand(key(1, c & 1u, c >> 1u));
+	}
+	tree.expand(key(2, 0, 0));
+	REQUIRE(tree.get_depth() == 3);
+	const uint32_t before = tree.get_point_count();
+	CHECK(tree.shrink(before) == 0); // Within budget: nothing.
+	CHECK(tree.shrink(before - 1) == 1); // The one depth-3 quad goes first.
+	CHECK(tree.get_depth() == 2);
+	CHECK(tree.get_point_count() < before);
+	check_accounting(tree, pool);
+	CHECK(tree.shrink(12) > 0);
+	CHECK(tree.get_point_count() <= 12);
+	CHECK(tree.get_depth() <= 2);
+	check_accounting(tree, pool);
+	double sum = 0.0;
+	for (float w : tree.get_point_weights()) {
+		sum += w;
+	}
+	CHECK(sum == doctest::Approx(1.0).epsilon(1e-5));
+	tree.shrink(0); // Never below the root quad.
+	CHECK(tree.get_point_count() == 4);
+	CHECK(tree.get_node_count() == 1);
+	check_accounting(tree, pool);
+}
+
 // A fake GPU: answers each query with a banding oracle; a frame's answers complete p_latency frames later.
 struct Simulation {
 	TilePool pool;

@@ -196,6 +196,36 @@ bool AreaShadowQuadtree::prune(uint64_t p_node) {
 	return true;
 }
 
+uint32_t AreaShadowQuadtree::shrink(uint32_t p_max_points) {
+	uint32_t pruned = 0;
+	while (points.size() > p_max_points) {
+		uint64_t best = 0;
+		uint32_t best_depth = 0;
+		bool found = false;
+		for (const auto &kv : nodes) {
+			const Node &n = kv.second;
+			if (!n.has_children || (found && n.depth <= best_depth)) {
+				continue;
+			}
+			bool leaves = true;
+			for (uint32_t c = 0; c < 4 && leaves; c++) {
+				auto cit = nodes.find(make_node_key(n.depth + 1, n.i * 2 + (c & 1u), n.j * 2 + ((c >> 1u) & 1u)));
+				leaves = cit == nodes.end() || !cit->second.has_children;
+			}
+			if (leaves) {
+				best = kv.first;
+				best_depth = n.depth;
+				found = true;
+			}
+		}
+		if (!found || !prune(best)) {
+			break;
+		}
+		pruned++;
+	}
+	return pruned;
+}
+
 bool AreaShadowQuadtree::_children_idle_leaves(const Node &p_node) const {
 	if (!p_node.has_children) {
 		return false;
@@ -391,26 +421,62 @@ uint32_t AreaShadowQuadtree::get_point_refs(const Vector2 &p_uv) const {
 }
 
 std::vector<float> AreaShadowQuadtree::get_point_weights() const {
-	std::map<uint32_t, float> w;
+	std::vector<float> out;
+	for (uint32_t cell : get_point_cells()) {
+		out.push_back(get_cell_weight(cell)); // A quarter of every leaf the point is a corner of.
+	}
+	return out;
+}
+
+std::vector<uint32_t> AreaShadowQuadtree::get_point_cells() const {
+	std::map<uint32_t, uint32_t> cells;
 	for (const auto &kv : nodes) {
 		const Node &n = kv.second;
 		if (n.has_children) {
 			continue;
 		}
-		float side = 1.0f / float(1u << n.depth);
 		uint32_t xs[4], ys[4];
 		_corners(n, xs, ys);
 		for (uint32_t c = 0; c < 4; c++) {
-			w[_point_key(xs[c], ys[c])] += side * side * 0.25f;
+			// Corner c = (c & 1 ? u1 : u0, c & 2 ? v1 : v0): the leaf lies on the other side of it, quadrant 3 - c.
+			cells[_point_key(xs[c], ys[c])] |= (std::min(n.depth + 1, 7u)) << (CELL_BITS * (3u - c));
 		}
 	}
-	std::vector<float> out;
+	std::vector<uint32_t> out;
 	out.reserve(points.size());
 	for (const auto &kv : points) {
-		auto it = w.find(kv.first);
-		out.push_back(it == w.end() ? 0.0f : it->second); // 0: only on a finer neighbour's edge (T-junction).
+		auto it = cells.find(kv.first);
+		out.push_back(it == cells.end() ? 0u : it->second);
 	}
 	return out;
+}
+
+// Half the side of the leaf in quadrant p_quadrant of a cell code (0: none).
+static float _cell_half_side(uint32_t p_cell, uint32_t p_quadrant) {
+	uint32_t code = (p_cell >> (AreaShadowQuadtree::CELL_BITS * p_quadrant)) & 7u;
+	return code > 0 ? 0.5f / float(1u << (code - 1)) : 0.0f;
+}
+
+float AreaShadowQuadtree::get_cell_weight(uint32_t p_cell) {
+	float w = 0.0f;
+	for (uint32_t q = 0; q < 4; q++) {
+		float half = _cell_half_side(p_cell, q);
+		w += half * half;
+	}
+	return w;
+}
+
+void AreaShadowQuadtree::get_cell_extent(uint32_t p_cell, float r_extent[4]) {
+	for (uint32_t i = 0; i < 4; i++) {
+		r_extent[i] = 0.0f;
+	}
+	for (uint32_t q = 0; q < 4; q++) {
+		float half = _cell_half_side(p_cell, q);
+		float &eu = r_extent[(q & 1u) ? 1 : 0];
+		float &ev = r_extent[(q & 2u) ? 3 : 2];
+		eu = std::max(eu, half);
+		ev = std::max(ev, half);
+	}
 }
 
 /* Heuristic */

@@ -171,6 +171,10 @@ public:
 	bool expand(uint64_t p_node);
 	// Removes the children of p_node (they must be leaves); points no other quad uses are freed.
 	bool prune(uint64_t p_node);
+	// Eviction (fair sharing, when the light's share of the atlas fell): prunes the deepest parents whose
+	// children are all leaves, finest first (ties: lattice order), until at most p_max_points points are
+	// left or only the root quad is. Returns how many parents were pruned.
+	uint32_t shrink(uint32_t p_max_points);
 
 	// Per frame: begin_frame(); apply_results(newest completed answers); draw collect_draws();
 	// render; issue build_queries().
@@ -210,6 +214,17 @@ public:
 	// Each point's share of the light (sum over the leaves it is a corner of, of a quarter of the leaf's
 	// area); same order as get_points(), sums to 1.
 	std::vector<float> get_point_weights() const;
+	// Each point's cell (the part of the light it stands for, thesis 6.3 with the weights above): the quarter,
+	// next to the point, of every leaf it is a corner of. Per point (same order as get_points()) 12 bits, 3
+	// per quadrant q around it (bit 0 of q: towards +u, bit 1: towards +v) at bits 3q..3q+2: 0 = no such
+	// leaf (a T-junction's coarse side, or outside the light), else that leaf's depth + 1. Depths up to 6.
+	std::vector<uint32_t> get_point_cells() const;
+	static constexpr uint32_t CELL_BITS = 3;
+	// The share of the light of a cell code of get_point_cells(): sum of (leaf side / 2)^2 (equals
+	// get_point_weights()), and its extent from the point towards -u, +u, -v, +v (half the largest leaf side
+	// on that side; the bounding box of the quarters).
+	static float get_cell_weight(uint32_t p_cell);
+	static void get_cell_extent(uint32_t p_cell, float r_extent[4]);
 	// Total number of expand/prune operations so far (convergence checks).
 	uint64_t get_change_count() const { return change_count; }
 

@@ -230,8 +230,16 @@ void AreaShadowAdaptiveRD::light_set_tile_cap(uint64_t p_light, uint32_t p_cap) 
 	p_cap = std::max(p_cap, 4u);
 	tile_caps[p_light] = p_cap;
 	auto it = tree_tiles.find(p_light);
-	if (it != tree_tiles.end()) {
-		it->second->cap = p_cap;
+	if (it == tree_tiles.end()) {
+		return;
+	}
+	it->second->cap = p_cap;
+	// Eviction with hysteresis: a tree over its share by more than EVICTION_SLACK of it gives back its finest
+	// quads down to the share, so the tiles go to the lights that now matter more; within the slack it keeps
+	// them (importance noise never churns maps).
+	auto tree = trees.find(p_light);
+	if (tree != trees.end() && float(it->second->get_held()) > float(p_cap) * (1.0f + EVICTION_SLACK) + 4.0f) {
+		evictions += tree->second->shrink(p_cap);
 	}
 }
 
@@ -255,7 +263,7 @@ AreaShadowQuadtree *AreaShadowAdaptiveRD::light_get_tree(uint64_t p_light, AreaS
 	return ptr;
 }
 
-bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights) {
+bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<uint32_t> *r_cells) {
 	AreaShadowQuadtree *tree = light_get_tree(p_light, p_tiles);
 	if (!tree) {
 		return false;
@@ -279,7 +287,7 @@ bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::T
 		r_draws.push_back(d);
 	}
 	points = tree->get_points(); // Drawn this frame: valid now.
-	std::vector<float> weights = tree->get_point_weights();
+	std::vector<uint32_t> cells = tree->get_point_cells();
 	for (size_t i = 0; i < points.size(); i++) {
 		const AreaShadowQuadtree::Point &p = points[i];
 		if (p.valid) {
@@ -289,8 +297,8 @@ bool AreaShadowAdaptiveRD::light_prepare(uint64_t p_light, AreaShadowQuadtree::T
 			m.valid = true;
 			m.dirty = p.dirty;
 			r_maps.push_back(m);
-			if (r_weights) {
-				r_weights->push_back(i < weights.size() ? weights[i] : 0.0f);
+			if (r_cells) {
+				r_cells->push_back(i < cells.size() ? cells[i] : 0u);
 			}
 		}
 	}

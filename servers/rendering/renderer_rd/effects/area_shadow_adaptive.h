@@ -207,6 +207,7 @@ private:
 	};
 	std::map<uint64_t, std::unique_ptr<CappedTiles>> tree_tiles;
 	std::map<uint64_t, uint32_t> tile_caps; // Light -> the most tiles its tree may hold.
+	uint64_t evictions = 0;
 	std::map<uint64_t, std::unique_ptr<AreaShadowQuadtree>> trees;
 	std::map<uint64_t, uint64_t> content_hashes;
 	std::map<uint64_t, uint64_t> settled; // Light -> state hash its last complete round of tests left unchanged.
@@ -264,15 +265,19 @@ public:
 	// (created on first use), its maps redrawn when p_content_hash changed, up to p_max_draws draw
 	// requests appended to r_draws (as the atlas' own, map_index = point index), and the drawn maps
 	// (tile, uv) for the shader in r_maps. false when the light has no tree (no four free tiles).
-	// r_weights (optional): each map's share of the light (AreaShadowQuadtree::get_point_weights()), same
-	// order as r_maps.
-	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<float> *r_weights = nullptr);
+	// r_cells (optional): each map's cell code (AreaShadowQuadtree::get_point_cells(): its share of the light
+	// and filter box), same order as r_maps.
+	bool light_prepare(uint64_t p_light, AreaShadowQuadtree::TileSource *p_tiles, uint64_t p_content_hash, uint32_t p_max_draws, std::vector<AreaShadowAtlas::DrawRequest> &r_draws, std::vector<AreaShadowAtlas::Map> &r_maps, std::vector<uint32_t> *r_cells = nullptr);
 	const AreaShadowQuadtree *light_get_tree_or_null(uint64_t p_light) const;
 	uint32_t get_light_count() const { return uint32_t(trees.size()); }
 	// The most tiles p_light's tree may hold from now on (the renderer's share of the atlas for it; at
 	// least the four of a root quad). Splits that would exceed it fail as if the atlas were full; a tree
-	// already larger keeps its tiles until it prunes.
+	// larger than (1 + EVICTION_SLACK) x the cap + 4 is shrunk to it at once (AreaShadowQuadtree::shrink(),
+	// finest quads first), one within that keeps its tiles until it prunes (hysteresis).
 	void light_set_tile_cap(uint64_t p_light, uint32_t p_cap);
+	static constexpr float EVICTION_SLACK = 0.25f;
+	// Parents pruned by light_set_tile_cap() evictions since the start.
+	uint64_t get_eviction_count() const { return evictions; }
 	// Frees a light's tree (tiles back to its source).
 	void light_release(uint64_t p_light);
 	// Releases every light not in p_seen (culled, freed, no longer ADAPTIVE).

@@ -28,16 +28,19 @@ void AreaShadowRendererRD::get_octant_axes(uint32_t p_quadrant, Vector3 &r_right
 	r_up = Vector3(sx, sy, 2.0f) * 0.40824829f;
 }
 
-uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight) {
+uint32_t AreaShadowRendererRD::pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid) {
 	// One map (PCSS, or the centre map of an exhausted atlas): den 0, the light's centre standing for all of it.
 	uint32_t den = p_grid >= 2 ? p_grid - 1 : 0;
 	uint32_t un = den ? uint32_t(std::lround(p_uv.x * den)) : 0;
 	uint32_t vn = den ? uint32_t(std::lround(p_uv.y * den)) : 0;
-	uint32_t w = 0;
-	if (p_weight > 0.0f) {
-		w = uint32_t(std::min(std::max(std::lround(p_weight * WEIGHT_SCALE), 1l), 255l));
-	}
-	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20) | (w << 24);
+	return (p_tile & 0xFFFu) | ((un & 0xFu) << 12) | ((vn & 0xFu) << 16) | ((den & 0xFu) << 20);
+}
+
+uint32_t AreaShadowRendererRD::pack_tree_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_cell) {
+	// Points of a depth <= 3 tree lie on the 9 x 9 lattice (multiples of 1/8): one index of 81.
+	uint32_t un = uint32_t(std::min(std::max(std::lround(p_uv.x * 8.0f), 0l), 8l));
+	uint32_t vn = uint32_t(std::min(std::max(std::lround(p_uv.y * 8.0f), 0l), 8l));
+	return (p_tile & 0xFFFu) | ((vn * 9u + un) << 12) | ((p_cell & 0xFFFu) << 19) | TREE_MAP_BIT;
 }
 
 bool AreaShadowRendererRD::get_surface_sample(const Vector2 &p_uv, uint32_t p_den, float p_half_length, float p_radius, Vector3 &r_position, Basis &r_light_from_sample) {
@@ -407,7 +410,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		uint64_t hash = 0;
 		float importance = 0.0f; // AreaShadowAtlas::compute_importance(), as the grid lights'.
 		std::vector<AreaShadowAtlas::Map> maps;
-		std::vector<float> weights;
+		std::vector<uint32_t> cells; // AreaShadowQuadtree::get_point_cells() of each map.
 	};
 	std::vector<AdaptiveLight> adaptive_lights;
 	surface_fallbacks = 0;
@@ -535,7 +538,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 	}
 	atlas.end_frame();
 	// ADAPTIVE: the trees (free tiles only, never evicting grid lights), their dirty points as draws after
-	// the atlas' own (same per-frame cap), the drawn points and their weights for the shader.
+	// the atlas' own (same per-frame cap), the drawn points and their cells for the shader.
 	if (!adaptive_lights.empty() && _ensure_adaptive(inst)) {
 		// What every ADAPTIVE light's tests see besides the light itself: the camera, the receivers (all
 		// geometry of the view) and the atlas.
@@ -574,10 +577,11 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		for (AdaptiveLight &al : adaptive_lights) {
 			waiting -= inst.adaptive->light_get_tree_or_null(al.key) ? 0 : 1;
 			const float share = importance_sum > 0.0f ? std::max(al.importance, 0.0f) / importance_sum : 1.0f / float(adaptive_lights.size());
-			inst.adaptive->light_set_tile_cap(al.key, uint32_t(float(pool) * share));
+			const uint32_t tile_cap = uint32_t(float(pool) * share);
+			inst.adaptive->light_set_tile_cap(al.key, tile_cap); // May evict: shrinks a tree far over it.
 			uint32_t used = uint32_t(atlas.get_draws().size() + inst.adaptive_draws.size());
 			uint32_t budget = used < cap ? cap - used : 0;
-			if (!inst.adaptive->light_prepare(al.key, inst.adaptive_tiles.get(), al.hash, budget, inst.adaptive_draws, al.maps, &al.weights)) {
+			if (!inst.adaptive->light_prepare(al.key, inst.adaptive_tiles.get(), al.hash, budget, inst.adaptive_draws, al.maps, &al.cells)) {
 				if (!inst.adaptive_warned) {
 					WARN_PRINT(vformat("Area shadow atlas (%u x %u tiles): no four free tiles for an ADAPTIVE light; it stays unshadowed until tiles free up.", atlas.get_subdivision(), atlas.get_subdivision()));
 					inst.adaptive_warned = true;
@@ -600,6 +604,7 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 			_hash_bytes(state, &al.hash, sizeof(al.hash));
 			_hash_bytes(state, &in.bias, sizeof(in.bias));
 			_hash_bytes(state, &in.can_grow, sizeof(in.can_grow));
+			_hash_bytes(state, &tile_cap, sizeof(tile_cap)); // A new share: test again (grow into it, or re-find after an eviction).
 			in.state_hash = state != 0 ? state : 1;
 			inst.adaptive_lights.push_back(in);
 		}
@@ -618,8 +623,9 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		d.tile_size = atlas.get_tile_size();
 		uint32_t n = 0;
 		for (size_t m = 0; m < al.maps.size() && n < MAX_MAPS_GPU; m++) {
-			// Lattice points of a depth <= 3 tree are multiples of 1/8: exact with the 9 x 9 grid's den.
-			d.maps[n++] = pack_map(al.maps[m].tile, al.maps[m].uv, AreaShadowAtlas::MAX_GRID, std::max(al.weights[m], 1.0f / WEIGHT_SCALE));
+			// Each point with its cell (weight and filter box) from the tree; without tree weights (a
+			// measurement knob), as a point of the 9 x 9 grid (trapezoid weight, 1/8 cell).
+			d.maps[n++] = adaptive_tree_weights ? pack_tree_map(al.maps[m].tile, al.maps[m].uv, al.cells[m]) : pack_map(al.maps[m].tile, al.maps[m].uv, AreaShadowAtlas::MAX_GRID);
 		}
 		d.map_count = n;
 		inst.map_counts[al.key] = n;

@@ -16,7 +16,8 @@
 /* ADAPTIVE lights (thesis 6.3): one AreaShadowAdaptiveRD per atlas,     */
 /* created with the first ADAPTIVE light; each such light's quadtree of   */
 /* sample points takes single free tiles of the atlas (never evicts grid  */
-/* lights) and its maps carry the points' quadrature weights. Per frame:  */
+/* lights) and its maps carry the points' cells (weight, filter box).     */
+/* Per frame:                                                             */
 /* begin_frame() (newest completed banding flags, before anything is      */
 /* recorded), prepare(), render_shadows(), the scene's depth pre-pass,    */
 /* dispatch_adaptive() (reprojection + banding of this frame's tests).    */
@@ -53,7 +54,7 @@ public:
 	enum Mode {
 		MODE_FIXED = 0,
 		MODE_PCSS_BASELINE = 1,
-		MODE_ADAPTIVE = 2, // Drawn as FIXED (PCF average) with per-map weights.
+		MODE_ADAPTIVE = 2, // Drawn as FIXED with each tree point's cell (weight and filter box).
 		MODE_HEURISTIC = 3, // Drawn as FIXED.
 	};
 
@@ -66,9 +67,8 @@ public:
 	// great circle, so some receivers would face none of them.
 	static constexpr uint32_t MIN_SURFACE_GRID = 5;
 
-	// Quadrature weights in AreaShadowData::maps (bits 24..31): weight * WEIGHT_SCALE (0 = the grid's
-	// trapezoid rule). ADAPTIVE weights are multiples of 1/256 up to 1/4 (a quarter of a leaf's area).
-	static constexpr float WEIGHT_SCALE = 256.0f;
+	// AreaShadowData::maps bit 31: an ADAPTIVE tree's point (pack_tree_map()), else a grid point (pack_map()).
+	static constexpr uint32_t TREE_MAP_BIT = 0x80000000u;
 
 	// Mirror of struct AreaShadowData in shaders/area_light_shadow_inc.glsl (std430), same names and order.
 	struct AreaShadowData {
@@ -84,7 +84,7 @@ public:
 		float atlas_texel;
 		uint32_t quadrant_size;
 		uint32_t tile_size;
-		uint32_t maps[MAX_MAPS_GPU]; // tile | u_num << 12 | v_num << 16 | den << 20 | weight << 24 (pack_map).
+		uint32_t maps[MAX_MAPS_GPU]; // pack_map() or pack_tree_map().
 	};
 	static_assert(sizeof(AreaShadowData) == 448, "AreaShadowData must match shaders/area_light_shadow_inc.glsl (448 bytes).");
 
@@ -99,10 +99,14 @@ public:
 	// Octant view of quadrant p_quadrant (0..3; bit 0: x > 0, bit 1: y > 0) in light space: rows right,
 	// up, forward (shaders/area_shadow_octant_inc.glsl).
 	static void get_octant_axes(uint32_t p_quadrant, Vector3 &r_right, Vector3 &r_up, Vector3 &r_forward);
-	// Packs one map for the shader: tile (12 bits: atlases have at most 64 x 64 tiles), sample uv as
-	// u_num / den, v_num / den (4 bits each, den = grid - 1 <= 8) and the quadrature weight (8 bits,
-	// round(weight * WEIGHT_SCALE), 0 = trapezoid rule of the grid).
-	static uint32_t pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid, float p_weight = 0.0f);
+	// Packs one grid map for the shader: tile (12 bits: atlases have at most 64 x 64 tiles), sample uv as
+	// u_num / den, v_num / den (4 bits each, den = grid - 1 <= 8, bits 20..23); the shader weights it by the
+	// trapezoid rule and filters it over its grid cell.
+	static uint32_t pack_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_grid);
+	// Packs one point of an ADAPTIVE tree (depth <= 3): tile (12 bits), its index on the 9 x 9 lattice
+	// (7 bits at 12), its cell code (AreaShadowQuadtree::get_point_cells(), 12 bits at 19) and TREE_MAP_BIT.
+	// The shader takes the point's weight (its share of the light) and filter box from the cell.
+	static uint32_t pack_tree_map(uint32_t p_tile, const Vector2 &p_uv, uint32_t p_cell);
 	// Sample point of grid uv p_uv (grid p_den + 1) on the capsule of half length p_half_length (along light
 	// X) and radius p_radius (a sphere: half length 0), and its frame (columns X, Y, Z in light space; Z the
 	// inward normal, so the point emits along -Z as the rectangle does): the equal-area map of
@@ -175,6 +179,7 @@ private:
 	uint32_t adaptive_divisor = 0; // 0: the project setting.
 	bool adaptive_skip_settled = true;
 	bool adaptive_same_depth = true;
+	bool adaptive_tree_weights = true;
 	bool sample_filter = true;
 
 	bool _ensure_atlas(AtlasInstance &p_atlas);
@@ -246,6 +251,10 @@ public:
 	// The quadtrees' same-depth rule (doc/shadows_adaptive.md; default on). Off: each quad refines on its own
 	// banding answer only (Algorithm 1 as written), which lets trees become non-uniform.
 	void set_adaptive_same_depth_rule(bool p_enable);
+	// On (default): each tree point is weighted by its share of the light and filtered over its own cell
+	// (pack_tree_map()). Off: as a point of the uniform 9 x 9 grid (trapezoid weight, 1/8 cell), biased on
+	// non-uniform trees; for the measurement that shows the weights matter.
+	void set_adaptive_tree_weights(bool p_enable) { adaptive_tree_weights = p_enable; }
 	// Per-sample penumbra filter (default on): each map's lookup is filtered over the penumbra of the light
 	// cell its sample point stands for (shaders/area_light_shadow_inc.glsl, area_shadow_sample_filtered()).
 	// Off: the fixed-size PCF of shadow_blur (thesis 6.1 as written), for comparisons.

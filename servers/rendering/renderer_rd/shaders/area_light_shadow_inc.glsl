@@ -60,7 +60,9 @@ struct AreaShadowData { // std430, 448 bytes.
 	float atlas_texel; // 100: 1 / atlas size (pixels).
 	uint quadrant_size; // 104: pixels per octant view (tile size / 2).
 	uint tile_size; // 108: pixels per tile (>= 2 * quadrant_size).
-	uint maps[AREA_SHADOW_MAX_MAPS]; // 112: tile | u_num << 12 | v_num << 16 | den << 20 | weight << 24 (u = u_num / den).
+	// 112: grid point: tile | u_num << 12 | v_num << 16 | den << 20 (u = u_num / den); tree point (bit 31,
+	// AREA_SHADOW_TREE_MAP): tile | (v_num * 9 + u_num) << 12 (u = u_num / 8) | cell << 19 (area_shadow_tree_cell()).
+	uint maps[AREA_SHADOW_MAX_MAPS];
 };
 
 layout(set = 0, binding = 12, std430) restrict readonly buffer AreaShadowLights {
@@ -72,7 +74,13 @@ layout(set = 0, binding = 13) uniform texture2D area_shadow_atlas;
 layout(set = 0, binding = 14) uniform sampler area_shadow_sampler; // Nearest (texelFetch: PCSS).
 layout(set = 0, binding = 15) uniform sampler area_shadow_compare_sampler; // Linear, compare LESS_OR_EQUAL (PCF).
 
+#define AREA_SHADOW_TREE_MAP 0x80000000u
+
 vec2 area_shadow_map_uv(uint p_packed) {
+	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
+		uint index = (p_packed >> 12u) & 0x7Fu;
+		return vec2(float(index % 9u), float(index / 9u)) * 0.125;
+	}
 	float den = float((p_packed >> 20u) & 0xFu);
 	if (den == 0.0) {
 		return vec2(0.5);
@@ -80,12 +88,36 @@ vec2 area_shadow_map_uv(uint p_packed) {
 	return vec2(float((p_packed >> 12u) & 0xFu), float((p_packed >> 16u) & 0xFu)) / den;
 }
 
-// Quadrature weight of a map: bits 24..31 / 256 when set (ADAPTIVE: the point's share of the light from
-// its quadtree, AreaShadowQuadtree::get_point_weights()), else the trapezoid rule of a regular grid.
+// Cell of an ADAPTIVE tree point (thesis 6.3; AreaShadowQuadtree::get_point_cells()): the quarter next to the
+// point of every leaf it is a corner of. Quadrant q (bit 0: towards +u, bit 1: towards +v) holds 3 bits, 0 =
+// none, else the leaf's depth + 1: the quarter is a square of side 2^-depth / 2 (canonical units).
+// r_weight: the cell's area, the point's share of the light (the sum of a quarter of each leaf, so a
+// non-uniform tree's points sum to the whole light: unbiased); r_lo, r_hi: the cell's bounding box, offsets
+// from the point in canonical units.
+void area_shadow_tree_cell(uint p_packed, out float r_weight, out vec2 r_lo, out vec2 r_hi) {
+	r_weight = 0.0;
+	r_lo = vec2(0.0);
+	r_hi = vec2(0.0);
+	for (uint q = 0u; q < 4u; q++) {
+		uint code = (p_packed >> (19u + 3u * q)) & 7u;
+		if (code != 0u) {
+			float half_side = 0.5 * exp2(1.0 - float(code));
+			r_weight += half_side * half_side;
+			vec2 toward = vec2(float(q & 1u), float(q >> 1u)) * 2.0 - 1.0;
+			r_lo = min(r_lo, toward * half_side);
+			r_hi = max(r_hi, toward * half_side);
+		}
+	}
+}
+
+// Quadrature weight of a map: a tree point's share of the light (area_shadow_tree_cell()), else the
+// trapezoid rule of a regular grid.
 float area_shadow_map_weight(uint p_packed, vec2 p_uv) {
-	uint w = p_packed >> 24u;
-	if (w != 0u) {
-		return float(w) * (1.0 / 256.0);
+	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
+		float w;
+		vec2 lo, hi;
+		area_shadow_tree_cell(p_packed, w, lo, hi);
+		return w;
 	}
 	vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(p_uv - 0.5), vec2(0.4999)))); // Trapezoid rule.
 	return edge.x * edge.y;
@@ -228,22 +260,25 @@ float area_shadow_pcf(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal, in
 // Per-sample penumbra filter (ours; thesis 6.1's PCF sized by the sub-light each map stands for).
 // Sample point s of an n x n grid stands for its cell of the light, [u - c/2, u + c/2] x [v - c/2, v + c/2]
 // clipped to [0,1]^2 with c = 1/(n - 1): the cells tile the rectangle and their areas are the trapezoid
-// weights. ADAPTIVE points carry their share w of the light instead: a cell of side sqrt(w / trapezoid),
-// exact for uniform trees. One map (den 0) stands for the whole light.
+// weights. An ADAPTIVE tree point stands for the quarters of its leaves (area_shadow_tree_cell(); the box
+// around them, exact where the leaves around the point have one size). One map (den 0) stands for the whole
+// light.
 // r_lo, r_hi: the cell's corners as offsets from s in light space (metres).
 void area_shadow_cell(uint p_packed, vec2 p_uv, vec2 p_half_size, out vec2 r_lo, out vec2 r_hi) {
-	float den = float((p_packed >> 20u) & 0xFu);
 	vec2 lo = vec2(0.0);
 	vec2 hi = vec2(1.0);
-	if (den > 0.0) {
-		float c = 1.0 / den;
-		uint w = p_packed >> 24u;
-		if (w != 0u) {
-			vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(p_uv - 0.5), vec2(0.4999))));
-			c = sqrt(float(w) * (1.0 / 256.0) / (edge.x * edge.y));
+	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
+		float w;
+		area_shadow_tree_cell(p_packed, w, lo, hi);
+		lo += p_uv;
+		hi += p_uv;
+	} else {
+		float den = float((p_packed >> 20u) & 0xFu);
+		if (den > 0.0) {
+			float c = 1.0 / den;
+			lo = max(p_uv - 0.5 * c, vec2(0.0));
+			hi = min(p_uv + 0.5 * c, vec2(1.0));
 		}
-		lo = max(p_uv - 0.5 * c, vec2(0.0));
-		hi = min(p_uv + 0.5 * c, vec2(1.0));
 	}
 	r_lo = (lo - p_uv) * 2.0 * p_half_size;
 	r_hi = (hi - p_uv) * 2.0 * p_half_size;
