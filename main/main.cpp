@@ -601,6 +601,7 @@ void _register_project_settings() {
 	RendererRD::LightStorage::get_project_max_lights();
 	DirectionalShadowRD::get_project_atlas_size();
 	AreaShadowRendererRD::get_project_filter();
+	RenderingDevice::get_project_frame_queue_size();
 	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_size", int(AreaShadowAtlas::DEFAULT_SIZE));
 	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_subdivision", int(AreaShadowAtlas::DEFAULT_SUBDIVISION));
 	set_error_print_silenced(false);
