@@ -1,7 +1,7 @@
 /**************************************************************************/
 /*  rendering_device.cpp                                                  */
 /**************************************************************************/
-/* Singleton, formats, staging, timestamps, freeing, debug names. Frames */
+/* Singleton, formats, staging, timestamps, freeing, debug names. Frames  */
 /* in flight live in rendering_device_frames.cpp.                         */
 /* Instance/device creation and teardown live in                          */
 /* rendering_device_setup.cpp; buffers, textures and samplers in          */

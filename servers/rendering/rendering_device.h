@@ -5,7 +5,7 @@
 /* Vulkan 1.1 in the spirit of Godot's RenderingDevice.                   */
 /*                                                                        */
 /* Model (read this before using it):                                     */
-/* - Frames in flight (Godot's rendering/rendering_device/vsync/         */
+/* - Frames in flight (Godot's rendering/rendering_device/vsync/          */
 /*   frame_queue_size, default 2): each frame records into its own slot   */
 /*   (command buffer, fence, timestamp queries, upload arena, readbacks,  */
 /*   deferred frees). Everything that touches the GPU (buffer/texture     */
@@ -551,6 +551,8 @@ public:
 	uint64_t get_frames_completed() const;
 	// vkWaitForFences calls so far (tests: swap_buffers() waits once, and only for an old frame).
 	uint64_t get_fence_wait_count() const;
+	// Wall time the CPU spent blocked in those waits, in microseconds.
+	uint64_t get_fence_wait_time_usec() const;
 
 	/********************/
 	/**** TIMESTAMPS ****/

@@ -25,6 +25,7 @@
 #include "servers/rendering/rendering_device_impl.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 
 typedef RenderingDevice::Impl RDImpl;
@@ -53,6 +54,8 @@ bool RDImpl::create_frames(uint32_t p_count, bool p_timestamps) {
 			qpci.queryCount = MAX_TIMESTAMPS;
 			res = vkCreateQueryPool(device, &qpci, nullptr, &f.query_pool);
 			ERR_FAIL_COND_V_MSG(res != VK_SUCCESS, false, vformat("vkCreateQueryPool failed (VkResult %d).", res));
+			f.timestamp_results = create_staging(MAX_TIMESTAMPS * sizeof(uint64_t));
+			ERR_FAIL_COND_V_MSG(!f.timestamp_results.buffer, false, "The timestamp results buffer could not be created.");
 		}
 	}
 	return true;
@@ -68,6 +71,7 @@ void RDImpl::destroy_frames() {
 		for (Readback &r : f.readbacks) {
 			destroy_staging(device, r.staging); // Never delivered.
 		}
+		destroy_staging(device, f.timestamp_results);
 		if (f.query_pool) {
 			vkDestroyQueryPool(device, f.query_pool, nullptr);
 		}
@@ -101,6 +105,12 @@ void RDImpl::submit_frame() {
 		}
 	}
 	captured_label_names = f.label_names;
+	if (!f.timestamp_names.empty() && f.timestamp_results.buffer) {
+		// Results to host memory on the GPU timeline, read after the fence (complete_frame).
+		full_barrier();
+		vkCmdCopyQueryPoolResults(command_buffer, query_pool, 0, uint32_t(f.timestamp_names.size()), f.timestamp_results.buffer, 0, sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
+		host_read_barrier(command_buffer);
+	}
 	vkEndCommandBuffer(command_buffer);
 	recording = false;
 	VkSubmitInfo si = { VK_STRUCTURE_TYPE_SUBMIT_INFO };
@@ -126,7 +136,9 @@ void RDImpl::complete_frame(Frame &p_frame, std::vector<Completed> &r_completed)
 		return;
 	}
 	fence_waits++;
+	const auto wait_begin = std::chrono::steady_clock::now();
 	VkResult res = vkWaitForFences(device, 1, &p_frame.fence, VK_TRUE, UINT64_MAX);
+	fence_wait_usec += uint64_t(std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - wait_begin).count());
 	if (res != VK_SUCCESS) {
 		ERR_PRINT(vformat("vkWaitForFences failed (VkResult %d); waiting for the device to idle.", res));
 		vkDeviceWaitIdle(device);
@@ -147,8 +159,11 @@ void RDImpl::complete_frame(Frame &p_frame, std::vector<Completed> &r_completed)
 	p_frame.readbacks.clear();
 	uint32_t count = (uint32_t)p_frame.timestamp_names.size();
 	if (count > 0 && p_frame.query_pool) {
+		// The frame copied its results into its mapped buffer (submit_frame): reading them takes no driver
+		// call. vkGetQueryPoolResults would: on lavapipe it takes the queue's lock, so it waits for the frame
+		// the queue runs now (the next one in flight), which undid the overlap.
 		std::vector<uint64_t> ticks(count, 0);
-		vkGetQueryPoolResults(device, p_frame.query_pool, 0, count, count * sizeof(uint64_t), ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
+		memcpy(ticks.data(), p_frame.timestamp_results.mapped, count * sizeof(uint64_t));
 		c.timestamp_names = p_frame.timestamp_names;
 		c.timestamp_times.resize(count);
 		double period = properties.limits.timestampPeriod;
@@ -297,4 +312,8 @@ uint64_t RenderingDevice::get_frames_completed() const {
 
 uint64_t RenderingDevice::get_fence_wait_count() const {
 	return impl->fence_waits;
+}
+
+uint64_t RenderingDevice::get_fence_wait_time_usec() const {
+	return impl->fence_wait_usec;
 }

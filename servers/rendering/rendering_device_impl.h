@@ -172,6 +172,7 @@ struct RenderingDevice::Impl {
 	uint64_t frames_submitted = 0;
 	uint64_t frames_completed = 0; // Serial of the newest frame whose fence was waited for.
 	uint64_t fence_waits = 0; // vkWaitForFences calls (tests count them).
+	uint64_t fence_wait_usec = 0; // Wall time spent in them (bench --frame-queue).
 	uint32_t validation_errors = 0;
 	uint32_t validation_warnings = 0;
 
@@ -208,6 +209,7 @@ struct RenderingDevice::Impl {
 		VkCommandBuffer command_buffer = VK_NULL_HANDLE;
 		VkFence fence = VK_NULL_HANDLE;
 		VkQueryPool query_pool = VK_NULL_HANDLE;
+		Staging timestamp_results; // Mapped; the frame copies its query results here before it ends.
 		bool in_flight = false; // Submitted; its fence has not been waited for yet.
 		uint64_t serial = 0; // frames_submitted after its submit.
 		std::vector<Staging> staging; // Upload arena; reused once the fence signalled.
