@@ -266,7 +266,6 @@ void RenderingDevice::swap_buffers() {
 	impl->advance_frame();
 }
 
-
 uint32_t RenderingDevice::get_project_frame_queue_size() {
 	const int64_t v = GLOBAL_DEF(SETTING_FRAME_QUEUE_SIZE, int64_t(DEFAULT_FRAME_QUEUE_SIZE)).to_int();
 	if (v < 1 || v > int64_t(Impl::MAX_FRAME_QUEUE_SIZE)) {
