@@ -11,9 +11,9 @@
 #include "scene/main/node.h"
 #include "scene/main/scene_tree.h"
 #include "servers/rendering/rendering_device.h"
+#include "servers/rendering/rendering_profiler.h"
 #include "servers/rendering_server.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,13 +31,8 @@ double wall_time_ms() {
 	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-double middle(std::vector<double> p_values) {
-	if (p_values.empty()) {
-		return 0.0;
-	}
-	std::sort(p_values.begin(), p_values.end());
-	const size_t n = p_values.size();
-	return (n % 2) ? p_values[n / 2] : 0.5 * (p_values[n / 2 - 1] + p_values[n / 2]);
+double middle(const std::vector<double> &p_values) {
+	return RenderingProfiler::compute_stats(p_values).median; // NumPy's median; 0 without samples.
 }
 
 } // namespace
