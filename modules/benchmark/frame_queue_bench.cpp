@@ -74,6 +74,7 @@ bool FrameQueueBench::run(const Options &p_options, Result *r_result, String *r_
 			}
 			rs->draw(); // Discarded: the first frames after a switch.
 			rs->draw();
+			rd->sync(); // Nothing in flight when the block starts: it pays for its own frames only.
 			const uint64_t waits0 = rd->get_fence_wait_count();
 			const uint64_t blocked0 = rd->get_fence_wait_time_usec();
 			const double wall0 = wall_time_ms();

@@ -6,8 +6,8 @@
 /* scene (the CLI's default) with RenderingDevice frame queue size 1 and  */
 /* 2 (rendering/rendering_device/vsync/frame_queue_size) alternately, in  */
 /* blocks: per round and size, set_frame_queue_size() (a flush), two      */
-/* discarded frames, then N draws and a final sync() (so the frames still */
-/* in flight are paid for in their block). Two clocks per block, divided  */
+/* discarded frames and a sync(), then N draws and a final sync() (each   */
+/* block pays for exactly its N frames). Two clocks per block, divided    */
 /* by N: wall (steady clock) and process CPU time (CLOCK_PROCESS_CPUTIME_ */
 /* ID: on a software rasteriser it counts its threads too). The result    */
 /* is the median over rounds of the per-round ratio size 2 / size 1. No   */
