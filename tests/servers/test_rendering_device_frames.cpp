@@ -14,26 +14,13 @@
 
 #include "core/error/error_macros.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/rd_test_shaders.h"
 
 #include <doctest/doctest.h>
 
 #include <cstring>
 
 namespace {
-
-RID compile_frames_shader(RenderingDevice *p_rd, const std::vector<std::pair<RD::ShaderStage, String>> &p_sources, const String &p_name) {
-	std::vector<RD::ShaderStageSPIRVData> stages;
-	for (const auto &src : p_sources) {
-		String err;
-		RD::ShaderStageSPIRVData sd;
-		sd.shader_stage = src.first;
-		sd.spirv = p_rd->shader_compile_spirv_from_source(src.first, src.second, p_name, &err);
-		INFO(err);
-		REQUIRE(!sd.spirv.empty());
-		stages.push_back(sd);
-	}
-	return p_rd->shader_create_from_spirv(stages, p_name);
-}
 
 // out[i] = in[i] * 2 + frame.
 const char *frames_compute = R"(#version 450
@@ -45,13 +32,6 @@ void main() {
 	uint i = gl_GlobalInvocationID.x;
 	if (i >= params.count) { return; }
 	out_buf.values[i] = in_buf.values[i] * 2u + params.frame;
-}
-)";
-
-const char *frames_vs = R"(#version 450
-void main() {
-	vec2 p = vec2(float((gl_VertexIndex << 1) & 2), float(gl_VertexIndex & 2));
-	gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
 }
 )";
 
@@ -174,7 +154,7 @@ TEST_CASE("[RenderingDevice] frames in flight: 200 frames of changing uploads, c
 	REQUIRE(rd->set_frame_queue_size(queue_size));
 	rd->reset_validation_counts();
 
-	RID compute_shader = compile_frames_shader(rd, { { RD::SHADER_STAGE_COMPUTE, frames_compute } }, "frames_compute");
+	RID compute_shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, frames_compute } }, "frames_compute");
 	REQUIRE(compute_shader.is_valid());
 	RID compute_pipeline = rd->compute_pipeline_create(compute_shader);
 	const uint32_t count = 4096;
@@ -183,7 +163,7 @@ TEST_CASE("[RenderingDevice] frames in flight: 200 frames of changing uploads, c
 	RID compute_set = rd->uniform_set_create({ RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, in), RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 1, out) }, compute_shader, 0);
 	REQUIRE(compute_set.is_valid());
 
-	RID draw_shader = compile_frames_shader(rd, { { RD::SHADER_STAGE_VERTEX, frames_vs }, { RD::SHADER_STAGE_FRAGMENT, frames_fs } }, "frames_draw");
+	RID draw_shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, RD_TEST_FULLSCREEN_VS }, { RD::SHADER_STAGE_FRAGMENT, frames_fs } }, "frames_draw");
 	REQUIRE(draw_shader.is_valid());
 	RD::TextureFormat tf;
 	tf.format = RD::DATA_FORMAT_R8G8B8A8_UNORM;
@@ -287,7 +267,7 @@ TEST_CASE("[RenderingDevice] frames in flight: what is freed while frames use it
 	const uint32_t original = rd->get_frame_queue_size();
 	REQUIRE(rd->set_frame_queue_size(2));
 	rd->reset_validation_counts();
-	RID compute_shader = compile_frames_shader(rd, { { RD::SHADER_STAGE_COMPUTE, frames_compute } }, "frames_free");
+	RID compute_shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, frames_compute } }, "frames_free");
 	REQUIRE(compute_shader.is_valid());
 	RID compute_pipeline = rd->compute_pipeline_create(compute_shader);
 	const uint32_t count = 64 * 1024;
