@@ -32,6 +32,7 @@
 #include "editor/gizmo_overlay.h"
 #include "modules/accuracy/accuracy_command.h"
 #include "modules/benchmark/dolly_sweep_command.h"
+#include "modules/benchmark/frame_queue_bench.h"
 #include "modules/benchmark/isr_sweep_command.h"
 #include "modules/benchmark/methods_sweep_command.h"
 #include "modules/benchmark/shadows_sweep_command.h"
@@ -120,6 +121,7 @@ void _print_usage() {
 			"  godot-area bench [SCENE.tscn] [--frames N] [--warmup N] [--csv F] [--width W] [--height H]\n"
 			"  godot-area bench --sweep methods|shadows|dolly|isr [--csv F] ...   (speed vs accuracy sweeps, charts in doc/results/)\n"
 			"  godot-area bench --targets [--rounds N] [--resolution WxH] [--progress]   (issue 17's cost targets)\n"
+			"  godot-area bench --frame-queue [--rounds N] [--frames N] [--width W] [--height H]   (frames in flight: queue size 1 vs 2)\n"
 			"  godot-area bench --accuracy [--ci] [--shapes] [--resolution N] [--csv F] [--thumbnails DIR] [--methods 0,1,..] [--filter S] [--progress]\n"
 			"  godot-area compare A.exr B.exr [--heatmap H.png] [--json] [--no-hdr-flip]   (B is the reference)\n"
 			"  godot-area reference [SCENE.tscn] -o REF.exr [--width W] [--height H] [--spp N] [--error E] [--shadows on|off]\n"
@@ -601,6 +603,7 @@ void _register_project_settings() {
 	RendererRD::LightStorage::get_project_max_lights();
 	DirectionalShadowRD::get_project_atlas_size();
 	AreaShadowRendererRD::get_project_filter();
+	RenderingDevice::get_project_frame_queue_size();
 	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_size", int(AreaShadowAtlas::DEFAULT_SIZE));
 	GLOBAL_DEF("rendering/lights_and_shadows/area_shadow_atlas_subdivision", int(AreaShadowAtlas::DEFAULT_SUBDIVISION));
 	set_error_print_silenced(false);
@@ -713,6 +716,10 @@ int _run_command(int p_argc, char **p_argv) {
 		if (std::find(rest.begin(), rest.end(), String("--targets")) != rest.end()) {
 			// bench --targets: issue 17's cost targets, one process, interleaved (modules/benchmark/targets_bench.h).
 			return targets_bench_command(rest);
+		}
+		if (std::find(rest.begin(), rest.end(), String("--frame-queue")) != rest.end()) {
+			// bench --frame-queue: frames in flight, queue size 1 vs 2 in one process (modules/benchmark/frame_queue_bench.h).
+			return frame_queue_bench_command(rest);
 		}
 		auto sweep = std::find(rest.begin(), rest.end(), String("--sweep"));
 		if (sweep != rest.end()) {

@@ -12,8 +12,9 @@
 /* a switch) and one that is measured. Two clocks per measured frame:     */
 /*   gpu  the sum of the frame's RD timestamp passes (on lavapipe this    */
 /*        is wall clock);                                                 */
-/*   cpu  process CPU time (CLOCK_PROCESS_CPUTIME_ID) around draw(),      */
-/*        which records, submits and waits: on a software rasteriser it   */
+/*   cpu  process CPU time (CLOCK_PROCESS_CPUTIME_ID) around draw() and   */
+/*        the profile read that waits for that frame (frames in flight):  */
+/*        records, submits and waits: on a software rasteriser it         */
 /*        counts the rasteriser's threads too, so it is load-independent. */
 /* A target ratio A / B is the median over rounds of the per-round        */
 /* ratios (both frames of a round are seconds apart at most).             */

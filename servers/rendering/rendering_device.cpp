@@ -1,7 +1,8 @@
 /**************************************************************************/
 /*  rendering_device.cpp                                                  */
 /**************************************************************************/
-/* Singleton, formats, staging, frames, timestamps, freeing, debug names. */
+/* Singleton, formats, staging, timestamps, freeing, debug names. Frames  */
+/* in flight live in rendering_device_frames.cpp.                         */
 /* Instance/device creation and teardown live in                          */
 /* rendering_device_setup.cpp; buffers, textures and samplers in          */
 /* rendering_device_resources.cpp,                                        */
@@ -207,21 +208,24 @@ void host_read_barrier(VkCommandBuffer p_cmd) {
 }
 
 void RDImpl::begin_frame() {
+	Frame &f = current_frame();
+	command_buffer = f.command_buffer;
+	query_pool = f.query_pool;
 	VkCommandBufferBeginInfo bi = { VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO };
 	bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-	vkBeginCommandBuffer(command_buffer, &bi);
+	vkBeginCommandBuffer(command_buffer, &bi); // Implicit reset (pool has RESET_COMMAND_BUFFER_BIT).
 	if (query_pool) {
 		vkCmdResetQueryPool(command_buffer, query_pool, 0, MAX_TIMESTAMPS);
 	}
-	frame_timestamp_names.clear();
-	frame_label_names.clear();
+	f.timestamp_names.clear();
+	f.label_names.clear();
 	recording = true;
 }
 
-void RDImpl::destroy_pending() {
-	// Keep one standard block for the next frame; free the rest.
+void RDImpl::destroy_pending(Frame &p_frame) {
+	// Keep one standard block for the slot's next frame; free the rest.
 	Staging keep;
-	for (Staging &s : frame_staging) {
+	for (Staging &s : p_frame.staging) {
 		if (!keep.buffer && s.size == STAGING_BLOCK_SIZE) {
 			keep = s;
 			keep.used = 0;
@@ -229,12 +233,12 @@ void RDImpl::destroy_pending() {
 			destroy_staging(device, s);
 		}
 	}
-	frame_staging.clear();
+	p_frame.staging.clear();
 	if (keep.buffer) {
-		frame_staging.push_back(keep);
+		p_frame.staging.push_back(keep);
 	}
 	std::vector<std::function<void()>> work;
-	work.swap(pending_destroy);
+	work.swap(p_frame.pending_destroy);
 	for (auto &f : work) {
 		f();
 	}
@@ -258,6 +262,7 @@ void RDImpl::name_object(VkObjectType p_type, uint64_t p_handle, const String &p
 bool RDImpl::stage_data(const void *p_data, VkDeviceSize p_size, VkBuffer &r_buffer, VkDeviceSize &r_offset) {
 	// Sync first if needed: syncing frees the arena.
 	ensure_recording();
+	std::vector<Staging> &frame_staging = current_frame().staging;
 	Staging *block = frame_staging.empty() ? nullptr : &frame_staging.back();
 	VkDeviceSize offset = block ? ((block->used + 15) & ~VkDeviceSize(15)) : 0;
 	if (!block || offset + p_size > block->size) {
@@ -318,102 +323,6 @@ bool RenderingDevice::is_initialized() const {
 	return impl->initialized;
 }
 
-/****************/
-/**** FRAMES ****/
-/****************/
-
-void RDImpl::submit_frame() {
-	if (submitted || !recording) {
-		return;
-	}
-	if (open_labels > 0) {
-		ERR_PRINT(vformat("submit: %u debug label(s) still open; closing them (each draw_command_begin_label() needs an end).", open_labels));
-		for (; open_labels > 0; open_labels--) {
-			if (cmd_end_label) {
-				cmd_end_label(command_buffer);
-			}
-		}
-	}
-	captured_label_names = frame_label_names;
-	vkEndCommandBuffer(command_buffer);
-	recording = false;
-	VkSubmitInfo si = { VK_STRUCTURE_TYPE_SUBMIT_INFO };
-	si.commandBufferCount = 1;
-	si.pCommandBuffers = &command_buffer;
-	VkResult res = vkQueueSubmit(queue, 1, &si, fence);
-	if (res != VK_SUCCESS) {
-		ERR_PRINT(vformat("vkQueueSubmit failed (VkResult %d); the frame's commands are lost.", res));
-		for (Readback &r : frame_readbacks) {
-			release_readback_staging(r.staging); // Never written: dropped without a callback.
-		}
-		frame_readbacks.clear();
-		begin_frame();
-		return;
-	}
-	submitted = true;
-	frames_submitted++;
-}
-
-void RDImpl::sync_frame() {
-	if (!submitted) {
-		submit_frame();
-	}
-	if (!submitted) {
-		return;
-	}
-	VkResult res = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
-	if (res != VK_SUCCESS) {
-		ERR_PRINT(vformat("vkWaitForFences failed (VkResult %d); waiting for the device to idle.", res));
-		vkDeviceWaitIdle(device);
-	}
-	vkResetFences(device, 1, &fence);
-	submitted = false;
-	// The frame is complete: its async readbacks hold their data.
-	std::vector<std::pair<std::vector<uint8_t>, std::function<void(const std::vector<uint8_t> &)>>> delivered;
-	for (Readback &r : frame_readbacks) {
-		std::vector<uint8_t> bytes(r.size);
-		memcpy(bytes.data(), r.staging.mapped, r.size);
-		release_readback_staging(r.staging);
-		delivered.emplace_back(std::move(bytes), std::move(r.callback));
-	}
-	frame_readbacks.clear();
-
-	uint32_t count = (uint32_t)frame_timestamp_names.size();
-	if (count > 0 && query_pool) {
-		std::vector<uint64_t> ticks(count, 0);
-		vkGetQueryPoolResults(device, query_pool, 0, count, count * sizeof(uint64_t), ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
-		captured_timestamp_names = frame_timestamp_names;
-		captured_timestamp_times.resize(count);
-		double period = properties.limits.timestampPeriod;
-		for (uint32_t i = 0; i < count; i++) {
-			captured_timestamp_times[i] = (uint64_t)((double)ticks[i] * period);
-		}
-	}
-	destroy_pending();
-	begin_frame();
-	for (auto &d : delivered) {
-		d.second(d.first); // The next frame is open: callbacks may record.
-	}
-}
-
-void RDImpl::ensure_recording() {
-	if (submitted) {
-		sync_frame();
-	}
-}
-
-void RenderingDevice::submit() {
-	ERR_FAIL_COND_MSG(!impl->initialized, "RenderingDevice is not initialized.");
-	ERR_FAIL_COND_MSG(impl->list.active, "Cannot submit while a draw or compute list is open; end it first.");
-	impl->submit_frame();
-}
-
-void RenderingDevice::sync() {
-	ERR_FAIL_COND_MSG(!impl->initialized, "RenderingDevice is not initialized.");
-	ERR_FAIL_COND_MSG(impl->list.active, "Cannot sync while a draw or compute list is open; end it first.");
-	impl->sync_frame();
-}
-
 /********************/
 /**** TIMESTAMPS ****/
 /********************/
@@ -423,10 +332,11 @@ void RenderingDevice::capture_timestamp(const String &p_name) {
 	ERR_FAIL_COND_MSG(!s->initialized, "capture_timestamp: RenderingDevice is not initialized.");
 	s->ensure_recording();
 	ERR_FAIL_COND_MSG(!s->query_pool, "capture_timestamp: the device does not support timestamps.");
-	ERR_FAIL_COND_MSG(s->frame_timestamp_names.size() >= Impl::MAX_TIMESTAMPS, vformat("capture_timestamp: more than %u timestamps in one frame.", Impl::MAX_TIMESTAMPS));
-	uint32_t index = (uint32_t)s->frame_timestamp_names.size();
+	std::vector<String> &names = s->current_frame().timestamp_names;
+	ERR_FAIL_COND_MSG(names.size() >= Impl::MAX_TIMESTAMPS, vformat("capture_timestamp: more than %u timestamps in one frame.", Impl::MAX_TIMESTAMPS));
+	uint32_t index = (uint32_t)names.size();
 	vkCmdWriteTimestamp(s->command_buffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, s->query_pool, index);
-	s->frame_timestamp_names.push_back(p_name);
+	names.push_back(p_name);
 }
 
 uint32_t RenderingDevice::get_captured_timestamps_count() const {
@@ -436,6 +346,10 @@ uint32_t RenderingDevice::get_captured_timestamps_count() const {
 uint64_t RenderingDevice::get_captured_timestamp_gpu_time(uint32_t p_index) const {
 	ERR_FAIL_INDEX_V((int64_t)p_index, (int64_t)(uint32_t)impl->captured_timestamp_times.size(), 0);
 	return impl->captured_timestamp_times[p_index];
+}
+
+uint64_t RenderingDevice::get_captured_timestamps_frame() const {
+	return impl->captured_timestamps_frame;
 }
 
 String RenderingDevice::get_captured_timestamp_name(uint32_t p_index) const {
@@ -461,7 +375,7 @@ void RenderingDevice::draw_command_begin_label(const String &p_name, const Color
 		label.color[3] = p_color.a;
 		s->cmd_begin_label(s->command_buffer, &label);
 	}
-	s->frame_label_names.push_back(p_name);
+	s->current_frame().label_names.push_back(p_name);
 	s->open_labels++;
 }
 
@@ -496,6 +410,7 @@ bool RDImpl::free_rid(RID p_rid, bool p_report_error) {
 		}
 	}
 	VkDevice dev = device;
+	std::vector<std::function<void()>> &pending_destroy = current_frame().pending_destroy;
 	if (Buffer *b = buffer_owner.get_or_null(p_rid)) {
 		VkBuffer buf = b->buffer;
 		VkDeviceMemory mem = b->memory;

@@ -5,11 +5,18 @@
 /* Vulkan 1.1 in the spirit of Godot's RenderingDevice.                   */
 /*                                                                        */
 /* Model (read this before using it):                                     */
-/* - One command buffer is recorded at a time ("the frame"). Everything   */
-/*   that touches the GPU (buffer/texture updates with data, clears,      */
-/*   copies, draw lists, compute lists, timestamps) is recorded into it   */
-/*   in call order. submit() ends and submits it, sync() waits for it and */
-/*   opens the next one. submit_and_sync() does both.                     */
+/* - Frames in flight (Godot's rendering/rendering_device/vsync/          */
+/*   frame_queue_size, default 2): each frame records into its own slot   */
+/*   (command buffer, fence, timestamp queries, upload arena, readbacks,  */
+/*   deferred frees). Everything that touches the GPU (buffer/texture     */
+/*   updates with data, clears, copies, draw lists, compute lists,        */
+/*   timestamps) is recorded into the open frame in call order.           */
+/*   swap_buffers() submits it and opens the next slot, waiting only for  */
+/*   the frame that used that slot (queue size frames ago), so the CPU    */
+/*   records frame N+1 while the GPU runs frame N. submit() ends and      */
+/*   submits the frame; sync() waits for EVERY submitted frame and opens  */
+/*   the next one (submit_and_sync() does both: a full flush). Queue size */
+/*   1 waits for each frame before the next opens.                        */
 /* - Synchronisation is automatic and conservative: a full memory barrier */
 /*   is recorded before/after every transfer, draw list and compute list, */
 /*   and between consecutive dispatches of a compute list.                */
@@ -18,10 +25,12 @@
 /*   layout tracking. Texture slices share the parent's image.            */
 /* - buffer_get_data()/texture_get_data() flush: they submit the frame,   */
 /*   wait for it, read back and leave a fresh frame open.                 */
-/*   buffer_get_data_async() does not: its callback runs in the sync()    */
-/*   that completes the frame which recorded the copy.                    */
-/* - free() is deferred: Vulkan objects are destroyed after the next      */
-/*   sync(), so freeing something used in the current frame is safe.     */
+/*   buffer_get_data_async() does not: its callback runs once the fence   */
+/*   of the frame which recorded the copy was waited for (by the          */
+/*   swap_buffers() queue size frames later, or by a sync()).             */
+/* - free() is deferred: Vulkan objects are destroyed once every frame    */
+/*   submitted so far (and the open one) has completed, so freeing        */
+/*   something a frame in flight uses is safe.                            */
 /*   Freeing a texture or buffer also frees the uniform sets and          */
 /*   framebuffers (and texture slices) that depend on it, like Godot.     */
 /* - Descriptor set layouts come from SPIR-V reflection (own parser of    */
@@ -512,22 +521,51 @@ public:
 	/**** FRAMES ****/
 	/****************/
 
+	// rendering/rendering_device/vsync/frame_queue_size (Godot: default 2, range 2..3). 1 is accepted
+	// too (each frame waits for the previous one: tests, and the cost comparison in doc/methods.md).
+	static constexpr const char *SETTING_FRAME_QUEUE_SIZE = "rendering/rendering_device/vsync/frame_queue_size";
+	static constexpr uint32_t DEFAULT_FRAME_QUEUE_SIZE = 2;
+	static uint32_t get_project_frame_queue_size(); // Read by initialize(); invalid values give the default.
+	// Waits for every frame in flight, then uses p_size (1..3) slots. False with an error otherwise.
+	bool set_frame_queue_size(uint32_t p_size);
+	uint32_t get_frame_queue_size() const;
+
 	// Ends and submits the current frame's command buffer. No list may be open.
 	void submit();
-	// Waits for the submitted frame, reads back timestamps, destroys freed objects, opens a new frame.
+	// Waits for every submitted frame (timestamps read back, async readbacks delivered, freed objects
+	// destroyed) and opens a new frame: a full flush.
 	void sync();
 	void submit_and_sync() {
 		submit();
 		sync();
 	}
+	// End of a rendered frame (Godot: RenderingDevice::swap_buffers): submits the frame and opens the
+	// next slot, waiting only for the frame that used it last (frame_queue_size frames ago); that
+	// frame's timestamps and async readbacks are delivered then.
+	void swap_buffers();
+	// Waits for submitted frame p_frame (and older ones) if still in flight and delivers what they hand
+	// back (timestamps, async readbacks); the open frame is neither submitted nor touched.
+	void wait_for_frame(uint64_t p_frame);
+	// Serial of the newest frame whose fence was waited for (frames are numbered from 1 in submission
+	// order; see get_frames_submitted()).
+	uint64_t get_frames_completed() const;
+	// vkWaitForFences calls so far (tests: swap_buffers() waits once, and only for an old frame).
+	uint64_t get_fence_wait_count() const;
+	// Wall time the CPU spent blocked in those waits, in microseconds.
+	uint64_t get_fence_wait_time_usec() const;
 
 	/********************/
 	/**** TIMESTAMPS ****/
 	/********************/
 
 	// Records a GPU timestamp (bottom of pipe) with a name in the current frame; allowed inside lists.
-	// Results of a frame are available after its sync(). At most 256 per frame.
+	// A frame's results replace the captured ones when its fence was waited for (swap_buffers() queue
+	// size frames later, or sync()); frames without timestamps leave them alone. At most 256 per frame.
+	// Inside an async readback callback they are those of the callback's own frame.
 	void capture_timestamp(const String &p_name);
+	// The serial (get_frames_submitted() numbering) of the frame the captured timestamps belong to
+	// (Godot: get_captured_timestamps_frame); 0 before any.
+	uint64_t get_captured_timestamps_frame() const;
 	uint32_t get_captured_timestamps_count() const;
 	// Nanoseconds on the GPU clock (raw ticks * timestampPeriod); monotonic within a frame.
 	uint64_t get_captured_timestamp_gpu_time(uint32_t p_index) const;
@@ -585,7 +623,7 @@ public:
 	uint32_t get_validation_warning_count() const;
 	// Sets both counters back to zero (tests that provoke a validation error on purpose).
 	void reset_validation_counts();
-	// Number of frames submitted so far.
+	// Number of frames submitted so far; also the serial of the newest submitted frame.
 	uint64_t get_frames_submitted() const;
 
 	static RenderingDevice *get_singleton();

@@ -156,10 +156,8 @@ struct RenderingDevice::Impl {
 	VkPhysicalDeviceProperties properties = {};
 	VkPhysicalDeviceFeatures enabled_features = {};
 	VkPhysicalDeviceMemoryProperties memory_properties = {};
-	VkCommandPool command_pool = VK_NULL_HANDLE;
-	VkCommandBuffer command_buffer = VK_NULL_HANDLE;
-	VkFence fence = VK_NULL_HANDLE;
-	VkQueryPool query_pool = VK_NULL_HANDLE;
+	VkCommandBuffer command_buffer = VK_NULL_HANDLE; // frames[frame_index]'s, where commands are recorded.
+	VkQueryPool query_pool = VK_NULL_HANDLE; // frames[frame_index]'s; null without timestamp support.
 	bool has_debug_utils = false;
 	std::vector<String> extra_instance_extensions; // From set_extra_extensions() (presentation).
 	std::vector<String> extra_device_extensions;
@@ -170,8 +168,11 @@ struct RenderingDevice::Impl {
 	DeviceInfo info;
 	bool initialized = false;
 	bool recording = false;
-	bool submitted = false;
+	bool submitted = false; // frames[frame_index] was submitted and the next frame is not open yet.
 	uint64_t frames_submitted = 0;
+	uint64_t frames_completed = 0; // Serial of the newest frame whose fence was waited for.
+	uint64_t fence_waits = 0; // vkWaitForFences calls (tests count them).
+	uint64_t fence_wait_usec = 0; // Wall time spent in them (bench --frame-queue).
 	uint32_t validation_errors = 0;
 	uint32_t validation_warnings = 0;
 
@@ -193,16 +194,43 @@ struct RenderingDevice::Impl {
 	// Dependency tracking: resource id -> RIDs to free with it.
 	std::unordered_map<uint64_t, std::vector<RID>> dependents;
 
-	// Deferred work, run after the next fence wait.
-	std::vector<std::function<void()>> pending_destroy;
-	std::vector<Staging> frame_staging;
-	// buffer_get_data_async(): copies recorded into the current frame, delivered after its fence wait.
+	// buffer_get_data_async(): copies recorded into a frame, delivered after its fence wait.
 	struct Readback {
 		Staging staging;
 		uint32_t size = 0;
 		std::function<void(const std::vector<uint8_t> &)> callback;
 	};
-	std::vector<Readback> frame_readbacks;
+
+	// Frames in flight (Godot's rendering/rendering_device/vsync/frame_queue_size): one slot per frame
+	// that may be queued. Frame serial S records into slot (S - 1) % queue size; opening a slot waits
+	// only for the fence of the frame that used it last (S - queue size).
+	struct Frame {
+		VkCommandPool command_pool = VK_NULL_HANDLE;
+		VkCommandBuffer command_buffer = VK_NULL_HANDLE;
+		VkFence fence = VK_NULL_HANDLE;
+		VkQueryPool query_pool = VK_NULL_HANDLE;
+		Staging timestamp_results; // Mapped; the frame copies its query results here before it ends.
+		bool in_flight = false; // Submitted; its fence has not been waited for yet.
+		uint64_t serial = 0; // frames_submitted after its submit.
+		std::vector<Staging> staging; // Upload arena; reused once the fence signalled.
+		std::vector<Readback> readbacks;
+		std::vector<String> timestamp_names;
+		std::vector<String> label_names;
+		// Deferred destruction of what was freed while this frame was the newest: every frame that may
+		// use it was submitted no later than this one, so this frame's fence covers them all.
+		std::vector<std::function<void()>> pending_destroy;
+	};
+	// What a completed frame hands back, delivered once the next frame is open.
+	struct Completed {
+		uint64_t serial = 0;
+		std::vector<String> timestamp_names;
+		std::vector<uint64_t> timestamp_times;
+		std::vector<std::pair<std::vector<uint8_t>, std::function<void(const std::vector<uint8_t> &)>>> readbacks;
+	};
+	static constexpr uint32_t MAX_FRAME_QUEUE_SIZE = 3;
+	std::vector<Frame> frames;
+	uint32_t frame_index = 0;
+	Frame &current_frame() { return frames[frame_index]; }
 	// Their staging buffers are reused (a readback per frame must not allocate device memory each time).
 	static constexpr size_t READBACK_POOL_SIZE = 8;
 	std::vector<Staging> readback_pool;
@@ -211,12 +239,11 @@ struct RenderingDevice::Impl {
 
 	// Timestamps.
 	static constexpr uint32_t MAX_TIMESTAMPS = 256;
-	std::vector<String> frame_timestamp_names;
 	std::vector<String> captured_timestamp_names;
 	std::vector<uint64_t> captured_timestamp_times;
+	uint64_t captured_timestamps_frame = 0;
 
 	// Debug labels.
-	std::vector<String> frame_label_names;
 	std::vector<String> captured_label_names;
 	uint32_t open_labels = 0;
 
@@ -228,12 +255,18 @@ struct RenderingDevice::Impl {
 	Staging create_staging(VkDeviceSize p_size); // Host visible + coherent, mapped; caller destroys it.
 	// Copies p_data into this frame's staging arena (blocks freed after sync); false on failure.
 	bool stage_data(const void *p_data, VkDeviceSize p_size, VkBuffer &r_buffer, VkDeviceSize &r_offset);
+	bool create_frames(uint32_t p_count, bool p_timestamps);
+	void destroy_frames();
 	void begin_frame();
 	void submit_frame();
-	void sync_frame(); // Submits if needed, waits, reads timestamps, destroys freed objects, begins the next frame.
-	void ensure_recording(); // If the frame was submitted but not synced, syncs so commands can be recorded.
+	// Waits for p_frame's fence and collects what it hands back; recycles its arena, runs its frees.
+	void complete_frame(Frame &p_frame, std::vector<Completed> &r_completed);
+	void deliver(std::vector<Completed> &p_completed); // Timestamps, then readback callbacks, per frame.
+	void advance_frame(); // Submits if needed; opens the next slot, waiting only for that slot's frame.
+	void sync_frame(); // Submits if needed, waits for every frame in flight, begins the next frame.
+	void ensure_recording(); // If the frame was submitted, opens the next one so commands can be recorded.
 	void full_barrier();
-	void destroy_pending();
+	void destroy_pending(Frame &p_frame);
 	void add_dependency(RID p_resource, RID p_dependent);
 	void name_object(VkObjectType p_type, uint64_t p_handle, const String &p_name);
 	RID buffer_create(Buffer::Kind p_kind, uint32_t p_size, VkBufferUsageFlags p_usage, const void *p_data);

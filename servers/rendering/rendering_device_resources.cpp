@@ -154,7 +154,7 @@ bool RenderingDevice::buffer_get_data_async(RID p_buffer, const std::function<vo
 	VkBufferCopy region = { p_offset, 0, size };
 	vkCmdCopyBuffer(s->command_buffer, b->buffer, r.staging.buffer, 1, &region);
 	host_read_barrier(s->command_buffer);
-	s->frame_readbacks.push_back(std::move(r));
+	s->current_frame().readbacks.push_back(std::move(r));
 	return true;
 }
 

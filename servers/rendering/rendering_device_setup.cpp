@@ -310,23 +310,10 @@ bool RenderingDevice::initialize(String *r_error) {
 	}
 	vkGetDeviceQueue(s->device, s->queue_family, 0, &s->queue);
 
-	VkCommandPoolCreateInfo pci = { VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO };
-	pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-	pci.queueFamilyIndex = s->queue_family;
-	vkCreateCommandPool(s->device, &pci, nullptr, &s->command_pool);
-	VkCommandBufferAllocateInfo cai = { VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO };
-	cai.commandPool = s->command_pool;
-	cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-	cai.commandBufferCount = 1;
-	vkAllocateCommandBuffers(s->device, &cai, &s->command_buffer);
-	VkFenceCreateInfo fci = { VK_STRUCTURE_TYPE_FENCE_CREATE_INFO };
-	vkCreateFence(s->device, &fci, nullptr, &s->fence);
 	bool timestamps = timestamp_bits > 0 && s->properties.limits.timestampPeriod > 0.0f;
-	if (timestamps) {
-		VkQueryPoolCreateInfo qpci = { VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO };
-		qpci.queryType = VK_QUERY_TYPE_TIMESTAMP;
-		qpci.queryCount = Impl::MAX_TIMESTAMPS;
-		vkCreateQueryPool(s->device, &qpci, nullptr, &s->query_pool);
+	if (!s->create_frames(get_project_frame_queue_size(), timestamps)) {
+		finalize();
+		return false;
 	}
 
 	// Device info.
@@ -401,21 +388,13 @@ bool RenderingDevice::initialize(String *r_error) {
 void RenderingDevice::finalize() {
 	Impl *s = impl;
 	if (s->device) {
-		if (s->recording && !s->list.active) {
+		if (s->recording && !s->list.active && s->command_buffer) {
 			vkEndCommandBuffer(s->command_buffer);
 			s->recording = false;
 		}
 		vkDeviceWaitIdle(s->device);
 		s->submitted = false;
-		s->destroy_pending();
-		for (Impl::Staging &st : s->frame_staging) {
-			destroy_staging(s->device, st);
-		}
-		s->frame_staging.clear();
-		for (Impl::Readback &r : s->frame_readbacks) {
-			destroy_staging(s->device, r.staging); // Never delivered.
-		}
-		s->frame_readbacks.clear();
+		s->destroy_frames(); // Runs the deferred frees; async readbacks are dropped.
 		for (Impl::Staging &st : s->readback_pool) {
 			destroy_staging(s->device, st);
 		}
@@ -473,11 +452,6 @@ void RenderingDevice::finalize() {
 		for (auto &kv : s->set_layout_cache) {
 			vkDestroyDescriptorSetLayout(dev, kv.second, nullptr);
 		}
-		if (s->query_pool) {
-			vkDestroyQueryPool(dev, s->query_pool, nullptr);
-		}
-		vkDestroyFence(dev, s->fence, nullptr);
-		vkDestroyCommandPool(dev, s->command_pool, nullptr);
 		vkDestroyDevice(dev, nullptr);
 	}
 	if (s->messenger) {

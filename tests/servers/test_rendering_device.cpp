@@ -9,26 +9,13 @@
 
 #include "core/error/error_macros.h"
 #include "tests/servers/rd_test_fixture.h"
+#include "tests/servers/rd_test_shaders.h"
 
 #include <doctest/doctest.h>
 
 #include <cstring>
 
 namespace {
-
-RID compile_shader(RenderingDevice *p_rd, const std::vector<std::pair<RenderingDevice::ShaderStage, String>> &p_sources, const String &p_name) {
-	std::vector<RenderingDevice::ShaderStageSPIRVData> stages;
-	for (const auto &src : p_sources) {
-		String err;
-		RenderingDevice::ShaderStageSPIRVData sd;
-		sd.shader_stage = src.first;
-		sd.spirv = p_rd->shader_compile_spirv_from_source(src.first, src.second, p_name, &err);
-		INFO(err);
-		REQUIRE(!sd.spirv.empty());
-		stages.push_back(sd);
-	}
-	return p_rd->shader_create_from_spirv(stages, p_name);
-}
 
 const char *fill_compute = R"(#version 450
 layout(local_size_x = 64) in;
@@ -74,7 +61,7 @@ TEST_CASE("[RenderingDevice] initializes and reports device info") {
 TEST_CASE("[RenderingDevice] compute shader writes a storage buffer") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE(rd != nullptr);
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, fill_compute } }, "fill_compute");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, fill_compute } }, "fill_compute");
 	REQUIRE(shader.is_valid());
 	CHECK(rd->shader_is_compute(shader));
 	CHECK(rd->shader_get_push_constant_size(shader) == sizeof(FillParams));
@@ -135,7 +122,7 @@ layout(location = 0) out vec4 frag_color;
 layout(push_constant, std430) uniform P { vec4 color; } pc;
 void main() { frag_color = pc.color; }
 )";
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs }, { RD::SHADER_STAGE_FRAGMENT, fs } }, "triangle");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs }, { RD::SHADER_STAGE_FRAGMENT, fs } }, "triangle");
 	REQUIRE(shader.is_valid());
 
 	const uint32_t size = 16;
@@ -234,17 +221,12 @@ void main() { frag_color = pc.color; }
 TEST_CASE("[RenderingDevice] renders into one layer of a 2D array through a slice") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE(rd != nullptr);
-	const char *vs = R"(#version 450
-void main() {
-	vec2 p = vec2(float((gl_VertexIndex << 1) & 2), float(gl_VertexIndex & 2));
-	gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
+	const char *vs = RD_TEST_FULLSCREEN_VS;
 	const char *fs = R"(#version 450
 layout(location = 0) out vec4 frag_color;
 void main() { frag_color = vec4(0.25, 0.5, 0.75, 1.0); }
 )";
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs }, { RD::SHADER_STAGE_FRAGMENT, fs } }, "fullscreen");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs }, { RD::SHADER_STAGE_FRAGMENT, fs } }, "fullscreen");
 	RD::TextureFormat tf;
 	tf.format = RD::DATA_FORMAT_R8G8B8A8_UNORM;
 	tf.width = tf.height = 8;
@@ -303,7 +285,7 @@ void main() {
 	imageStore(dst, p, texture(src, uv) * params.multiplier);
 }
 )";
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, cs } }, "sample_compute");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, cs } }, "sample_compute");
 	REQUIRE(shader.is_valid());
 	RD::TextureFormat sf;
 	sf.format = RD::DATA_FORMAT_R8G8B8A8_UNORM;
@@ -367,7 +349,7 @@ TEST_CASE("[RenderingDevice] timestamps are captured in order") {
 		WARN_MESSAGE(false, "Device has no timestamp support; skipped.");
 		return;
 	}
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, fill_compute } }, "fill_compute_ts");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, fill_compute } }, "fill_compute_ts");
 	RID buffer = rd->storage_buffer_create(4096 * 4);
 	RID set = rd->uniform_set_create({ RD::Uniform(RD::UNIFORM_TYPE_STORAGE_BUFFER, 0, buffer) }, shader, 0);
 	RID pipeline = rd->compute_pipeline_create(shader);
@@ -460,7 +442,7 @@ TEST_CASE("[RenderingDevice] bad input fails cleanly") {
 	CHECK(rd->shader_create_from_spirv({ junk }).is_null());
 	CHECK(rd->framebuffer_create({ RID() }).is_null());
 	CHECK(rd->uniform_set_create({}, RID(), 0).is_null());
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, fill_compute } }, "fill_bad");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_COMPUTE, fill_compute } }, "fill_bad");
 	// Missing binding, then wrong type.
 	CHECK(rd->uniform_set_create({}, shader, 0).is_null());
 	RID ubo = rd->uniform_buffer_create(16);
@@ -580,7 +562,7 @@ TEST_CASE("[RenderingDevice] the debug messenger counts validation errors") {
 	// A vertex shader reading location 0 with an empty vertex format is invalid Vulkan usage
 	// that RenderingDevice itself does not check; the layer must report it.
 	const char *vs = "#version 450\nlayout(location = 0) in vec4 p;\nvoid main() { gl_Position = p; }\n";
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs } }, "needs_input");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs } }, "needs_input");
 	RD::TextureFormat tf;
 	tf.width = tf.height = 4;
 	tf.usage_bits = RD::TEXTURE_USAGE_COLOR_ATTACHMENT_BIT;
@@ -603,18 +585,13 @@ TEST_CASE("[RenderingDevice] the debug messenger counts validation errors") {
 TEST_CASE("[RenderingDevice] two colour attachments, additive blending and a sub-region") {
 	RenderingDevice *rd = rd_test_get_device();
 	REQUIRE(rd != nullptr);
-	const char *vs = R"(#version 450
-void main() {
-	vec2 p = vec2(float((gl_VertexIndex << 1) & 2), float(gl_VertexIndex & 2));
-	gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
+	const char *vs = RD_TEST_FULLSCREEN_VS;
 	const char *fs = R"(#version 450
 layout(location = 0) out vec4 out0;
 layout(location = 1) out vec4 out1;
 void main() { out0 = vec4(0.25, 0.0, 0.0, 0.0); out1 = vec4(0.0, 0.5, 0.0, 1.0); }
 )";
-	RID shader = compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs }, { RD::SHADER_STAGE_FRAGMENT, fs } }, "mrt");
+	RID shader = rd_test_compile_shader(rd, { { RD::SHADER_STAGE_VERTEX, vs }, { RD::SHADER_STAGE_FRAGMENT, fs } }, "mrt");
 	RD::TextureFormat tf;
 	tf.format = RD::DATA_FORMAT_R16G16B16A16_SFLOAT;
 	tf.width = tf.height = 8;

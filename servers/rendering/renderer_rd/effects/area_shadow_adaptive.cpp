@@ -123,9 +123,10 @@ bool AreaShadowAdaptiveRD::initialize(uint32_t p_ring_slots) {
 		// after the frame's fence wait); polling never waits.
 		for (uint32_t i = 0; i < ring.get_slot_count(); i++) {
 			if (ring.get_slot_state(i) == AreaShadowReadbackRing::SLOT_IN_FLIGHT && ring.get_slot_frame(i) == p_frame) {
-				// A submit that failed drops the readback: once a later frame was submitted too, the slot's
-				// frame has certainly been waited for, so it counts as complete (without flags: ignored).
-				return slot_arrived[i] || RenderingDevice::get_singleton()->get_frames_submitted() > slot_submissions[i] + 1;
+				// A submit that failed drops the readback: once the device waited for a frame at least as new
+				// as the slot's, it counts as complete (without flags: ignored). With frames in flight a later
+				// frame being submitted proves nothing.
+				return slot_arrived[i] || RenderingDevice::get_singleton()->get_frames_completed() > slot_submissions[i];
 			}
 		}
 		return true;

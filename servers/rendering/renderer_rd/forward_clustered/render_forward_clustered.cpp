@@ -810,11 +810,46 @@ void RenderForwardClustered::render_scene(const RenderSceneData &p_data, RID p_r
 		rd->capture_timestamp(prefix + "transparent");
 	}
 
-	rd->submit_and_sync();
-	_read_profile(prefix);
+	// Frames in flight: submits this frame and opens the next, waiting only for the frame
+	// rendering/rendering_device/vsync/frame_queue_size frames old. The pass times arrive with it.
+	const uint64_t submitted_before = rd->get_frames_submitted();
+	rd->swap_buffers();
+	if (rd->get_frames_submitted() > submitted_before) {
+		pending_profiles.emplace_back(rd->get_frames_submitted(), prefix);
+		if (pending_profiles.size() > 8) {
+			pending_profiles.erase(pending_profiles.begin()); // Never waited for by anyone: dropped.
+		}
+	}
 }
 
-void RenderForwardClustered::_read_profile(const String &p_prefix) {
+void RenderForwardClustered::_update_profile() const {
+	// The captured timestamps are those of the newest frame the device waited for: if this renderer
+	// drew it, they become the profile (attributed to that frame, not to the frame just recorded).
+	const uint64_t frame = RenderingDevice::get_singleton()->get_captured_timestamps_frame();
+	if (frame <= last_profile_frame) {
+		return;
+	}
+	for (size_t i = 0; i < pending_profiles.size(); i++) {
+		if (pending_profiles[i].first == frame) {
+			_read_profile(pending_profiles[i].second);
+			last_profile_frame = frame;
+			pending_profiles.erase(pending_profiles.begin(), pending_profiles.begin() + i + 1);
+			return;
+		}
+	}
+}
+
+std::vector<std::pair<String, double>> RenderForwardClustered::get_last_frame_profile() const {
+	// A synchronous read: the last drawn frame may still be in flight; wait for it (only it and older
+	// frames), so the profile is that frame's, as callers (tests, the CLI) expect.
+	if (!pending_profiles.empty()) {
+		RenderingDevice::get_singleton()->wait_for_frame(pending_profiles.back().first);
+	}
+	_update_profile();
+	return last_profile;
+}
+
+void RenderForwardClustered::_read_profile(const String &p_prefix) const {
 	RenderingDevice *rd = RenderingDevice::get_singleton();
 	last_profile.clear();
 	const int pass_count = 12;

@@ -14,8 +14,9 @@
 /*      only when the environment enables one: the opaque pass then also */
 /*      writes normal, albedo and ambient targets (USE_SS_RADIOSITY);    */
 /*   4. sky background (effects/sky_rd.h, only with background_mode Sky). */
-/* then waits for the GPU and keeps the pass timestamps (capture_         */
-/* timestamp) for get_last_frame_profile(): "area_shadows" (the area     */
+/* then swap_buffers() (frames in flight: no wait for this frame); the   */
+/* pass timestamps (capture_timestamp) are get_last_frame_profile(),     */
+/* which waits for that frame if needed: "area_shadows" (the area        */
 /* shadow map passes; only in frames with shadowed area lights, ~0 when   */
 /* no map is redrawn), "depth_prepass", "area_reprojection" and          */
 /* "area_banding" (ADAPTIVE area shadows, only in frames with quad tests, */
@@ -193,7 +194,12 @@ private:
 	bool force_all_lights = false;
 	bool area_code_disabled = false; // Benchmark baseline (set_debug_disable_area_lights).
 	bool initialized = false;
-	std::vector<std::pair<String, double>> last_profile;
+	// Pass times of the newest frame of this renderer whose GPU work completed (frames in flight:
+	// they arrive with the frame's fence, frame_queue_size frames later, at a flush, or when
+	// get_last_frame_profile() waits for the last drawn frame).
+	mutable std::vector<std::pair<String, double>> last_profile;
+	mutable uint64_t last_profile_frame = 0; // Its RenderingDevice frame serial.
+	mutable std::vector<std::pair<uint64_t, String>> pending_profiles; // (frame serial, timestamp prefix).
 	uint32_t last_area_shadow_tests = 0; // ADAPTIVE quads tested by the last render_scene().
 	uint64_t last_draw_calls = 0; // Colour-pass draws (opaque and transparent) of the last render_scene().
 	uint64_t last_area_draw_calls = 0; // Of those, drawn with the area-light shader version.
@@ -216,7 +222,8 @@ private:
 	// AREA_VERSION_SHADOWS_* bits for the area shadow data of this frame (area_shadows.prepare() ran).
 	uint32_t _get_area_shadow_version_bits() const;
 	void _free_render_target(RenderTarget *p_rt);
-	void _read_profile(const String &p_prefix);
+	void _read_profile(const String &p_prefix) const;
+	void _update_profile() const;
 
 public:
 	/* Public Methods */
@@ -234,7 +241,7 @@ public:
 	bool render_target_free(RID p_rid) override;
 	bool owns_render_target(RID p_rid) const override { return render_target_owner.owns(p_rid); }
 	std::vector<float> render_target_get_data(RID p_render_target) override;
-	std::vector<std::pair<String, double>> get_last_frame_profile() const override { return last_profile; }
+	std::vector<std::pair<String, double>> get_last_frame_profile() const override;
 	uint32_t get_last_frame_area_shadow_tests() const override { return last_area_shadow_tests; }
 	uint64_t get_last_frame_rendering_info(RS::RenderingInfo p_info) const override;
 	void set_debug_force_all_lights(bool p_enable) override { force_all_lights = p_enable; }
