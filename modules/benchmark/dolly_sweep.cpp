@@ -330,8 +330,10 @@ bool DollySweep::run(const Options &p_options, std::vector<Row> &r_rows, String 
 					activate(m);
 					auto t0 = std::chrono::steady_clock::now();
 					render_frame(m, true);
+					// Frames in flight: the profile read waits for this frame, so t1 - t0 is the whole frame.
+					const std::vector<std::pair<String, double>> profile = rs->get_frame_profile();
 					auto t1 = std::chrono::steady_clock::now();
-					FrameTimes t = read_profile(rs->get_frame_profile());
+					FrameTimes t = read_profile(profile);
 					maps_ms[m].push_back(t.shadow_maps);
 					reproj_ms[m].push_back(t.reprojection);
 					banding_ms[m].push_back(t.banding);

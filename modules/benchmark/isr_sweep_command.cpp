@@ -111,6 +111,7 @@ bool run_timing(int p_rounds, bool p_progress, std::vector<TimingRow> &r_rows, S
 			c->view.set_screen_space_lighting(c->settings); // The quality is global: set it per draw.
 			const clock_t t0 = clock();
 			rs->draw();
+			rs->get_frame_profile(); // Frames in flight: waits for this frame, so t1 - t0 covers all of it.
 			const clock_t t1 = clock();
 			c->view.set_active(false);
 			if (round >= 0) {
