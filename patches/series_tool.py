@@ -35,6 +35,7 @@ Manifest syntax (one item a line; '#' starts a comment line):
   generated GLOB                 generated data (the LUT): carried, but not counted in patch sizes
 """
 
+import difflib
 import os
 import re
 import subprocess
@@ -201,16 +202,131 @@ def parse_hunks(base_blob, target_blob):
 		elif hunks and line.startswith(b"-") and not line.startswith(b"---"):
 			hunks[-1][3].append(line[1:])
 			hunks[-1][4].append(line[1:])
-	# A pure insertion is split into top-level blocks (see split_blocks), each its own hunk at the same
-	# place, so one rule can take the Sky lines of an #include or registration list and leave the rest.
+	# A replacement is refined into the lines it keeps (a removed line paired with a similar added one),
+	# pure deletions and pure insertions (see refine_hunk); a pure insertion is split into top-level
+	# blocks (see split_blocks), each its own hunk at the same place, so one rule can take the Sky lines
+	# of an #include or registration list, or the new function in front of a changed signature, and
+	# leave the rest. A hunk's text (what rules match) is what it adds, or what it removes when it only
+	# removes: a rewritten block is judged by its new code, not by the old code it replaces.
+	# Entries: [base index, removed count, added lines, text rules match, parent entry or None]. A block
+	# with a braced body (function, struct, enum, if) is a head, one entry per statement or member of
+	# its body (recursively) and a tail; the body's entries are the head's children (see assign()).
 	split = []
 	for index, count, added, text, removed in hunks:
-		if count == 0 and len(added) > 1:
-			for block in split_blocks(added):
-				split.append([index, 0, block, list(block)])
-			continue
-		split.append([index, count, added, text])
+		for piece_index, piece_count, piece_added, piece_removed in refine_hunk(index, count, added, removed):
+			if piece_count == 0 and len(piece_added) > 1:
+				for block in split_blocks(piece_added):
+					add_structured(split, piece_index, block, None)
+				continue
+			split.append([piece_index, piece_count, piece_added, match_text(piece_added if piece_added else piece_removed), None])
 	return split
+
+
+def match_text(lines):
+	"""What hunk rules match: the code of the lines without comments (string literals kept), or the
+	comments when the lines hold nothing else."""
+	code = []
+	for line in lines:
+		stripped = line.strip()
+		if stripped.startswith((b"/*", b"*", b"//")):
+			continue
+		code.append(re.sub(rb'"(?:\\.|[^"\\])*"|//.*', lambda m: m.group(0) if m.group(0).startswith(b'"') else b"", line))
+	if any(c.strip() for c in code):
+		return code
+	return list(lines)
+
+
+def add_structured(out, index, block, parent):
+	"""Appends a pure-insertion block at index: as one entry, or, when it opens a braced body, as its
+	head, its body's blocks (children of the head, recursively) and its tail (the closing lines)."""
+
+	def code(line):
+		return re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
+
+	def balance(line):
+		c = code(line)
+		return sum(c.count(x) for x in b"([{") - sum(c.count(x) for x in b")]}")
+
+	head_end = tail_start = None
+	depth = 0
+	for i, line in enumerate(block):
+		if code(line).startswith(b"#"):
+			continue
+		before = depth
+		depth += balance(line)
+		if head_end is None:
+			if depth > 0 and code(line).endswith(b"{") and before == depth - 1:
+				head_end = i
+			elif depth > 0 and not code(line).endswith(b"{"):
+				break  # A multi-line call or expression: one entry.
+		elif depth == 0:
+			tail_start = i
+			break
+	if head_end is None or tail_start is None or tail_start <= head_end + 1:
+		out.append([index, 0, block, match_text(block), parent])
+		return
+	head = len(out)
+	out.append([index, 0, block[: head_end + 1], match_text(block[: head_end + 1]), parent])
+	for child in split_blocks(block[head_end + 1 : tail_start]):
+		add_structured(out, index, child, head)
+	out.append([index, 0, block[tail_start:], [], head])
+
+
+def similar(a, b):
+	a, b = a.strip(), b.strip()
+	if a == b:
+		return bool(a)
+	if not a or not b:
+		return False
+	return difflib.SequenceMatcher(None, a, b, autojunk=False).ratio() >= 0.6
+
+
+def refine_hunk(index, count, added, removed):
+	"""Splits one -U0 hunk (count base lines from index replaced by added) into pieces (index, count,
+	added, removed) in base order: each removed line paired with a similar added line (an edited line,
+	in order: the longest such pairing) is a 1-line replacement, unpaired removed lines are deletions,
+	unpaired added lines insertions at their place. Any subset of the pieces applies to the base."""
+	if count == 0 or not added:
+		return [(index, count, added, removed)]
+	n, m = len(removed), len(added)
+	if n * m > 40000:
+		return [(index, count, added, removed)]
+	# Longest pairing of similar lines (LCS over the similarity relation).
+	best = [[0] * (m + 1) for _ in range(n + 1)]
+	for i in range(n - 1, -1, -1):
+		for j in range(m - 1, -1, -1):
+			best[i][j] = max(best[i + 1][j], best[i][j + 1], best[i + 1][j + 1] + 1 if similar(removed[i], added[j]) else 0)
+	if best[0][0] == 0:
+		return [(index, count, added, removed)]  # A rewrite: old and new text go together.
+	pieces = []
+	i = j = 0
+	pending_added = []
+	pending_removed = []
+
+	def flush(position):
+		if pending_removed:
+			pieces.append((position - len(pending_removed), len(pending_removed), [], list(pending_removed)))
+			pending_removed.clear()
+		if pending_added:
+			pieces.append((position, 0, list(pending_added), []))
+			pending_added.clear()
+
+	while i < n or j < m:
+		if i < n and j < m and similar(removed[i], added[j]) and best[i][j] == best[i + 1][j + 1] + 1:
+			flush(index + i)
+			pieces.append((index + i, 1, [added[j]], [removed[i]]))
+			i += 1
+			j += 1
+		elif i < n and (j >= m or best[i + 1][j] >= best[i][j + 1]):
+			if pending_added:
+				flush(index + i)
+			pending_removed.append(removed[i])
+			i += 1
+		else:
+			pending_added.append(added[j])
+			j += 1
+	flush(index + n)
+	return pieces
 
 
 def split_blocks(lines):
@@ -237,8 +353,8 @@ def split_blocks(lines):
 		if not stripped:
 			(blocks[-1] if blocks and not pending else pending).append(line)
 			continue
-		if preprocessor == 0 and open_count <= 0 and blocks and indent(line) <= first_indent:
-			if stripped.startswith((b"}", b")", b"]")) and balance(stripped) < 0 and not re.search(rb"[({[]", stripped):
+		if not blocks or (preprocessor == 0 and open_count <= 0 and indent(line) <= first_indent):
+			if blocks and stripped.startswith((b"}", b")", b"]")) and balance(stripped) < 0 and not re.search(rb"[({[]", stripped):
 				pending.append(line)  # Closes a scope of the base text: goes with the block that reopens one.
 				continue
 			if stripped.startswith((b"//", b"/*", b"*")):
@@ -248,13 +364,6 @@ def split_blocks(lines):
 			pending = []
 			first_indent = indent(line)
 			open_count = 0
-		elif not blocks:
-			if stripped.startswith((b"//", b"/*", b"*")):
-				pending.append(line)
-				continue
-			blocks.append(pending + [line])
-			pending = []
-			first_indent = indent(line)
 		else:
 			blocks[-1].extend(pending + [line])
 			pending = []
@@ -277,7 +386,7 @@ def apply_hunks(base_bytes, hunks, chosen, target_bytes):
 	lines = base_bytes.split(b"\n")
 	out = []
 	pos = 0
-	for i, (index, count, added, _) in enumerate(hunks):
+	for i, (index, count, added) in enumerate(h[:3] for h in hunks):
 		if i not in chosen:
 			continue
 		out.extend(lines[pos:index])
@@ -361,13 +470,15 @@ class Plan:
 			# Pins first in manifest order, then ordinary rules latest patch first.
 			rules = [r for r in rules if r[2]] + sorted([r for r in rules if not r[2]], key=lambda r: -r[0])
 			hunks = parse_hunks(self.base_ids[self.moved_from.get(path, path)][1], self.target_ids[path][1])
+			# An entry goes to the first rule matching its text; a body's entry (a statement, a member) goes
+			# to its head's patch when no rule matches it, and never before its head.
 			owners = []
 			for h in hunks:
 				text = b"\n".join(h[3]).decode("utf-8", errors="replace")
-				owner = self.home[path]
+				owner = self.home[path] if h[4] is None else owners[h[4]]
 				for k, regex, pin in rules:
-					if regex.search(text):
-						owner = k
+					if text.strip() and regex.search(text):
+						owner = k if h[4] is None else max(k, owner)
 						break
 				owners.append(owner)
 			self.hunks[path] = hunks
