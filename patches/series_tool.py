@@ -298,6 +298,10 @@ def add_structured(out, index, block, parent):
 	out.append([index, 0, block[tail_start:], [], head])
 
 
+def code_of(line):
+	return re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
+
+
 def code_balance(lines):
 	total = 0
 	for line in lines:
@@ -305,6 +309,10 @@ def code_balance(lines):
 		if not code.startswith((b"#", b"*", b"/*")):
 			total += sum(code.count(x) for x in b"([{") - sum(code.count(x) for x in b")]}")
 	return total
+
+
+def likeness(a, b):
+	return difflib.SequenceMatcher(None, a.strip(), b.strip(), autojunk=False).ratio()
 
 
 def similar(a, b):
@@ -328,17 +336,28 @@ def refine_hunk(index, count, added, removed):
 	n, m = len(removed), len(added)
 	pieces = []
 	if m >= n:
-		for j in range(m - n + 1):
-			if all(similar(removed[i], added[j + i]) for i in range(n)):
+		# The run of added lines most like the removed ones (a changed signature pairs with itself, not
+		# with a new function's signature above it).
+		runs = [j for j in range(m - n + 1) if all(similar(removed[i], added[j + i]) for i in range(n))]
+		runs.sort(key=lambda j: -sum(likeness(removed[i], added[j + i]) for i in range(n)))
+		for j in runs[:1]:
 				if j:
 					pieces.append((index, 0, added[:j], []))
 				pieces += [(index + i, 1, [added[j + i]], [removed[i]]) for i in range(n)]
-				if j + n < m:
-					pieces.append((index + n, 0, added[j + n :], []))
+				rest = added[j + n :]
+				# An edited line that opens a multi-line expression (not a block) keeps its continuation.
+				last = pieces[-1]
+				while rest and code_balance(last[2]) > 0 and not code_of(last[2][-1]).endswith(b"{"):
+					last = (last[0], last[1], last[2] + [rest[0]], last[3])
+					rest = rest[1:]
+				pieces[-1] = last
+				if rest:
+					pieces.append((index + n, 0, rest, []))
 				return pieces
 	else:
-		for i0 in range(n - m + 1):
-			if all(similar(removed[i0 + t], added[t]) for t in range(m)):
+		runs = [i0 for i0 in range(n - m + 1) if all(similar(removed[i0 + t], added[t]) for t in range(m))]
+		runs.sort(key=lambda i0: -sum(likeness(removed[i0 + t], added[t]) for t in range(m)))
+		for i0 in runs[:1]:
 				if i0:
 					pieces.append((index, i0, [], removed[:i0]))
 				pieces += [(index + i0 + t, 1, [added[t]], [removed[i0 + t]]) for t in range(m)]
@@ -347,124 +366,6 @@ def refine_hunk(index, count, added, removed):
 				return pieces
 	# A rewrite: the new text is one insertion and the old one deletion, each free to go to its own patch.
 	return [(index, 0, added, []), (index, count, [], removed)]
-
-
-def match_text(lines):
-	"""What hunk rules match: the code of the lines without comments (string literals kept), or the
-	comments when the lines hold nothing else."""
-	code = []
-	for line in lines:
-		stripped = line.strip()
-		if stripped.startswith((b"/*", b"*", b"//")):
-			continue
-		code.append(re.sub(rb'"(?:\\.|[^"\\])*"|//.*', lambda m: m.group(0) if m.group(0).startswith(b'"') else b"", line))
-	if any(c.strip() for c in code):
-		return code
-	return list(lines)
-
-
-def add_structured(out, index, block, parent):
-	"""Appends a pure-insertion block at index: as one entry, or, when it opens a braced body, as its
-	head, its body's blocks (children of the head, recursively) and its tail (the closing lines)."""
-
-	def code(line):
-		return re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
-
-	def balance(line):
-		c = code(line)
-		return sum(c.count(x) for x in b"([{") - sum(c.count(x) for x in b")]}")
-
-	head_end = tail_start = None
-	depth = 0
-	for i, line in enumerate(block):
-		if code(line).startswith(b"#"):
-			continue
-		before = depth
-		depth += balance(line)
-		if head_end is None:
-			if depth > 0 and code(line).endswith(b"{") and before == depth - 1:
-				head_end = i
-			elif depth > 0 and not code(line).endswith(b"{"):
-				break  # A multi-line call or expression: one entry.
-		elif depth == 0:
-			tail_start = i
-			break
-	if head_end is None or tail_start is None or tail_start <= head_end + 1:
-		out.append([index, 0, block, match_text(block), parent])
-		return
-	head = len(out)
-	out.append([index, 0, block[: head_end + 1], match_text(block[: head_end + 1]), parent])
-	for child in split_blocks(block[head_end + 1 : tail_start]):
-		add_structured(out, index, child, head)
-	out.append([index, 0, block[tail_start:], [], head])
-
-
-def code_balance(lines):
-	total = 0
-	for line in lines:
-		code = re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
-		if not code.startswith((b"#", b"*", b"/*")):
-			total += sum(code.count(x) for x in b"([{") - sum(code.count(x) for x in b")]}")
-	return total
-
-
-def similar(a, b):
-	a, b = a.strip(), b.strip()
-	if len(a) < 4 or len(b) < 4:
-		return a == b and len(a) > 1  # A lone brace or blank line is no evidence of an edit.
-	if a == b:
-		return True
-	return difflib.SequenceMatcher(None, a, b, autojunk=False).ratio() >= 0.6
-
-
-def refine_hunk(index, count, added, removed):
-	"""Splits one -U0 hunk (count base lines from index replaced by added) into pieces (index, count,
-	added, removed) in base order: each removed line paired with a similar added line (an edited line,
-	in order: the longest such pairing) is a 1-line replacement, unpaired removed lines are deletions,
-	unpaired added lines insertions at their place. Any subset of the pieces applies to the base."""
-	if count == 0 or not added:
-		return [(index, count, added, removed)]
-	n, m = len(removed), len(added)
-	if n * m > 40000:
-		return [(index, count, added, removed)]
-	# Longest pairing of similar lines (LCS over the similarity relation).
-	best = [[0] * (m + 1) for _ in range(n + 1)]
-	for i in range(n - 1, -1, -1):
-		for j in range(m - 1, -1, -1):
-			best[i][j] = max(best[i + 1][j], best[i][j + 1], best[i + 1][j + 1] + 1 if similar(removed[i], added[j]) else 0)
-	if best[0][0] * 2 < min(n, m):
-		# A rewrite (most old lines have no counterpart; the few similar ones are boilerplate): the new
-		# text is one insertion and the old one deletion, each free to go to its own patch.
-		return [(index, 0, added, []), (index, count, [], removed)]
-	pieces = []
-	i = j = 0
-	pending_added = []
-	pending_removed = []
-
-	def flush(position):
-		if pending_removed:
-			pieces.append((position - len(pending_removed), len(pending_removed), [], list(pending_removed)))
-			pending_removed.clear()
-		if pending_added:
-			pieces.append((position, 0, list(pending_added), []))
-			pending_added.clear()
-
-	while i < n or j < m:
-		if i < n and j < m and similar(removed[i], added[j]) and best[i][j] == best[i + 1][j + 1] + 1:
-			flush(index + i)
-			pieces.append((index + i, 1, [added[j]], [removed[i]]))
-			i += 1
-			j += 1
-		elif i < n and (j >= m or best[i + 1][j] >= best[i][j + 1]):
-			if pending_added:
-				flush(index + i)
-			pending_removed.append(removed[i])
-			i += 1
-		else:
-			pending_added.append(added[j])
-			j += 1
-	flush(index + n)
-	return pieces
 
 
 def split_blocks(lines):
