@@ -239,12 +239,20 @@ def parse_hunks(base_blob, target_blob):
 	# its body (recursively) and a tail; the body's entries are the head's children (see assign()).
 	split = []
 	for index, count, added, text, removed in hunks:
+		first_new = len(split)  # This hunk's entries start here.
 		for piece_index, piece_count, piece_added, piece_removed in refine_hunk(index, count, added, removed):
 			if piece_count == 0 and len(piece_added) > 1:
 				for block in split_blocks(piece_added):
 					add_structured(split, piece_index, block, None)
 				continue
-			split.append([piece_index, piece_count, piece_added, match_text(piece_added if piece_added else piece_removed), None])
+			entry = [piece_index, piece_count, piece_added, match_text(piece_added if piece_added else piece_removed), None]
+			candidates = [e for e in range(first_new, len(split)) if split[e][2]]
+			if not piece_added and candidates and piece_count <= 3:
+				# The old side of a small rewrite (a declaration rewritten whole) goes with the new line
+				# most like it.
+				old_text = b"\n".join(piece_removed)
+				entry.append(max(candidates, key=lambda e: likeness(old_text, b"\n".join(split[e][2]))))
+			split.append(entry)
 	return split
 
 
@@ -515,6 +523,8 @@ class Plan:
 			for h in hunks:
 				text = b"\n".join(h[3]).decode("utf-8", errors="replace")
 				owner = self.home[path] if h[4] is None else owners[h[4]]
+				if len(h) > 5:
+					owner = owners[h[5]]
 				deletion = not h[2]
 				for k, regex, pin in rules:
 					# What a patch removes moves only by a pin: old code names the features it predates.

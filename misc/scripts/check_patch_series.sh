@@ -72,6 +72,7 @@ if [ "$each" != 0 ] && [ -d build ]; then
 fi
 count=0
 built=0
+failed_steps=0
 applied=0
 while read -r name _; do
 	case "$name" in *.patch) ;; *) continue ;; esac
@@ -95,7 +96,9 @@ while read -r name _; do
 				grep -E 'error' "$tmp/build_$count.log" | sort -u | head -12 >&2 || tail -5 "$tmp/build_$count.log" >&2
 				fail=1
 				keep=1
-				result="COMPILE FAILS"
+				failed_steps=$((failed_steps + 1))
+				# The files whose own text fails (an error inside an included header names the header).
+				result="COMPILE FAILS in $(grep -oE '^[^: ]+\.(cpp|h|inc):[0-9]+:[0-9]+: error' "$tmp/build_$count.log" | cut -d: -f1 | sed 's|^\./||' | sort -u | paste -sd' ' -)"
 			fi
 		fi
 		built=$((built + 1))
@@ -136,6 +139,6 @@ status="ok"
 [ "$fail" = 0 ] || status="FAILED"
 extra=""
 [ "$each" = 1 ] && extra=", $built built and tested"
-[ "$each" = 2 ] && extra=", $built compiled"
+[ "$each" = 2 ] && extra=", $built compiled ($failed_steps failing)"
 echo "patch series: $status: $applied of $count patches applied to ${base:0:12}, tree compared$extra ($(($(date +%s) - start)) s)"
 exit "$fail"
