@@ -8,8 +8,10 @@
 #   3. the series applies with `git apply` to BASE in a temporary worktree, and the result equals the
 #      tree for every carried path.
 # With --each, after every patch it also builds (scons -j2 target=release) and runs the doctest files
-# the patch adds or changes; --from N / --to N limit that to patches N..M (1-based, INDEX order).
-#   ./misc/scripts/check_patch_series.sh [--each [--from N] [--to M]] [--keep]
+# the patch adds or changes; with --compile it compiles (objects only) the .cpp files the patch changes,
+# with --includers also those that include a header it changes; --from N / --to N limit that to patches
+# N..M (1-based, INDEX order).
+#   ./misc/scripts/check_patch_series.sh [--each|--compile [--includers]] [--from N] [--to M] [--keep]
 # Prints one summary line last ("patch series: ..."); exit status 0 when everything holds.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -18,14 +20,16 @@ each=0
 from=1
 to=100000
 keep=0
+includers=0
 while [ $# -gt 0 ]; do
 	case "$1" in
 		--each) each=1 ;;
 		--compile) each=2 ;;
+		--includers) includers=1 ;;
 		--from) from="$2"; shift ;;
 		--to) to="$2"; shift ;;
 		--keep) keep=1 ;;
-		*) echo "usage: $0 [--each|--compile [--from N] [--to M]] [--keep]" >&2; exit 2 ;;
+		*) echo "usage: $0 [--each|--compile [--includers] [--from N] [--to M]] [--keep]" >&2; exit 2 ;;
 	esac
 	shift
 done
@@ -85,7 +89,15 @@ while read -r name _; do
 	applied=$((applied + 1))
 	if [ "$each" = 2 ] && [ "$count" -ge "$from" ] && [ "$count" -le "$to" ]; then
 		t0=$(date +%s)
-		objects=$(grep -E '^\+\+\+ b/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' | grep -v '^tests/fuzz/' | grep -v '^modules/python/godot_area_' | sed 's|^\(.*\)\.cpp$|build/release/\1.o|' || true)
+		sources=$(grep -E '^\+\+\+ b/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' || true)
+		if [ "$includers" = 1 ]; then
+			# Also the .cpp files that include a header this patch changes (by its full path).
+			for header in $(grep -E '^\+\+\+ b/.*\.(h|inc)$' "$root/$series/$name" | sed 's|^+++ b/||'); do
+				sources="$sources
+$(cd "$wt" && git grep -l -F "#include \"$header\"" -- '*.cpp' || true)"
+			done
+		fi
+		objects=$(echo "$sources" | grep -v '^$' | sort -u | grep -v '^tests/fuzz/' | grep -v '^modules/python/godot_area_' | sed 's|^\(.*\)\.cpp$|build/release/\1.o|' || true)
 		result="nothing to compile"
 		if [ -n "$objects" ]; then
 			# shellcheck disable=SC2086
