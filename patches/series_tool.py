@@ -35,6 +35,7 @@ Manifest syntax (one item a line; '#' starts a comment line):
   generated GLOB                 generated data (the LUT): carried, but not counted in patch sizes
 """
 
+import difflib
 import os
 import re
 import subprocess
@@ -181,12 +182,13 @@ def read_blobs(shas):
 	return blobs
 
 
+STRUCTURAL_LINES = {b"", b"}", b"};", b"{", b"return true;", b"return false;", b"return;", b"break;", b"} else {"}
 HUNK_HEADER = re.compile(rb"^@@ -(\d+)(?:,(\d+))? \+(\d+)(?:,(\d+))? @@")
 
 
 def parse_hunks(base_blob, target_blob):
 	# -U0 hunks of one text file: (start index in base, removed count, added lines, text).
-	diff = git("diff", "-U0", "--no-color", "--no-ext-diff", base_blob, target_blob)
+	diff = git("diff", "-U0", "--diff-algorithm=patience", "--no-color", "--no-ext-diff", base_blob, target_blob)
 	hunks = []
 	for line in diff.split(b"\n"):
 		m = HUNK_HEADER.match(line)
@@ -201,16 +203,177 @@ def parse_hunks(base_blob, target_blob):
 		elif hunks and line.startswith(b"-") and not line.startswith(b"---"):
 			hunks[-1][3].append(line[1:])
 			hunks[-1][4].append(line[1:])
-	# A pure insertion is split into top-level blocks (see split_blocks), each its own hunk at the same
-	# place, so one rule can take the Sky lines of an #include or registration list and leave the rest.
+	# Two replacements a few structural base lines apart ("}", "return true;") are one rewrite: the new
+	# code merely reuses the old code's closing lines, and must not be cut in two around them.
+	base_lines = git("cat-file", "blob", base_blob).split(b"\n")
+	merged = []
+	for h in hunks:
+		if merged and merged[-1][1] > 0 and h[1] > 0:
+			prev = merged[-1]
+			gap = base_lines[prev[0] + prev[1] : h[0]]
+			if len(gap) <= 3 and all(g.strip() in STRUCTURAL_LINES for g in gap):
+				prev[2] += gap + h[2]
+				prev[4] += gap + h[4]
+				prev[3] = prev[2] + prev[4]
+				prev[1] = h[0] + h[1] - prev[0]
+				continue
+		merged.append(h)
+	hunks = merged
+	# A rewrite whose old and new code both end inside a scope that a kept "}" closes takes that line:
+	# otherwise deleting the old code alone would leave the "}" behind.
+	for h in hunks:
+		while h[1] > 0 and h[2] and code_balance(h[4]) > 0 and code_balance(h[2]) > 0 and h[0] + h[1] < len(base_lines) and base_lines[h[0] + h[1]].strip() in (b"}", b"};"):
+			closer = base_lines[h[0] + h[1]]
+			h[1] += 1
+			h[2].append(closer)
+			h[4].append(closer)
+			h[3] = h[2] + h[4]
+	# A replacement is refined into the lines it keeps (a removed line paired with a similar added one),
+	# pure deletions and pure insertions (see refine_hunk); a pure insertion is split into top-level
+	# blocks (see split_blocks), each its own hunk at the same place, so one rule can take the Sky lines
+	# of an #include or registration list, or the new function in front of a changed signature, and
+	# leave the rest. A hunk's text (what rules match) is what it adds; a pure deletion is matched by
+	# `~!` pins only and otherwise stays in the file's home patch (see assign()).
+	# Entries: [base index, removed count, added lines, text rules match, parent entry or None]. A block
+	# with a braced body (function, struct, enum, if) is a head, one entry per statement or member of
+	# its body (recursively) and a tail; the body's entries are the head's children (see assign()).
 	split = []
 	for index, count, added, text, removed in hunks:
-		if count == 0 and len(added) > 1:
-			for block in split_blocks(added):
-				split.append([index, 0, block, list(block)])
-			continue
-		split.append([index, count, added, text])
+		first_new = len(split)  # This hunk's entries start here.
+		for piece_index, piece_count, piece_added, piece_removed in refine_hunk(index, count, added, removed):
+			if piece_count == 0 and len(piece_added) > 1:
+				for block in split_blocks(piece_added):
+					add_structured(split, piece_index, block, None)
+				continue
+			entry = [piece_index, piece_count, piece_added, match_text(piece_added if piece_added else piece_removed), None]
+			candidates = [e for e in range(first_new, len(split)) if split[e][2]]
+			if not piece_added and candidates and piece_count <= 3:
+				# The old side of a small rewrite (a declaration rewritten whole) goes with the new line
+				# most like it.
+				old_text = b"\n".join(piece_removed)
+				entry.append(max(candidates, key=lambda e: likeness(old_text, b"\n".join(split[e][2]))))
+			split.append(entry)
 	return split
+
+
+def match_text(lines):
+	"""What hunk rules match: the code of the lines without comments (string literals kept), or the
+	comments when the lines hold nothing else."""
+	code = []
+	for line in lines:
+		stripped = line.strip()
+		if stripped.startswith((b"/*", b"*", b"//")):
+			continue
+		code.append(re.sub(rb'"(?:\\.|[^"\\])*"|//.*', lambda m: m.group(0) if m.group(0).startswith(b'"') else b"", line))
+	if any(c.strip() for c in code):
+		return code
+	return list(lines)
+
+
+def add_structured(out, index, block, parent):
+	"""Appends a pure-insertion block at index: as one entry, or, when it opens a braced body, as its
+	head, its body's blocks (children of the head, recursively) and its tail (the closing lines)."""
+
+	def code(line):
+		return re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
+
+	def balance(line):
+		c = code(line)
+		return sum(c.count(x) for x in b"([{") - sum(c.count(x) for x in b")]}")
+
+	head_end = tail_start = None
+	depth = 0
+	for i, line in enumerate(block):
+		if code(line).startswith(b"#"):
+			continue
+		before = depth
+		depth += balance(line)
+		if head_end is None:
+			if depth > 0 and code(line).endswith(b"{") and before == depth - 1:
+				head_end = i
+			elif depth > 0 and not code(line).endswith(b"{"):
+				break  # A multi-line call or expression: one entry.
+		elif depth == 0:
+			tail_start = i
+			break
+	if head_end is None or tail_start is None or tail_start <= head_end + 1:
+		out.append([index, 0, block, match_text(block), parent])
+		return
+	head = len(out)
+	out.append([index, 0, block[: head_end + 1], match_text(block[: head_end + 1]), parent])
+	for child in split_blocks(block[head_end + 1 : tail_start]):
+		add_structured(out, index, child, head)
+	out.append([index, 0, block[tail_start:], [], head])
+
+
+def code_of(line):
+	return re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
+
+
+def code_balance(lines):
+	total = 0
+	for line in lines:
+		code = re.sub(rb'"(?:\\.|[^"\\])*"', b"", line.split(b"//")[0]).strip()
+		if not code.startswith((b"#", b"*", b"/*")):
+			total += sum(code.count(x) for x in b"([{") - sum(code.count(x) for x in b")]}")
+	return total
+
+
+def likeness(a, b):
+	return difflib.SequenceMatcher(None, a.strip(), b.strip(), autojunk=False).ratio()
+
+
+def similar(a, b):
+	a, b = a.strip(), b.strip()
+	if len(a) < 4 or len(b) < 4:
+		return a == b and len(a) > 1  # A lone brace or blank line is no evidence of an edit.
+	if a == b:
+		return True
+	return difflib.SequenceMatcher(None, a, b, autojunk=False).ratio() >= 0.6
+
+
+def refine_hunk(index, count, added, removed):
+	"""Splits one -U0 hunk (count base lines from index replaced by added) into pieces (index, count,
+	added, removed) in base order. When the shorter side pairs line by line with a run of similar lines
+	of the longer side (edited lines: a changed signature under a new function, a changed call amid new
+	statements), those pairs are 1-line replacements and the rest of the longer side pure insertions or
+	deletions around them; otherwise the hunk is a rewrite: one insertion, then one deletion. Any
+	subset of the pieces applies to the base."""
+	if count == 0 or not added:
+		return [(index, count, added, removed)]
+	n, m = len(removed), len(added)
+	pieces = []
+	if m >= n:
+		# The run of added lines most like the removed ones (a changed signature pairs with itself, not
+		# with a new function's signature above it).
+		runs = [j for j in range(m - n + 1) if all(similar(removed[i], added[j + i]) for i in range(n))]
+		runs.sort(key=lambda j: -sum(likeness(removed[i], added[j + i]) for i in range(n)))
+		for j in runs[:1]:
+				if j:
+					pieces.append((index, 0, added[:j], []))
+				pieces += [(index + i, 1, [added[j + i]], [removed[i]]) for i in range(n)]
+				rest = added[j + n :]
+				# An edited line that opens a multi-line expression (not a block) keeps its continuation.
+				last = pieces[-1]
+				while rest and code_balance(last[2]) > 0 and not code_of(last[2][-1]).endswith(b"{"):
+					last = (last[0], last[1], last[2] + [rest[0]], last[3])
+					rest = rest[1:]
+				pieces[-1] = last
+				if rest:
+					pieces.append((index + n, 0, rest, []))
+				return pieces
+	else:
+		runs = [i0 for i0 in range(n - m + 1) if all(similar(removed[i0 + t], added[t]) for t in range(m))]
+		runs.sort(key=lambda i0: -sum(likeness(removed[i0 + t], added[t]) for t in range(m)))
+		for i0 in runs[:1]:
+				if i0:
+					pieces.append((index, i0, [], removed[:i0]))
+				pieces += [(index + i0 + t, 1, [added[t]], [removed[i0 + t]]) for t in range(m)]
+				if i0 + m < n:
+					pieces.append((index + i0 + m, n - i0 - m, [], removed[i0 + m :]))
+				return pieces
+	# A rewrite: the new text is one insertion and the old one deletion, each free to go to its own patch.
+	return [(index, 0, added, []), (index, count, [], removed)]
 
 
 def split_blocks(lines):
@@ -237,8 +400,8 @@ def split_blocks(lines):
 		if not stripped:
 			(blocks[-1] if blocks and not pending else pending).append(line)
 			continue
-		if preprocessor == 0 and open_count <= 0 and blocks and indent(line) <= first_indent:
-			if stripped.startswith((b"}", b")", b"]")) and balance(stripped) < 0 and not re.search(rb"[({[]", stripped):
+		if not blocks or (preprocessor == 0 and open_count <= 0 and indent(line) <= first_indent):
+			if blocks and stripped.startswith((b"}", b")", b"]")) and balance(stripped) < 0 and not re.search(rb"[({[]", stripped):
 				pending.append(line)  # Closes a scope of the base text: goes with the block that reopens one.
 				continue
 			if stripped.startswith((b"//", b"/*", b"*")):
@@ -248,13 +411,6 @@ def split_blocks(lines):
 			pending = []
 			first_indent = indent(line)
 			open_count = 0
-		elif not blocks:
-			if stripped.startswith((b"//", b"/*", b"*")):
-				pending.append(line)
-				continue
-			blocks.append(pending + [line])
-			pending = []
-			first_indent = indent(line)
 		else:
 			blocks[-1].extend(pending + [line])
 			pending = []
@@ -277,7 +433,7 @@ def apply_hunks(base_bytes, hunks, chosen, target_bytes):
 	lines = base_bytes.split(b"\n")
 	out = []
 	pos = 0
-	for i, (index, count, added, _) in enumerate(hunks):
+	for i, (index, count, added) in enumerate(h[:3] for h in hunks):
 		if i not in chosen:
 			continue
 		out.extend(lines[pos:index])
@@ -361,13 +517,19 @@ class Plan:
 			# Pins first in manifest order, then ordinary rules latest patch first.
 			rules = [r for r in rules if r[2]] + sorted([r for r in rules if not r[2]], key=lambda r: -r[0])
 			hunks = parse_hunks(self.base_ids[self.moved_from.get(path, path)][1], self.target_ids[path][1])
+			# An entry goes to the first rule matching its text; a body's entry (a statement, a member) goes
+			# to its head's patch when no rule matches it, and never before its head.
 			owners = []
 			for h in hunks:
 				text = b"\n".join(h[3]).decode("utf-8", errors="replace")
-				owner = self.home[path]
+				owner = self.home[path] if h[4] is None else owners[h[4]]
+				if len(h) > 5:
+					owner = owners[h[5]]
+				deletion = not h[2]
 				for k, regex, pin in rules:
-					if regex.search(text):
-						owner = k
+					# What a patch removes moves only by a pin: old code names the features it predates.
+					if text.strip() and (pin or not deletion) and regex.search(text):
+						owner = k if h[4] is None else max(k, owner)
 						break
 				owners.append(owner)
 			self.hunks[path] = hunks

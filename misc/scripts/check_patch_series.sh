@@ -8,8 +8,10 @@
 #   3. the series applies with `git apply` to BASE in a temporary worktree, and the result equals the
 #      tree for every carried path.
 # With --each, after every patch it also builds (scons -j2 target=release) and runs the doctest files
-# the patch adds or changes; --from N / --to N limit that to patches N..M (1-based, INDEX order).
-#   ./misc/scripts/check_patch_series.sh [--each [--from N] [--to M]] [--keep]
+# the patch adds or changes; with --compile it compiles (objects only) the .cpp files the patch changes,
+# with --includers also those that include a header it changes; --from N / --to N limit that to patches
+# N..M (1-based, INDEX order).
+#   ./misc/scripts/check_patch_series.sh [--each|--compile [--includers]] [--from N] [--to M] [--keep]
 # Prints one summary line last ("patch series: ..."); exit status 0 when everything holds.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -18,14 +20,16 @@ each=0
 from=1
 to=100000
 keep=0
+includers=0
 while [ $# -gt 0 ]; do
 	case "$1" in
 		--each) each=1 ;;
 		--compile) each=2 ;;
+		--includers) includers=1 ;;
 		--from) from="$2"; shift ;;
 		--to) to="$2"; shift ;;
 		--keep) keep=1 ;;
-		*) echo "usage: $0 [--each|--compile [--from N] [--to M]] [--keep]" >&2; exit 2 ;;
+		*) echo "usage: $0 [--each|--compile [--includers] [--from N] [--to M]] [--keep]" >&2; exit 2 ;;
 	esac
 	shift
 done
@@ -72,6 +76,7 @@ if [ "$each" != 0 ] && [ -d build ]; then
 fi
 count=0
 built=0
+failed_steps=0
 applied=0
 while read -r name _; do
 	case "$name" in *.patch) ;; *) continue ;; esac
@@ -84,7 +89,15 @@ while read -r name _; do
 	applied=$((applied + 1))
 	if [ "$each" = 2 ] && [ "$count" -ge "$from" ] && [ "$count" -le "$to" ]; then
 		t0=$(date +%s)
-		objects=$(grep -E '^\+\+\+ b/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' | grep -v '^tests/fuzz/' | grep -v '^modules/python/godot_area_' | sed 's|^\(.*\)\.cpp$|build/release/\1.o|' || true)
+		sources=$(grep -E '^\+\+\+ b/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' || true)
+		if [ "$includers" = 1 ]; then
+			# Also the .cpp files that include a header this patch changes (by its full path).
+			for header in $(grep -E '^\+\+\+ b/.*\.(h|inc)$' "$root/$series/$name" | sed 's|^+++ b/||'); do
+				sources="$sources
+$(cd "$wt" && git grep -l -F "#include \"$header\"" -- '*.cpp' || true)"
+			done
+		fi
+		objects=$(echo "$sources" | grep -v '^$' | sort -u | grep -v '^tests/fuzz/' | grep -v '^modules/python/godot_area_' | sed 's|^\(.*\)\.cpp$|build/release/\1.o|' || true)
 		result="nothing to compile"
 		if [ -n "$objects" ]; then
 			# shellcheck disable=SC2086
@@ -95,7 +108,9 @@ while read -r name _; do
 				grep -E 'error' "$tmp/build_$count.log" | sort -u | head -12 >&2 || tail -5 "$tmp/build_$count.log" >&2
 				fail=1
 				keep=1
-				result="COMPILE FAILS"
+				failed_steps=$((failed_steps + 1))
+				# The files whose own text fails (an error inside an included header names the header).
+				result="COMPILE FAILS in $(grep -oE '^[^: ]+\.(cpp|h|inc):[0-9]+:[0-9]+: error' "$tmp/build_$count.log" | cut -d: -f1 | sed 's|^\./||' | sort -u | paste -sd' ' -)"
 			fi
 		fi
 		built=$((built + 1))
@@ -136,6 +151,6 @@ status="ok"
 [ "$fail" = 0 ] || status="FAILED"
 extra=""
 [ "$each" = 1 ] && extra=", $built built and tested"
-[ "$each" = 2 ] && extra=", $built compiled"
+[ "$each" = 2 ] && extra=", $built compiled ($failed_steps failing)"
 echo "patch series: $status: $applied of $count patches applied to ${base:0:12}, tree compared$extra ($(($(date +%s) - start)) s)"
 exit "$fail"
