@@ -118,7 +118,7 @@ TEST_CASE("[EditorInspector] AreaLight3D rows follow its ClassDB property list, 
 	CHECK(method.label == "Shading Method");
 	CHECK(method.type == Variant::INT);
 	CHECK(method.hint == PROPERTY_HINT_ENUM);
-	CHECK(method.enum_options == std::vector<String>({ "LTC", "LTC Polynomial", "MRP", "Stochastic", "Auto" }));
+	CHECK(method.enum_options == std::vector<String>({ "LTC", "LTC Polynomial", "MRP", "Stochastic", "Auto", "LTC 2-Lobe" }));
 	REQUIRE(method.enum_values.size() == 5);
 	// The values are the bound constants LTC..AUTO.
 	CHECK(method.enum_values[0] == ClassDB::get_integer_constant("AreaLight3D", "AREA_SHADING_LTC"));
