@@ -27,6 +27,8 @@
 /*   P5 area-light pairs (pixel, light) listed by the clusters / pairs    */
 /*      the light lights (debug view, counted on the read-back image);   */
 /*   S1 one 25-map (FIXED 5 x 5) shadowed area light / unshadowed;        */
+/*   L2 the two-lobe LTC (LTC_2LOBE) / LTC, 16/64 lights (issue #18:      */
+/*      <= 1.7);                                                          */
 /*   C1 cluster build / opaque pass GPU time, the embedded demo scene.    */
 /* No RenderingServer may exist when run() is called.                     */
 
@@ -49,6 +51,7 @@ public:
 		// T1: LTC lights with an area_texture (a 256 x 256 pattern) / the same lights untextured.
 		std::vector<int> t1_lights = { 16 };
 		bool texture_only = false; // Only the T1 configurations (--texture-only).
+		bool two_lobe_only = false; // Only the L2 configurations (--two-lobe-only): LTC_2LOBE and LTC at p2_lights.
 	};
 
 	struct Result {
