@@ -516,15 +516,19 @@ bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_
 		}
 	};
 
+	run_workers(p_threads, p_t1 - p_t0 + 1, worker);
+	return true;
+}
+
+void LTCFitter::run_workers(int p_threads, int p_chains, const std::function<void()> &p_worker) {
 	int threads = p_threads > 0 ? p_threads : (int)std::thread::hardware_concurrency();
-	threads = std::max(1, std::min(threads, p_t1 - p_t0 + 1));
+	threads = std::max(1, std::min(threads, p_chains));
 	std::vector<std::thread> pool;
 	for (int i = 1; i < threads; i++) {
-		pool.emplace_back(worker);
+		pool.emplace_back(p_worker);
 	}
-	worker();
+	p_worker();
 	for (std::thread &th : pool) {
 		th.join();
 	}
-	return true;
 }

@@ -48,6 +48,7 @@
 #include "modules/ltc_fit/ltc_brdf.h"
 
 #include <atomic>
+#include <functional>
 #include <vector>
 
 class LTCPolygonObjective;
@@ -133,6 +134,10 @@ public:
 	// With p_options.free_axis each cell also starts from its own value in r_table (see fit_cell).
 	static bool fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done,
 			const LTCFitOptions &p_options = LTCFitOptions());
+
+	// Runs p_worker on min(p_threads (0 = hardware concurrency), p_chains) threads, this one included, and
+	// waits for all (each worker takes chains from a shared counter until none is left).
+	static void run_workers(int p_threads, int p_chains, const std::function<void()> &p_worker);
 
 	// The LTC density D(l) of the stored matrix p_m = (a, b, c, d, e) at unit direction p_l (1/sr).
 	static double ltc_evaluate(const double *p_m, const double *p_l);

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 const char *LTCTwoLobe::DEFAULT_INC_PATH = "servers/rendering/renderer_rd/ltc_lut_2lobe_data.inc";
 
@@ -284,16 +283,7 @@ bool LTCTwoLobe::fit_table(int p_size, int p_r0, int p_r1, int p_t0, int p_t1, i
 			}
 		}
 	};
-	int threads = p_threads > 0 ? p_threads : int(std::thread::hardware_concurrency());
-	threads = std::max(1, std::min(threads, p_t1 - p_t0 + 1));
-	std::vector<std::thread> pool;
-	for (int i = 1; i < threads; i++) {
-		pool.emplace_back(worker);
-	}
-	worker();
-	for (std::thread &th : pool) {
-		th.join();
-	}
+	LTCFitter::run_workers(p_threads, p_t1 - p_t0 + 1, worker);
 	order_lobes(p_size, r_table);
 	return true;
 }
@@ -304,25 +294,24 @@ const float *LTCTwoLobe::get_builtin_table() {
 
 String LTCTwoLobe::format_inc(int p_size, const std::vector<float> &p_table, const String &p_command, const String &p_stats) {
 	ERR_FAIL_COND_V_MSG(p_table.size() != size_t(p_size) * p_size * FLOATS_PER_CELL, String(), "The two-lobe LTC table has the wrong size.");
-	String o;
-	o += "/**************************************************************************/\n";
-	o += "/*  ltc_lut_2lobe_data.inc                                                */\n";
-	o += "/**************************************************************************/\n";
-	o += "/* GENERATED FILE, do not edit: godot-area two-lobe LTC lookup table\n";
-	o += " * (issue #18; modules/ltc_fit/ltc_two_lobe.h describes the model and the fit),\n";
-	o += " * written by modules/ltc_fit with the command:\n";
+	String o = "/**************************************************************************/\n"
+			   "/*  ltc_lut_2lobe_data.inc                                                */\n"
+			   "/**************************************************************************/\n"
+			   "/* GENERATED FILE, do not edit: godot-area two-lobe LTC lookup table\n"
+			   " * (issue #18; modules/ltc_fit/ltc_two_lobe.h describes the model and the fit),\n"
+			   " * written by modules/ltc_fit with the command:\n";
 	o += " *   " + p_command + "\n *\n * Fit statistics:\n";
 	for (const String &line : string_split(p_stats, '\n')) {
 		if (!line.empty()) {
 			o += " *   " + line + "\n";
 		}
 	}
-	o += " *\n * LAYOUT: N = LTC_LUT_2LOBE_SIZE (= LTC_LUT_SIZE, the same parametrisation as\n";
-	o += " * ltc_lut_data.inc); cell (ti, ri) starts at float (ti * N + ri) * 16, four RGBA texels\n";
-	o += " *   (a1, b1, c1, d1), (e1, fn, fg, w1), (a2, b2, c2, d2), (e2, w2, 0, 0):\n";
-	o += " * two matrices M = [[a, 0, b], [0, c, 0], [d, 0, e]] (thesis eq. 5.6, not inverted) and their\n";
-	o += " * weights; the lobe is w1 D_M1 + w2 D_M2, fn and fg as in ltc_lut_data.inc.\n */\n\n";
-	o += "#pragma once\n\n";
+	o += " *\n * LAYOUT: N = LTC_LUT_2LOBE_SIZE (= LTC_LUT_SIZE, the same parametrisation as\n"
+		 " * ltc_lut_data.inc); cell (ti, ri) starts at float (ti * N + ri) * 16, four RGBA texels\n"
+		 " *   (a1, b1, c1, d1), (e1, fn, fg, w1), (a2, b2, c2, d2), (e2, w2, 0, 0):\n"
+		 " * two matrices M = [[a, 0, b], [0, c, 0], [d, 0, e]] (thesis eq. 5.6, not inverted) and their\n"
+		 " * weights; the lobe is w1 D_M1 + w2 D_M2, fn and fg as in ltc_lut_data.inc.\n */\n\n"
+		 "#pragma once\n\n";
 	o += vformat("static const int LTC_LUT_2LOBE_SIZE = %d;\n\n", p_size);
 	o += LTCTableIO::format_array("LTC_LUT_ENGINE_GGX_2LOBE", p_size, FLOATS_PER_CELL, p_table);
 	return o;
