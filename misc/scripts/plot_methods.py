@@ -22,8 +22,8 @@ import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 from chart_io import save_figure  # noqa: E402
 
-ORDER = ["LTC", "LTC_POLYNOMIAL", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI"]
-LABEL = {"LTC": "LTC (LUT)", "LTC_POLYNOMIAL": "LTC poly", "MRP": "MRP", "MC1": "MC 1", "MC4": "MC 4", "MC16": "MC 16", "SPOT": "spot", "OMNI": "omni"}
+ORDER = ["LTC", "LTC_POLYNOMIAL", "LTC_2LOBE", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI"]
+LABEL = {"LTC": "LTC (LUT)", "LTC_POLYNOMIAL": "LTC poly", "LTC_2LOBE": "LTC 2-lobe", "MRP": "MRP", "MC1": "MC 1", "MC4": "MC 4", "MC16": "MC 16", "SPOT": "spot", "OMNI": "omni"}
 
 
 SHAPES = ["rectangle", "disk", "sphere", "tube"]
