@@ -320,10 +320,15 @@ TEST_CASE("[Accuracy][LTC2] the two-lobe LTC on the CI subset's low views (LTC_2
 	options.ci_subset = true;
 	options.resolution = 40;
 	options.methods = { int(RS::LIGHT_AREA_SHADING_LTC_2LOBE) };
-	options.filter = "_v";
-	std::vector<AccuracySuite::Row> rows;
+	options.filter = "_v"; // Also matches "_vertical": the standard-camera TV scenes are dropped below.
+	std::vector<AccuracySuite::Row> all_rows, rows;
 	String error;
-	REQUIRE_MESSAGE(AccuracySuite::run(options, &rows, &error), error);
+	REQUIRE_MESSAGE(AccuracySuite::run(options, &all_rows, &error), error);
+	for (const AccuracySuite::Row &r : all_rows) {
+		if (r.view_elevation > 0.0f) {
+			rows.push_back(r);
+		}
+	}
 	REQUIRE(rows.size() == 5);
 	// Measured at 40 x 40 (2026-12-08, doc/accuracy.md section 5.2; LTC in parentheses): relRMSE
 	// plane_r0.25_m1_1x1_vertical_v10 0.020 (0.032), plane_r0.5_m1_1x1_vertical_v10 0.052 (0.086),
@@ -335,7 +340,7 @@ TEST_CASE("[Accuracy][LTC2] the two-lobe LTC on the CI subset's low views (LTC_2
 	int grazing = 0;
 	for (const AccuracySuite::Row &r : rows) {
 		const AccuracySuite::SceneClass c = AccuracySuite::scene_class(r);
-		MESSAGE(r.scene_id, " (", AccuracySuite::scene_class_name(c), "): relRMSE ", r.relative_rmse, ", brightness ratio ", r.brightness_ratio);
+		MESSAGE(r.scene_id, " (", String(AccuracySuite::scene_class_name(c)), "): relRMSE ", r.relative_rmse, ", brightness ratio ", r.brightness_ratio);
 		INFO(r.scene_id);
 		REQUIRE(std::isfinite(r.relative_rmse));
 		CHECK(r.method == int(RS::LIGHT_AREA_SHADING_LTC_2LOBE));
