@@ -179,9 +179,16 @@ def main():
 
 	# (c) Error maps of the failure scenes: one PNG per scene, one row per method.
 	if a.maps:
-		scenes = sorted({f.split("_", 1)[1][:-4] for f in os.listdir(a.maps) if f.endswith(".png") and f.split("_", 1)[0] in ORDER}
-				| {f[len("LTC_POLYNOMIAL_"):-4] for f in os.listdir(a.maps) if f.startswith("LTC_POLYNOMIAL_")})
-		scenes = [s for s in scenes if not s.startswith("POLYNOMIAL")]
+		# Map files are CONFIG_SCENE.png; configs share prefixes (LTC, LTC_POLYNOMIAL, LTC_2LOBE), so the
+		# longest matching config is stripped.
+		prefixes = sorted(ORDER, key=len, reverse=True)
+		scenes = set()
+		for f in os.listdir(a.maps):
+			if f.endswith(".png"):
+				c = next((c for c in prefixes if f.startswith(c + "_")), None)
+				if c:
+					scenes.add(f[len(c) + 1:-4])
+		scenes = sorted(scenes)
 		for scene in scenes:
 			rows = [(c, os.path.join(a.maps, "%s_%s.png" % (c, scene))) for c in ORDER if os.path.exists(os.path.join(a.maps, "%s_%s.png" % (c, scene)))]
 			if not rows:
