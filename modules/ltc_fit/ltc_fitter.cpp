@@ -424,17 +424,7 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 			res = own;
 		}
 	}
-	for (int restart = 0; restart < MAX_RESTARTS; restart++) {
-		NelderMead::Result again = NelderMead::minimize(f, res.x, 0.05, 1e-6, MAX_ITERATIONS);
-		iterations += again.iterations;
-		const bool better = again.value < res.value * (1.0 - 1e-4);
-		if (again.value < res.value) {
-			res = again;
-		}
-		if (!better) {
-			break;
-		}
-	}
+	iterations += restart_while_improving(f, res);
 
 	// A start that does not overlap the lobe at all (possible at grazing, near-mirror cells) leaves the
 	// objective flat; then also try a start sized to the lobe, m11 = m22 = alpha, and keep the better.
@@ -518,6 +508,22 @@ bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_
 
 	run_workers(p_threads, p_t1 - p_t0 + 1, worker);
 	return true;
+}
+
+int LTCFitter::restart_while_improving(const NelderMead::Function &p_function, NelderMead::Result &r_result) {
+	int iterations = 0;
+	for (int restart = 0; restart < MAX_RESTARTS; restart++) {
+		NelderMead::Result again = NelderMead::minimize(p_function, r_result.x, 0.05, 1e-6, MAX_ITERATIONS);
+		iterations += again.iterations;
+		const bool better = again.value < r_result.value * (1.0 - 1e-4);
+		if (again.value < r_result.value) {
+			r_result = again;
+		}
+		if (!better) {
+			break;
+		}
+	}
+	return iterations;
 }
 
 void LTCFitter::run_workers(int p_threads, int p_chains, const std::function<void()> &p_worker) {

@@ -46,6 +46,7 @@
 #pragma once
 
 #include "modules/ltc_fit/ltc_brdf.h"
+#include "modules/ltc_fit/nelder_mead.h"
 
 #include <atomic>
 #include <functional>
@@ -135,6 +136,10 @@ public:
 	static bool fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done,
 			const LTCFitOptions &p_options = LTCFitOptions());
 
+	// Nelder-Mead restarted from r_result (fresh simplex, step 0.05) while that improves it by more than
+	// 1e-4 relative, at most MAX_RESTARTS times: a collapsed simplex is how the method stalls on the
+	// elongated valleys of grazing, glossy cells. Returns the iterations spent.
+	static int restart_while_improving(const NelderMead::Function &p_function, NelderMead::Result &r_result);
 	// Runs p_worker on min(p_threads (0 = hardware concurrency), p_chains) threads, this one included, and
 	// waits for all (each worker takes chains from a shared counter until none is left).
 	static void run_workers(int p_threads, int p_chains, const std::function<void()> &p_worker);

@@ -169,17 +169,7 @@ LTCTwoLobeCell LTCTwoLobe::fit_cell(int p_size, int p_roughness_index, int p_ang
 			res = chain;
 		}
 	}
-	for (int restart = 0; restart < LTCFitter::MAX_RESTARTS; restart++) {
-		NelderMead::Result again = NelderMead::minimize(f, res.x, 0.05, 1e-6, LTCFitter::MAX_ITERATIONS);
-		iterations += again.iterations;
-		const bool better = again.value < res.value * (1.0 - 1e-4);
-		if (again.value < res.value) {
-			res = again;
-		}
-		if (!better) {
-			break;
-		}
-	}
+	iterations += LTCFitter::restart_while_improving(f, res);
 	// The floor: the 1-lobe cell itself (second lobe a copy with weight 0).
 	std::vector<double> one;
 	lobe_parameters(p_one_lobe, 1.0, 1.0, isotropic, one);
