@@ -478,35 +478,27 @@ bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_
 		r_cells->resize((size_t)p_size * p_size);
 	}
 
-	std::atomic<int> next_chain(p_t0);
-	auto worker = [&]() {
-		for (;;) {
-			const int t = next_chain.fetch_add(1);
-			if (t > p_t1) {
-				return;
+	auto chain = [&](int t) {
+		const float *init = nullptr;
+		if (p_r1 < p_size - 1) {
+			init = &r_table[((size_t)t * p_size + p_r1 + 1) * FLOATS_PER_CELL];
+		}
+		for (int r = p_r1; r >= p_r0; r--) {
+			float *out = &r_table[((size_t)t * p_size + r) * FLOATS_PER_CELL];
+			float self[FLOATS_PER_CELL];
+			std::copy(out, out + FLOATS_PER_CELL, self);
+			LTCCell cell = fit_cell(p_variant, p_size, r, t, init, p_options, p_options.free_axis ? self : nullptr);
+			cell.write(out);
+			if (r_cells) {
+				(*r_cells)[(size_t)t * p_size + r] = cell;
 			}
-			const float *init = nullptr;
-			if (p_r1 < p_size - 1) {
-				init = &r_table[((size_t)t * p_size + p_r1 + 1) * FLOATS_PER_CELL];
-			}
-			for (int r = p_r1; r >= p_r0; r--) {
-				float *out = &r_table[((size_t)t * p_size + r) * FLOATS_PER_CELL];
-				float self[FLOATS_PER_CELL];
-				std::copy(out, out + FLOATS_PER_CELL, self);
-				LTCCell cell = fit_cell(p_variant, p_size, r, t, init, p_options, p_options.free_axis ? self : nullptr);
-				cell.write(out);
-				if (r_cells) {
-					(*r_cells)[(size_t)t * p_size + r] = cell;
-				}
-				init = out;
-				if (r_done) {
-					r_done->fetch_add(1);
-				}
+			init = out;
+			if (r_done) {
+				r_done->fetch_add(1);
 			}
 		}
 	};
-
-	run_workers(p_threads, p_t1 - p_t0 + 1, worker);
+	run_chains(p_threads, p_t0, p_t1, chain);
 	return true;
 }
 
@@ -526,14 +518,20 @@ int LTCFitter::restart_while_improving(const NelderMead::Function &p_function, N
 	return iterations;
 }
 
-void LTCFitter::run_workers(int p_threads, int p_chains, const std::function<void()> &p_worker) {
+void LTCFitter::run_chains(int p_threads, int p_t0, int p_t1, const std::function<void(int)> &p_chain) {
+	std::atomic<int> next_chain(p_t0);
+	auto worker = [&]() {
+		for (int t = next_chain.fetch_add(1); t <= p_t1; t = next_chain.fetch_add(1)) {
+			p_chain(t);
+		}
+	};
 	int threads = p_threads > 0 ? p_threads : (int)std::thread::hardware_concurrency();
-	threads = std::max(1, std::min(threads, p_chains));
+	threads = std::max(1, std::min(threads, p_t1 - p_t0 + 1));
 	std::vector<std::thread> pool;
 	for (int i = 1; i < threads; i++) {
-		pool.emplace_back(p_worker);
+		pool.emplace_back(worker);
 	}
-	p_worker();
+	worker();
 	for (std::thread &th : pool) {
 		th.join();
 	}

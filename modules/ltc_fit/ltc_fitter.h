@@ -140,9 +140,10 @@ public:
 	// 1e-4 relative, at most MAX_RESTARTS times: a collapsed simplex is how the method stalls on the
 	// elongated valleys of grazing, glossy cells. Returns the iterations spent.
 	static int restart_while_improving(const NelderMead::Function &p_function, NelderMead::Result &r_result);
-	// Runs p_worker on min(p_threads (0 = hardware concurrency), p_chains) threads, this one included, and
-	// waits for all (each worker takes chains from a shared counter until none is left).
-	static void run_workers(int p_threads, int p_chains, const std::function<void()> &p_worker);
+	// Runs p_chain(t) for every view-angle row t in [p_t0, p_t1] on min(p_threads (0 = hardware
+	// concurrency), rows) threads, this one included, each taking the next row from a shared counter,
+	// and waits for all.
+	static void run_chains(int p_threads, int p_t0, int p_t1, const std::function<void(int)> &p_chain);
 
 	// The LTC density D(l) of the stored matrix p_m = (a, b, c, d, e) at unit direction p_l (1/sr).
 	static double ltc_evaluate(const double *p_m, const double *p_l);

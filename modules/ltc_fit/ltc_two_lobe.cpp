@@ -251,29 +251,22 @@ bool LTCTwoLobe::fit_table(int p_size, int p_r0, int p_r1, int p_t0, int p_t1, i
 	if (r_cells) {
 		r_cells->assign(cells, LTCTwoLobeCell());
 	}
-	std::atomic<int> next_chain(p_t0);
-	auto worker = [&]() {
-		for (;;) {
-			const int t = next_chain.fetch_add(1);
-			if (t > p_t1) {
-				return;
+	auto chain = [&](int t) {
+		const float *init = p_r1 < p_size - 1 ? &r_table[(size_t(t) * p_size + p_r1 + 1) * FLOATS_PER_CELL] : nullptr;
+		for (int r = p_r1; r >= p_r0; r--) {
+			const size_t i = size_t(t) * p_size + r;
+			LTCTwoLobeCell cell = fit_cell(p_size, r, t, &p_one_lobe[i * LTCFitter::FLOATS_PER_CELL], init, p_smoothness);
+			cell.write(&r_table[i * FLOATS_PER_CELL]);
+			if (r_cells) {
+				(*r_cells)[i] = cell;
 			}
-			const float *init = p_r1 < p_size - 1 ? &r_table[(size_t(t) * p_size + p_r1 + 1) * FLOATS_PER_CELL] : nullptr;
-			for (int r = p_r1; r >= p_r0; r--) {
-				const size_t i = size_t(t) * p_size + r;
-				LTCTwoLobeCell cell = fit_cell(p_size, r, t, &p_one_lobe[i * LTCFitter::FLOATS_PER_CELL], init, p_smoothness);
-				cell.write(&r_table[i * FLOATS_PER_CELL]);
-				if (r_cells) {
-					(*r_cells)[i] = cell;
-				}
-				init = &r_table[i * FLOATS_PER_CELL];
-				if (r_done) {
-					r_done->fetch_add(1);
-				}
+			init = &r_table[i * FLOATS_PER_CELL];
+			if (r_done) {
+				r_done->fetch_add(1);
 			}
 		}
 	};
-	LTCFitter::run_workers(p_threads, p_t1 - p_t0 + 1, worker);
+	LTCFitter::run_chains(p_threads, p_t0, p_t1, chain);
 	order_lobes(p_size, r_table);
 	return true;
 }
