@@ -217,6 +217,7 @@ public:
 		LIGHT_AREA_SHADING_STOCHASTIC, // Monte Carlo, area_stochastic_samples per light (thesis section 5.2).
 		LIGHT_AREA_SHADING_AUTO, // Per light per frame, the cheapest method whose predicted error fits the project's
 		// rendering/lights_and_shadows/area_light_error_budget (resolved on the CPU; the GPU never sees AUTO).
+		LIGHT_AREA_SHADING_LTC_2LOBE, // LTC with two lobes (issue #18): accurate at grazing views, two integrals.
 		LIGHT_AREA_SHADING_MAX, // Keep last: the number of methods (append new ones above).
 	};
 	// The emitting shape of an area light. Values equal AreaLight3D::AreaShape (saved in scene files as

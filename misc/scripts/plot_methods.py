@@ -22,8 +22,8 @@ import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 from chart_io import save_figure  # noqa: E402
 
-ORDER = ["LTC", "LTC_POLYNOMIAL", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI"]
-LABEL = {"LTC": "LTC (LUT)", "LTC_POLYNOMIAL": "LTC poly", "MRP": "MRP", "MC1": "MC 1", "MC4": "MC 4", "MC16": "MC 16", "SPOT": "spot", "OMNI": "omni"}
+ORDER = ["LTC", "LTC_POLYNOMIAL", "LTC_2LOBE", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI"]
+LABEL = {"LTC": "LTC (LUT)", "LTC_POLYNOMIAL": "LTC poly", "LTC_2LOBE": "LTC 2-lobe", "MRP": "MRP", "MC1": "MC 1", "MC4": "MC 4", "MC16": "MC 16", "SPOT": "spot", "OMNI": "omni"}
 
 
 SHAPES = ["rectangle", "disk", "sphere", "tube"]
@@ -179,9 +179,16 @@ def main():
 
 	# (c) Error maps of the failure scenes: one PNG per scene, one row per method.
 	if a.maps:
-		scenes = sorted({f.split("_", 1)[1][:-4] for f in os.listdir(a.maps) if f.endswith(".png") and f.split("_", 1)[0] in ORDER}
-				| {f[len("LTC_POLYNOMIAL_"):-4] for f in os.listdir(a.maps) if f.startswith("LTC_POLYNOMIAL_")})
-		scenes = [s for s in scenes if not s.startswith("POLYNOMIAL")]
+		# Map files are CONFIG_SCENE.png; configs share prefixes (LTC, LTC_POLYNOMIAL, LTC_2LOBE), so the
+		# longest matching config is stripped.
+		prefixes = sorted(ORDER, key=len, reverse=True)
+		scenes = set()
+		for f in os.listdir(a.maps):
+			if f.endswith(".png"):
+				c = next((c for c in prefixes if f.startswith(c + "_")), None)
+				if c:
+					scenes.add(f[len(c) + 1:-4])
+		scenes = sorted(scenes)
 		for scene in scenes:
 			rows = [(c, os.path.join(a.maps, "%s_%s.png" % (c, scene))) for c in ORDER if os.path.exists(os.path.join(a.maps, "%s_%s.png" % (c, scene)))]
 			if not rows:

@@ -13,6 +13,7 @@
 #include "modules/ltc_fit/ltc_fitter.h"
 #include "modules/ltc_fit/ltc_polygon_objective.h"
 #include "modules/ltc_fit/ltc_table_io.h"
+#include "modules/ltc_fit/ltc_two_lobe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,7 @@ namespace {
 const double SPECULAR_AMOUNT = 0.5;
 
 struct Pixel {
-	double t[3], a1[3], a2[3], a3[3], a3n[3], a4[3], a5[3], t_half[3];
+	double t[3], a1[3], a2[3], a3[3], a3n[3], a4[3], a5[3], a6[3], t_half[3];
 	int ri = 0, ti = 0;
 	bool lit = false;
 };
@@ -35,6 +36,7 @@ struct Frame {
 	double f0[3], f90, albedo_d[3], alpha, roughness;
 	int n_light;
 	const float *table; // The engine LUT read (LTC_LUT_SIZE^2 cells of 8 floats).
+	const float *table_2lobe; // The two-lobe table (LTC_LUT_SIZE^2 cells of 16 floats).
 	int table_size;
 };
 
@@ -46,23 +48,33 @@ void set3(double *r_v, const Vector3 &p_v) {
 	r_v[0] = p_v.x, r_v[1] = p_v.y, r_v[2] = p_v.z;
 }
 
-// The shader's LUT fetch (ltc_fetch_lut): bilinear between texel centres at (r (N-1), sqrt(1 - NoV) (N-1)).
-void lut_fetch(const float *p_table, int p_size, double p_roughness, double p_nov, double *r_m, double *r_fn, double *r_fg, int *r_ri, int *r_ti) {
+// The shader's LUT fetch (ltc_fetch_lut): bilinear between texel centres at (r (N-1), sqrt(1 - NoV) (N-1)),
+// of the p_floats floats of a cell (8: the LTC table, 16: the two-lobe table) into r_v.
+void lut_filter(const float *p_table, int p_size, int p_floats, double p_roughness, double p_nov, double *r_v) {
 	const int n = p_size;
-	const float *table = p_table;
 	const double x = std::clamp(p_roughness, 0.0, 1.0) * (n - 1);
 	const double y = std::sqrt(1.0 - std::clamp(p_nov, 0.0, 1.0)) * (n - 1);
 	const int x0 = std::min(int(x), n - 2), y0 = std::min(int(y), n - 2);
 	const double fx = x - x0, fy = y - y0;
-	double v[8] = {};
+	for (int j = 0; j < p_floats; j++) {
+		r_v[j] = 0.0;
+	}
 	for (int k = 0; k < 4; k++) {
 		const int dx = k & 1, dy = k >> 1;
 		const double w = (dx ? fx : 1.0 - fx) * (dy ? fy : 1.0 - fy);
-		const float *cell = table + (size_t(y0 + dy) * n + x0 + dx) * LTCFitter::FLOATS_PER_CELL;
-		for (int j = 0; j < 8; j++) {
-			v[j] += w * cell[j];
+		const float *cell = p_table + (size_t(y0 + dy) * n + x0 + dx) * p_floats;
+		for (int j = 0; j < p_floats; j++) {
+			r_v[j] += w * cell[j];
 		}
 	}
+}
+
+void lut_fetch(const float *p_table, int p_size, double p_roughness, double p_nov, double *r_m, double *r_fn, double *r_fg, int *r_ri, int *r_ti) {
+	const int n = p_size;
+	const double x = std::clamp(p_roughness, 0.0, 1.0) * (n - 1);
+	const double y = std::sqrt(1.0 - std::clamp(p_nov, 0.0, 1.0)) * (n - 1);
+	double v[8];
+	lut_filter(p_table, p_size, LTCFitter::FLOATS_PER_CELL, p_roughness, p_nov, v);
 	for (int j = 0; j < 5; j++) {
 		r_m[j] = v[j];
 	}
@@ -153,6 +165,20 @@ double schlick_weight(const double *p_v, const double *p_l) {
 	double h[3] = { p_v[0] + p_l[0], p_v[1] + p_l[1], p_v[2] + p_l[2] };
 	const double hl = std::sqrt(dot3(h, h));
 	return hl > 0.0 ? std::pow(std::clamp(1.0 - dot3(p_v, h) / hl, 0.0, 1.0), 5.0) : 0.0;
+}
+
+// The shader's Fresnel weight of one lobe p_m over the quad p_q (ltc_polygon_fresnel): Schlick's weight at
+// the polygon's mean direction plus the gap between fg / fn and the weight at the lobe's axis M z in
+// proportion to the lobe's integral p_coverage. p_fn, p_fg: the table's.
+double polygon_fresnel_weight(const double *p_m, const double *p_q, const double *p_v, double p_fn, double p_fg, double p_coverage) {
+	double l_mean[3], w = p_fn > 0.0 ? p_fg / p_fn : 0.0;
+	if (ltc_mean_direction(p_m, p_q, l_mean)) {
+		double axis[3] = { p_m[1], 0.0, p_m[4] };
+		const double al = std::sqrt(dot3(axis, axis));
+		axis[0] /= al, axis[2] /= al;
+		w = std::clamp(schlick_weight(p_v, l_mean) + p_coverage * (w - schlick_weight(p_v, axis)), 0.0, 1.0);
+	}
+	return w;
 }
 
 // One pixel: shading point on the plane y = 0 (|x|, |z| <= 5), normal +Y.
@@ -259,6 +285,19 @@ void shade(const Frame &p_f, int p_res, int p_x, int p_y, Pixel &r_px) {
 		w_alt = std::clamp(w_alt + s_p - s_a, 0.0, 1.0);
 		w_shader = std::clamp(s_p + i_ltc * (w_shader - s_a), 0.0, 1.0);
 	}
+	// a6: the two-lobe shader (light_process_area_ltc_2lobe): both lobes' integrals over the same clipped
+	// polygon, weighted, each with its own polygon Fresnel.
+	double v2[16], spec2[3] = {};
+	lut_filter(p_f.table_2lobe, p_f.table_size, LTCTwoLobe::FLOATS_PER_CELL, p_f.roughness, nov, v2);
+	for (int lobe = 0; lobe < 2; lobe++) {
+		const double m2[5] = { v2[8 * lobe], v2[8 * lobe + 1], v2[8 * lobe + 2], v2[8 * lobe + 3], v2[8 * lobe + 4] };
+		const double weight = lobe == 0 ? v2[7] : v2[13];
+		const double i2 = ltc_integral(m2, q, true);
+		const double w2 = polygon_fresnel_weight(m2, q, vloc, v2[5], v2[6], i2);
+		for (int c = 0; c < 3; c++) {
+			spec2[c] += weight * i2 * v2[5] * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w2);
+		}
+	}
 	for (int c = 0; c < 3; c++) {
 		const double d = p_f.albedo_d[c] * diffuse;
 		const double f_exact = p_f.f0[c] * fn_x + (p_f.f90 - p_f.f0[c]) * fg_x;
@@ -271,6 +310,7 @@ void shade(const Frame &p_f, int p_res, int p_x, int p_y, Pixel &r_px) {
 		r_px.a3n[c] = d + i_ltc_n * f_lut;
 		r_px.a4[c] = d + i_ltc * fn * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w_shader);
 		r_px.a5[c] = d + i_ltc * fn * (p_f.f0[c] + (p_f.f90 - p_f.f0[c]) * w_alt);
+		r_px.a6[c] = d + spec2[c];
 	}
 	r_px.lit = true;
 }
@@ -340,6 +380,7 @@ bool AccuracyLTCTerms::evaluate(const AccuracyScenes::Scene &p_scene, int p_reso
 	f.n_light = p_light_samples;
 	f.table_size = LTCTableIO::get_builtin_size();
 	f.table = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX);
+	f.table_2lobe = LTCTwoLobe::get_builtin_table();
 	if (p_table) {
 		if (p_table->size() != size_t(f.table_size) * f.table_size * LTCFitter::FLOATS_PER_CELL) {
 			*r_error = vformat("LTC terms: the table has %zu floats, the engine's LUT %d x %d x 8.", p_table->size(), f.table_size, f.table_size);
@@ -375,6 +416,8 @@ bool AccuracyLTCTerms::evaluate(const AccuracyScenes::Scene &p_scene, int p_reso
 	auto A3n = [](const Pixel &q, int c) { return q.a3n[c]; };
 	auto A4 = [](const Pixel &q, int c) { return q.a4[c]; };
 	auto A5 = [](const Pixel &q, int c) { return q.a5[c]; };
+	auto A6 = [](const Pixel &q, int c) { return q.a6[c]; };
+	compare_with(px, A6, T, &r.two_lobe, &r.two_lobe_ratio);
 	compare_with(px, A5, T, &r.fresnel_alt, &r.fresnel_alt_ratio);
 	compare_with(px, A4, T, &r.total, &r.total_ratio);
 	compare_with(px, A3, T, &r.eq510, &r.eq510_ratio);
@@ -422,8 +465,8 @@ bool AccuracyLTCTerms::evaluate(const AccuracyScenes::Scene &p_scene, int p_reso
 }
 
 String AccuracyLTCTerms::format(const Result &p_r) {
-	String s = vformat("%-34s total %.4f (%.3f) | eq. 5.10 %.4f (%.3f) | fresnel %.4f (%.3f) | fn/fg %.4f (%.3f) | lobe %.4f (%.3f) | no clip %.4f (%.3f) | F full gap %.4f (%.3f) | truth conv %.4f | rows %d-%d | lobe cells",
-			p_r.scene_id.c_str(), p_r.total, p_r.total_ratio, p_r.eq510, p_r.eq510_ratio, p_r.fresnel, p_r.fresnel_ratio, p_r.norm, p_r.norm_ratio, p_r.lobe, p_r.lobe_ratio, p_r.no_clip, p_r.no_clip_ratio, p_r.fresnel_alt, p_r.fresnel_alt_ratio,
+	String s = vformat("%-34s total %.4f (%.3f) | 2-lobe %.4f (%.3f) | eq. 5.10 %.4f (%.3f) | fresnel %.4f (%.3f) | fn/fg %.4f (%.3f) | lobe %.4f (%.3f) | no clip %.4f (%.3f) | F full gap %.4f (%.3f) | truth conv %.4f | rows %d-%d | lobe cells",
+			p_r.scene_id.c_str(), p_r.total, p_r.total_ratio, p_r.two_lobe, p_r.two_lobe_ratio, p_r.eq510, p_r.eq510_ratio, p_r.fresnel, p_r.fresnel_ratio, p_r.norm, p_r.norm_ratio, p_r.lobe, p_r.lobe_ratio, p_r.no_clip, p_r.no_clip_ratio, p_r.fresnel_alt, p_r.fresnel_alt_ratio,
 			p_r.truth_convergence, p_r.angle_index_min, p_r.angle_index_max);
 	for (const Cell &c : p_r.worst_cells) {
 		s += vformat(" (r%d,t%d)%s %.0f%%", c.roughness_index, c.angle_index, LTCFitter::is_engine_refit_cell(c.roughness_index, c.angle_index) ? "*" : "", c.share * 100.0);

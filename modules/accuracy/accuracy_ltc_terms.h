@@ -22,6 +22,8 @@
 /*   A4  the shader as built: A3 with ltc_polygon_fresnel                 */
 /*   A5  A4 with the Fresnel gap added whatever the coverage (the         */
 /*       alternative that lost)                                           */
+/*   A6  the two-lobe shader (LTC_2LOBE, ltc_lut_2lobe_data.inc): A4 with */
+/*       two weighted lobes, each with its own polygon Fresnel            */
 /* so relRMSE(A1, T) is the Fresnel error, (A2, A1) the LUT's fn/fg, (A3, */
 /* A2) the lobe shape, (A3n, T) the total without the clip, and (A4, T)   */
 /* the total, to compare with the suite's engine-vs-Embree number. The    */
@@ -61,6 +63,8 @@ public:
 		double no_clip_ratio = 1.0;
 		double fresnel_alt = 0.0; // relRMSE(A5, T).
 		double fresnel_alt_ratio = 1.0;
+		double two_lobe = 0.0; // relRMSE(A6, T): the two-lobe shader (LTC_2LOBE).
+		double two_lobe_ratio = 1.0;
 		double truth_convergence = 0.0; // relRMSE of T at p_light_samples against T at half as many per axis.
 		int angle_index_min = 0; // LUT rows (view angle) the pixels read.
 		int angle_index_max = 0;

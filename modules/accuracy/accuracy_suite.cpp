@@ -88,6 +88,8 @@ String AccuracySuite::method_name(int p_method) {
 			return "STOCHASTIC";
 		case 4:
 			return "AUTO";
+		case 5:
+			return "LTC_2LOBE";
 		default:
 			return "method_" + itos(p_method);
 	}

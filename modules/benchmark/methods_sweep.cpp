@@ -386,6 +386,7 @@ std::vector<MethodsSweep::Config> MethodsSweep::default_configs() {
 	std::vector<Config> c;
 	c.push_back({ "LTC", KIND_AREA, int(RS::LIGHT_AREA_SHADING_LTC), 1 });
 	c.push_back({ "LTC_POLYNOMIAL", KIND_AREA, int(RS::LIGHT_AREA_SHADING_LTC_POLYNOMIAL), 1 });
+	c.push_back({ "LTC_2LOBE", KIND_AREA, int(RS::LIGHT_AREA_SHADING_LTC_2LOBE), 1 });
 	c.push_back({ "MRP", KIND_AREA, int(RS::LIGHT_AREA_SHADING_MRP), 1 });
 	for (int n : { 1, 4, 16 }) {
 		c.push_back({ "MC" + itos(n), KIND_AREA, int(RS::LIGHT_AREA_SHADING_STOCHASTIC), n });

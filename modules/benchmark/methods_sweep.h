@@ -43,7 +43,7 @@ public:
 	};
 
 	struct Config {
-		String name; // "LTC", "LTC_POLYNOMIAL", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI".
+		String name; // "LTC", "LTC_POLYNOMIAL", "LTC_2LOBE", "MRP", "MC1", "MC4", "MC16", "SPOT", "OMNI".
 		Kind kind = KIND_AREA;
 		int method = 0; // RS::LightAreaShadingMethod (area only).
 		int samples = 1; // Stochastic samples (MC only; 1 otherwise).

@@ -279,11 +279,13 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		if (p_options.shadows_only || p_options.texture_only) {
 			counts.clear();
 		}
-		if (p_options.clusters_only) {
-			counts = p_options.p2_lights; // P5 counts the pairs of the 16- and 64-light LTC scenes.
+		if (p_options.clusters_only || p_options.two_lobe_only) {
+			counts = p_options.p2_lights; // P5 counts the pairs of the 16- and 64-light LTC scenes; L2 compares at them.
 		}
+		// Configurations other than LTC and LTC_2LOBE (none for --two-lobe-only; --clusters-only times nothing).
+		const bool others = !p_options.two_lobe_only && !p_options.clusters_only;
 		// T1: the same LTC grid with and without an area_texture (in one process, interleaved below).
-		if (!p_options.shadows_only && !p_options.clusters_only) {
+		if (!p_options.shadows_only && others) {
 			RID texture = scenes.pattern_texture();
 			for (int n : p_options.t1_lights) {
 				if (std::find(counts.begin(), counts.end(), n) == counts.end()) {
@@ -309,22 +311,27 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			if (p_options.clusters_only) {
 				continue;
 			}
-			if (std::find(p_options.p1_lights.begin(), p_options.p1_lights.end(), n) != p_options.p1_lights.end()) {
+			if (others && std::find(p_options.p1_lights.begin(), p_options.p1_lights.end(), n) != p_options.p1_lights.end()) {
 				RID spot = scenes.scenario_with_floor();
 				scenes.add_light_grid(spot, -1, n);
 				add(vformat("SPOT_%d", n), scenes.viewport(spot, w, h));
 			}
 			if (std::find(p_options.p2_lights.begin(), p_options.p2_lights.end(), n) != p_options.p2_lights.end()) {
-				RID mrp = scenes.scenario_with_floor();
-				ok = ok && scenes.add_light_grid(mrp, RS::LIGHT_AREA_SHADING_MRP, n);
-				add(vformat("MRP_%d", n), scenes.viewport(mrp, w, h));
+				if (others) {
+					RID mrp = scenes.scenario_with_floor();
+					ok = ok && scenes.add_light_grid(mrp, RS::LIGHT_AREA_SHADING_MRP, n);
+					add(vformat("MRP_%d", n), scenes.viewport(mrp, w, h));
+				}
+				RID two_lobe = scenes.scenario_with_floor();
+				ok = ok && scenes.add_light_grid(two_lobe, RS::LIGHT_AREA_SHADING_LTC_2LOBE, n);
+				add(vformat("LTC2_%d", n), scenes.viewport(two_lobe, w, h));
 			}
 		}
 		if (!ok && error.empty()) {
 			error = "an area light rejected its shading method.";
 		}
 		// P4: a scene without area lights (16 spots and a box), with and without the area code.
-		if (!p_options.shadows_only && !p_options.texture_only && !p_options.clusters_only) {
+		if (!p_options.shadows_only && !p_options.texture_only && others) {
 			RID no_area = scenes.scenario_with_floor();
 			scenes.add_light_grid(no_area, -1, 16);
 			scenes.add_box(no_area, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
@@ -334,7 +341,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		}
 		// S1: one 25-map area light above a box, shadows on / off.
 		for (bool shadow : { true, false }) {
-			if (p_options.texture_only || p_options.clusters_only) {
+			if (p_options.texture_only || !others) {
 				break;
 			}
 			RID s = scenes.scenario_with_floor();
@@ -344,7 +351,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 		}
 		// S2: the same light with the PCSS baseline, and 4 / 9 maps with and without the per-sample
 		// penumbra filter (issue 19's default: frame <= 1.5 x PCSS's).
-		if (!p_options.texture_only && !p_options.clusters_only) {
+		if (!p_options.texture_only && others) {
 			RID s = scenes.scenario_with_floor();
 			scenes.add_box(s, Vector3(1, 1, 1), Vector3(0, 0.5f, 0));
 			scenes.add_shadow_light(s, true, RS::LIGHT_AREA_SHADOW_PCSS_BASELINE);
@@ -364,7 +371,7 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			add("SHADOW_81", scenes.viewport(g, w, h));
 		}
 		// C1: the embedded demo scene (the CLI's default scene) in a scene tree.
-		const bool no_demo = p_options.shadows_only || p_options.texture_only || p_options.clusters_only;
+		const bool no_demo = p_options.shadows_only || p_options.texture_only || !others;
 		Node *demo = no_demo ? nullptr : GodotInstance::load_scene(String(), &error);
 		if (!demo && !no_demo) {
 			ok = false;
@@ -461,6 +468,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 			for (int n : p_options.p2_lights) {
 				ratio("P2", vformat("LTC / MRP, %d lights", n), vformat("LTC_%d", n), vformat("MRP_%d", n), 1.2, true);
+			}
+			for (int n : p_options.p2_lights) {
+				ratio("L2", vformat("LTC_2LOBE / LTC, %d lights", n), vformat("LTC2_%d", n), vformat("LTC_%d", n), 1.7, true);
 			}
 			ratio("P4", "no-area scene / same frame with the area code off", "NO_AREA", "NO_AREA_CODE_OFF", 1.01, true);
 			for (int n : p_options.t1_lights) {
@@ -567,6 +577,8 @@ int targets_bench_command(const std::vector<String> &p_args) {
 			options.texture_only = true;
 		} else if (a == "--clusters-only") {
 			options.clusters_only = true;
+		} else if (a == "--two-lobe-only") {
+			options.two_lobe_only = true;
 		} else if (a == "--rounds" && has_value) {
 			if (!parse_int(p_args[++i], 1, 1000, options.rounds)) {
 				fprintf(stderr, "godot-area bench --targets: --rounds must be an integer in 1..1000, got '%s'\n", p_args[i].c_str());
@@ -580,7 +592,7 @@ int targets_bench_command(const std::vector<String> &p_args) {
 				return 2;
 			}
 		} else {
-			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only, --texture-only, --clusters-only)\n", a.c_str());
+			fprintf(stderr, "godot-area bench --targets: unknown or incomplete option '%s' (options: --rounds N, --resolution WxH, --progress, --shadows-only, --texture-only, --clusters-only, --two-lobe-only)\n", a.c_str());
 			return 2;
 		}
 	}

@@ -28,6 +28,8 @@
 /*   P5 area-light pairs (pixel, light) listed by the clusters / pairs    */
 /*      the light lights (debug view, counted on the read-back image);   */
 /*   S1 one 25-map (FIXED 5 x 5) shadowed area light / unshadowed;        */
+/*   L2 the two-lobe LTC (LTC_2LOBE) / LTC, 16/64 lights (issue #18:      */
+/*      <= 1.7);                                                          */
 /*   C1 cluster build / opaque pass GPU time, the embedded demo scene.    */
 /* No RenderingServer may exist when run() is called.                     */
 
@@ -51,6 +53,7 @@ public:
 		std::vector<int> t1_lights = { 16 };
 		bool texture_only = false; // Only the T1 configurations (--texture-only).
 		bool clusters_only = false; // Only P5, the cluster pair counts (--clusters-only): no timed frames.
+		bool two_lobe_only = false; // Only the L2 configurations (--two-lobe-only): LTC_2LOBE and LTC at p2_lights.
 	};
 
 	struct Result {

@@ -9,6 +9,7 @@
 #include "modules/ltc_fit/ltc_fitter.h"
 #include "modules/ltc_fit/ltc_polynomial.h"
 #include "modules/ltc_fit/ltc_table_io.h"
+#include "modules/ltc_fit/ltc_two_lobe.h"
 
 #include <algorithm>
 #include <atomic>
@@ -24,6 +25,7 @@ namespace {
 void _print_usage() {
 	fprintf(stderr, "Usage: godot-area ltc-fit [--size N] [--brdf engine|smith|both] [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--free-axis] [--norm 1|2|3 | --polygons] [--smoothness S]\n");
 	fprintf(stderr, "       godot-area ltc-fit --polynomial [-o PATH] [--glsl PATH]\n");
+	fprintf(stderr, "       godot-area ltc-fit --two-lobe [-o PATH] [--cells r0:r1,t0:t1] [--threads N] [--smoothness S]\n");
 }
 
 // `ltc-fit --polynomial`: fits the degree-5 polynomials to the built-in LTC_LUT_ENGINE_GGX with its
@@ -96,6 +98,115 @@ bool _parse_range(const String &p_text, int *r_lo, int *r_hi) {
 		return _parse_int(parts[0], r_lo) && _parse_int(parts[0], r_hi);
 	}
 	return parts.size() == 2 && _parse_int(parts[0], r_lo) && _parse_int(parts[1], r_hi);
+}
+
+// `ltc-fit --two-lobe`: fits the two-lobe table (ltc_two_lobe.h) from the built-in 1-lobe engine table and
+// writes ltc_lut_2lobe_data.inc (-o), or with --cells and no -o prints the fitted cells.
+int _two_lobe_command(const std::vector<String> &p_args, size_t p_first) {
+	const int size = LTCTableIO::get_builtin_size();
+	int r0 = 0, r1 = size - 1, t0 = 0, t1 = size - 1, threads = 0;
+	double smoothness = LTCTwoLobe::DEFAULT_SMOOTHNESS;
+	String out_path;
+	bool partial = false;
+	String command = "godot-area ltc-fit --two-lobe";
+	for (size_t i = p_first; i < p_args.size(); i++) {
+		const String &a = p_args[i];
+		if (a == "--two-lobe") {
+			continue;
+		}
+		if (a != "-o" && a != "--cells" && a != "--threads" && a != "--smoothness") {
+			ERR_PRINT(vformat("ltc-fit --two-lobe: unknown or unsupported argument '%s'.", a.c_str()));
+			_print_usage();
+			return 2;
+		}
+		if (i + 1 >= p_args.size() || p_args[i + 1].empty()) {
+			ERR_PRINT(vformat("ltc-fit --two-lobe: %s needs a value.", a.c_str()));
+			return 2;
+		}
+		const String &value = p_args[++i];
+		command += " " + a + " " + value;
+		if (a == "-o") {
+			out_path = value;
+		} else if (a == "--threads") {
+			if (!_parse_int(value, &threads) || threads < 0 || threads > 1024) {
+				ERR_PRINT(vformat("ltc-fit --two-lobe: --threads must be an integer in [0, 1024], got '%s'.", value.c_str()));
+				return 2;
+			}
+		} else if (a == "--smoothness") {
+			char *end = nullptr;
+			smoothness = std::strtod(value.c_str(), &end);
+			if (*end != '\0' || !(smoothness >= 0.0) || smoothness > 1e6) {
+				ERR_PRINT(vformat("ltc-fit --two-lobe: --smoothness must be a number in [0, 1e6], got '%s'.", value.c_str()));
+				return 2;
+			}
+		} else {
+			std::vector<String> parts = string_split(value, ',');
+			if (parts.size() != 2 || !_parse_range(parts[0], &r0, &r1) || !_parse_range(parts[1], &t0, &t1) || r0 < 0 || r1 >= size || r0 > r1 || t0 < 0 || t1 >= size || t0 > t1) {
+				ERR_PRINT(vformat("ltc-fit --two-lobe: --cells must be r0:r1,t0:t1 inside the %dx%d table, got '%s'.", size, size, value.c_str()));
+				return 2;
+			}
+			partial = true;
+		}
+	}
+	const float *src = LTCTableIO::get_builtin_table(LTC_BRDF_ENGINE_GGX);
+	const std::vector<float> one_lobe(src, src + size_t(size) * size * LTCFitter::FLOATS_PER_CELL);
+	std::vector<float> table;
+	std::vector<LTCTwoLobeCell> cells;
+	std::atomic<int> done(0);
+	const auto start = std::chrono::steady_clock::now();
+	if (!LTCTwoLobe::fit_table(size, r0, r1, t0, t1, threads, smoothness, one_lobe, table, &cells, &done)) {
+		ERR_PRINT("ltc-fit --two-lobe: the fit failed.");
+		return 1;
+	}
+	const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	// Statistics: the polygon objective (relative squared error of the test lights' integrals) of the
+	// 1-lobe and the two-lobe cells, over the block and over its grazing rows (theta_v >= 65 degrees).
+	double sum1 = 0.0, sum2 = 0.0, g1 = 0.0, g2 = 0.0, worst2 = 0.0;
+	int count = 0, grazing = 0, worst_r = 0, worst_t = 0;
+	bool finite = true;
+	for (int t = t0; t <= t1; t++) {
+		for (int r = r0; r <= r1; r++) {
+			const LTCTwoLobeCell &c = cells[size_t(t) * size + r];
+			sum1 += c.error_one_lobe;
+			sum2 += c.error;
+			count++;
+			if (LTCFitter::get_theta(size, t) >= 65.0 * LTCBRDF::BRDF_PI / 180.0) {
+				g1 += c.error_one_lobe;
+				g2 += c.error;
+				grazing++;
+			}
+			if (c.error > worst2) {
+				worst2 = c.error;
+				worst_r = r;
+				worst_t = t;
+			}
+			finite = finite && std::isfinite(c.error) && c.weights[0] >= 0.0f && c.weights[1] >= 0.0f;
+			if (partial && out_path.empty()) {
+				printf("ri %d ti %d: lobe 1 (%.6g %.6g %.6g %.6g %.6g) w %.6g | lobe 2 (%.6g %.6g %.6g %.6g %.6g) w %.6g | E 1-lobe %.6g 2-lobe %.6g | it %d\n", r, t,
+						c.lobes[0][0], c.lobes[0][1], c.lobes[0][2], c.lobes[0][3], c.lobes[0][4], c.weights[0], c.lobes[1][0], c.lobes[1][1], c.lobes[1][2], c.lobes[1][3],
+						c.lobes[1][4], c.weights[1], c.error_one_lobe, c.error, c.iterations);
+			}
+		}
+	}
+	const String stats = vformat("engine 2-lobe: %d cells (ri %d-%d, ti %d-%d), smoothness %g. Polygon objective (relative squared error of 180 test lights): mean 1-lobe %.5f -> 2-lobe %.5f; "
+								 "rows theta_v >= 65 deg (%d cells) %.5f -> %.5f; worst 2-lobe %.5f at (ri %d, ti %d).",
+			count, r0, r1, t0, t1, smoothness, sum1 / std::max(1, count), sum2 / std::max(1, count), grazing, g1 / std::max(1, grazing), g2 / std::max(1, grazing), worst2, worst_r, worst_t);
+	printf("%s Wall time %.1f s.\n", stats.c_str(), seconds);
+	if (!finite) {
+		ERR_PRINT("ltc-fit --two-lobe: a cell has a non-finite objective or a negative weight.");
+		return 1;
+	}
+	if (partial && out_path.empty()) {
+		return 0;
+	}
+	if (out_path.empty()) {
+		out_path = String(LTCTwoLobe::DEFAULT_INC_PATH);
+	}
+	if (!LTCTableIO::save_inc(out_path, LTCTwoLobe::format_inc(size, table, command, stats))) {
+		return 1;
+	}
+	printf("Wrote %s\n", out_path.c_str());
+	return 0;
 }
 
 struct VariantStats {
@@ -208,6 +319,9 @@ int ltc_fit_command(const std::vector<String> &p_args) {
 	for (size_t j = i; j < p_args.size(); j++) {
 		if (p_args[j] == "--polynomial") {
 			return _polynomial_command(p_args, i);
+		}
+		if (p_args[j] == "--two-lobe") {
+			return _two_lobe_command(p_args, i);
 		}
 	}
 	String command = "godot-area ltc-fit";

@@ -282,6 +282,36 @@ void LTCFitter::integrate_albedo(LTCBRDFVariant p_variant, double p_alpha, doubl
 	}
 }
 
+void LTCFitter::build_polygon_objective(LTCBRDFVariant p_variant, double p_alpha, double p_theta, double p_inv_fn, LTCPolygonObjective *r_objective) {
+	const Vec v = { std::sin(p_theta), 0.0, std::cos(p_theta) };
+	const double vv[3] = { v.x, v.y, v.z };
+	const int n = LTCPolygonObjective::SAMPLES;
+	std::vector<double> directions, weights;
+	directions.reserve(size_t(n) * n * 3);
+	weights.reserve(size_t(n) * n);
+	for (int i = 0; i < n; i++) {
+		for (int j = 0; j < n; j++) {
+			Vec h = sample_vndf(v, p_alpha, (i + 0.5) / n, (j + 0.5) / n);
+			Vec l = reflect_about(v, h);
+			double pdf = pdf_vndf(v, l, p_alpha);
+			directions.insert(directions.end(), { l.x, l.y, l.z });
+			const double ll[3] = { l.x, l.y, l.z };
+			const double rho = LTCBRDF::evaluate(p_variant, vv, ll, p_alpha) * std::max(0.0, l.z) * p_inv_fn;
+			weights.push_back(pdf > 0.0 && l.z > 0.0 ? rho / pdf : 0.0);
+		}
+	}
+	r_objective->build(directions, weights);
+}
+
+void LTCFitter::build_free_axis_matrix(double p_phi, double p_m11, double p_m22, double p_m13, double *r_m) {
+	build_matrix(std::sin(p_phi), std::cos(p_phi), p_m11, p_m22, p_m13, r_m);
+}
+
+void LTCFitter::get_free_axis_parameters(const float *p_cell, double *r_phi, double *r_m11, double *r_m22, double *r_m13) {
+	extract_parameters(p_cell, r_m11, r_m22, r_m13);
+	*r_phi = extract_axis_angle(p_cell);
+}
+
 LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughness_index, int p_angle_index, const float *p_init_or_null, const LTCFitOptions &p_options, const float *p_self_or_null) {
 	LTCCell cell;
 	ERR_FAIL_INDEX_V_MSG((int)p_variant, (int)LTC_BRDF_MAX, cell, "Unknown LTC BRDF variant.");
@@ -353,20 +383,7 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 	std::vector<double> x0 = start_from(p_init_or_null);
 	LTCPolygonObjective polygons;
 	if (p_options.polygons) {
-		const int n = LTCPolygonObjective::SAMPLES;
-		std::vector<double> directions, weights;
-		directions.reserve(size_t(n) * n * 3);
-		weights.reserve(size_t(n) * n);
-		for (int i = 0; i < n; i++) {
-			for (int j = 0; j < n; j++) {
-				Vec h = sample_vndf(obj.v, obj.alpha, (i + 0.5) / n, (j + 0.5) / n);
-				Vec l = reflect_about(obj.v, h);
-				double pdf = pdf_vndf(obj.v, l, obj.alpha);
-				directions.insert(directions.end(), { l.x, l.y, l.z });
-				weights.push_back(pdf > 0.0 && l.z > 0.0 ? obj.rho(l) / pdf : 0.0);
-			}
-		}
-		polygons.build(directions, weights);
+		build_polygon_objective(p_variant, obj.alpha, theta, obj.inv_fn, &polygons);
 	}
 	double previous[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
 	const bool smooth = p_options.smoothness > 0.0 && p_init_or_null;
@@ -407,17 +424,7 @@ LTCCell LTCFitter::fit_cell(LTCBRDFVariant p_variant, int p_size, int p_roughnes
 			res = own;
 		}
 	}
-	for (int restart = 0; restart < MAX_RESTARTS; restart++) {
-		NelderMead::Result again = NelderMead::minimize(f, res.x, 0.05, 1e-6, MAX_ITERATIONS);
-		iterations += again.iterations;
-		const bool better = again.value < res.value * (1.0 - 1e-4);
-		if (again.value < res.value) {
-			res = again;
-		}
-		if (!better) {
-			break;
-		}
-	}
+	iterations += restart_while_improving(f, res);
 
 	// A start that does not overlap the lobe at all (possible at grazing, near-mirror cells) leaves the
 	// objective flat; then also try a start sized to the lobe, m11 = m22 = alpha, and keep the better.
@@ -471,34 +478,53 @@ bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_
 		r_cells->resize((size_t)p_size * p_size);
 	}
 
-	std::atomic<int> next_chain(p_t0);
-	auto worker = [&]() {
-		for (;;) {
-			const int t = next_chain.fetch_add(1);
-			if (t > p_t1) {
-				return;
+	auto chain = [&](int t) {
+		const float *init = nullptr;
+		if (p_r1 < p_size - 1) {
+			init = &r_table[((size_t)t * p_size + p_r1 + 1) * FLOATS_PER_CELL];
+		}
+		for (int r = p_r1; r >= p_r0; r--) {
+			float *out = &r_table[((size_t)t * p_size + r) * FLOATS_PER_CELL];
+			float self[FLOATS_PER_CELL];
+			std::copy(out, out + FLOATS_PER_CELL, self);
+			LTCCell cell = fit_cell(p_variant, p_size, r, t, init, p_options, p_options.free_axis ? self : nullptr);
+			cell.write(out);
+			if (r_cells) {
+				(*r_cells)[(size_t)t * p_size + r] = cell;
 			}
-			const float *init = nullptr;
-			if (p_r1 < p_size - 1) {
-				init = &r_table[((size_t)t * p_size + p_r1 + 1) * FLOATS_PER_CELL];
-			}
-			for (int r = p_r1; r >= p_r0; r--) {
-				float *out = &r_table[((size_t)t * p_size + r) * FLOATS_PER_CELL];
-				float self[FLOATS_PER_CELL];
-				std::copy(out, out + FLOATS_PER_CELL, self);
-				LTCCell cell = fit_cell(p_variant, p_size, r, t, init, p_options, p_options.free_axis ? self : nullptr);
-				cell.write(out);
-				if (r_cells) {
-					(*r_cells)[(size_t)t * p_size + r] = cell;
-				}
-				init = out;
-				if (r_done) {
-					r_done->fetch_add(1);
-				}
+			init = out;
+			if (r_done) {
+				r_done->fetch_add(1);
 			}
 		}
 	};
+	run_chains(p_threads, p_t0, p_t1, chain);
+	return true;
+}
 
+int LTCFitter::restart_while_improving(const NelderMead::Function &p_function, NelderMead::Result &r_result) {
+	int iterations = 0;
+	for (int restart = 0; restart < MAX_RESTARTS; restart++) {
+		NelderMead::Result again = NelderMead::minimize(p_function, r_result.x, 0.05, 1e-6, MAX_ITERATIONS);
+		iterations += again.iterations;
+		const bool better = again.value < r_result.value * (1.0 - 1e-4);
+		if (again.value < r_result.value) {
+			r_result = again;
+		}
+		if (!better) {
+			break;
+		}
+	}
+	return iterations;
+}
+
+void LTCFitter::run_chains(int p_threads, int p_t0, int p_t1, const std::function<void(int)> &p_chain) {
+	std::atomic<int> next_chain(p_t0);
+	auto worker = [&]() {
+		for (int t = next_chain.fetch_add(1); t <= p_t1; t = next_chain.fetch_add(1)) {
+			p_chain(t);
+		}
+	};
 	int threads = p_threads > 0 ? p_threads : (int)std::thread::hardware_concurrency();
 	threads = std::max(1, std::min(threads, p_t1 - p_t0 + 1));
 	std::vector<std::thread> pool;
@@ -509,5 +535,4 @@ bool LTCFitter::fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_
 	for (std::thread &th : pool) {
 		th.join();
 	}
-	return true;
 }

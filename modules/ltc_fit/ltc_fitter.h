@@ -46,9 +46,13 @@
 #pragma once
 
 #include "modules/ltc_fit/ltc_brdf.h"
+#include "modules/ltc_fit/nelder_mead.h"
 
 #include <atomic>
+#include <functional>
 #include <vector>
+
+class LTCPolygonObjective;
 
 // One fitted table cell. write() gives the 8 floats of the .inc layout: a, b, c, d, e, fn, fg, 0.
 struct LTCCell {
@@ -132,10 +136,27 @@ public:
 	static bool fit_table(LTCBRDFVariant p_variant, int p_size, int p_r0, int p_r1, int p_t0, int p_t1, int p_threads, std::vector<float> &r_table, std::vector<LTCCell> *r_cells, std::atomic<int> *r_done,
 			const LTCFitOptions &p_options = LTCFitOptions());
 
+	// Nelder-Mead restarted from r_result (fresh simplex, step 0.05) while that improves it by more than
+	// 1e-4 relative, at most MAX_RESTARTS times: a collapsed simplex is how the method stalls on the
+	// elongated valleys of grazing, glossy cells. Returns the iterations spent.
+	static int restart_while_improving(const NelderMead::Function &p_function, NelderMead::Result &r_result);
+	// Runs p_chain(t) for every view-angle row t in [p_t0, p_t1] on min(p_threads (0 = hardware
+	// concurrency), rows) threads, this one included, each taking the next row from a shared counter,
+	// and waits for all.
+	static void run_chains(int p_threads, int p_t0, int p_t1, const std::function<void(int)> &p_chain);
+
 	// The LTC density D(l) of the stored matrix p_m = (a, b, c, d, e) at unit direction p_l (1/sr).
 	static double ltc_evaluate(const double *p_m, const double *p_l);
 	// Maps (p_u1, p_u2) in [0, 1)^2 to a unit direction distributed as D (cosine sample, then M, normalised).
 	static void ltc_sample(const double *p_m, double p_u1, double p_u2, double *r_l);
+
+	// Builds the polygon-integral objective (ltc_polygon_objective.h) of the lobe rho = f cos * p_inv_fn
+	// at (p_alpha, p_theta), from LTCPolygonObjective::SAMPLES^2 visible-normal samples.
+	static void build_polygon_objective(LTCBRDFVariant p_variant, double p_alpha, double p_theta, double p_inv_fn, LTCPolygonObjective *r_objective);
+	// The stored matrix (a, b, c, d, e) of M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]] with the
+	// axis Z = (sin phi, 0, cos phi), and back (m11, m22 = column lengths, m13 the skew, phi the axis).
+	static void build_free_axis_matrix(double p_phi, double p_m11, double p_m22, double p_m13, double *r_m);
+	static void get_free_axis_parameters(const float *p_cell, double *r_phi, double *r_m11, double *r_m22, double *r_m13);
 
 	// Integrates fn, fg and the dominant direction of f cos at (alpha, theta_v) with
 	// p_samples^2 stratified visible-normal samples.

@@ -188,3 +188,24 @@ double LTCPolygonObjective::error(const double *p_m) const {
 	}
 	return sum / target_energy;
 }
+
+double LTCPolygonObjective::error_mixture(const double *p_m, const double *p_weights, int p_lobes) const {
+	if (target_energy <= 0.0) {
+		return 0.0;
+	}
+	double sum = 0.0;
+	const int count = int(targets.size());
+	for (int k = 0; k < count; k++) {
+		double i_d = 0.0;
+		for (int j = 0; j < p_lobes; j++) {
+			const double i_j = ltc_integral(p_m + 5 * j, &quads[12 * k]);
+			if (i_j < 0.0) {
+				return 1e300;
+			}
+			i_d += p_weights[j] * i_j;
+		}
+		const double diff = i_d - targets[k];
+		sum += diff * diff;
+	}
+	return sum / target_energy;
+}

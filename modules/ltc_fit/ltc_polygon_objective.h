@@ -31,6 +31,9 @@ public:
 	void build(const std::vector<double> &p_directions, const std::vector<double> &p_weights);
 	// E for the stored matrix (a, b, c, d, e); 1e300 for a singular matrix.
 	double error(const double *p_m) const;
+	// E for a mixture of p_lobes LTCs (two-lobe LTC, issue #18): I_D = sum_j p_weights[j] I_Dj, with
+	// p_m the lobes' matrices one after the other (5 doubles each).
+	double error_mixture(const double *p_m, const double *p_weights, int p_lobes) const;
 	int get_polygon_count() const { return int(targets.size()); }
 	double get_target(int p_k) const { return targets[p_k]; }
 

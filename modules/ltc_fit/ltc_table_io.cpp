@@ -28,26 +28,29 @@ const float *LTCTableIO::get_builtin_table(LTCBRDFVariant p_variant) {
 	return p_variant == LTC_BRDF_ENGINE_GGX ? LTC_LUT_ENGINE_GGX : LTC_LUT_SMITH_GGX;
 }
 
-static void _append_table(std::ostringstream &r_out, const char *p_name, int p_size, const std::vector<float> &p_table) {
-	r_out << "static const float " << p_name << "[" << p_size << " * " << p_size << " * 8] = {\n";
+String LTCTableIO::format_array(const char *p_name, int p_size, int p_floats_per_cell, const std::vector<float> &p_table) {
+	ERR_FAIL_COND_V_MSG(p_table.size() != (size_t)p_size * p_size * p_floats_per_cell, String(), "LTC table has the wrong size.");
+	std::ostringstream o;
+	o << "static const float " << p_name << "[" << p_size << " * " << p_size << " * " << p_floats_per_cell << "] = {\n";
 	char buf[64];
 	for (int t = 0; t < p_size; t++) {
 		for (int r = 0; r < p_size; r++) {
-			const float *cell = &p_table[((size_t)t * p_size + r) * 8];
-			r_out << "\t";
-			for (int k = 0; k < 8; k++) {
+			const float *cell = &p_table[((size_t)t * p_size + r) * p_floats_per_cell];
+			o << "\t";
+			for (int k = 0; k < p_floats_per_cell; k++) {
 				snprintf(buf, sizeof(buf), "%.9g", (double)cell[k]);
 				String s = buf;
 				// "%.9g" may print an integer ("1", "-0"); give it a ".0" so that the "f" suffix makes a valid literal.
 				if (s.find_first_of(".e") == String::npos && s.find("inf") == String::npos && s.find("nan") == String::npos) {
 					s += ".0";
 				}
-				r_out << s << "f" << (k < 7 ? ", " : ",");
+				o << s << "f" << (k < p_floats_per_cell - 1 ? ", " : ",");
 			}
-			r_out << " // t " << t << ", r " << r << "\n";
+			o << " // t " << t << ", r " << r << "\n";
 		}
 	}
-	r_out << "};\n";
+	o << "};\n";
+	return o.str();
 }
 
 String LTCTableIO::format_inc(int p_size, const std::vector<float> &p_engine, const std::vector<float> &p_smith, const String &p_command, const String &p_stats) {
@@ -114,9 +117,9 @@ String LTCTableIO::format_inc(int p_size, const std::vector<float> &p_engine, co
 	o << " */\n\n";
 	o << "#pragma once\n\n";
 	o << "static const int LTC_LUT_SIZE = " << p_size << ";\n\n";
-	_append_table(o, "LTC_LUT_ENGINE_GGX", p_size, p_engine);
+	o << format_array("LTC_LUT_ENGINE_GGX", p_size, 8, p_engine);
 	o << "\n";
-	_append_table(o, "LTC_LUT_SMITH_GGX", p_size, p_smith);
+	o << format_array("LTC_LUT_SMITH_GGX", p_size, 8, p_smith);
 	return o.str();
 }
 

@@ -26,6 +26,9 @@ public:
 	// Formats the complete include: header comment (p_command, p_stats and the layout), LTC_LUT_SIZE and
 	// both arrays. Each table must hold p_size^2 * 8 floats.
 	static String format_inc(int p_size, const std::vector<float> &p_engine, const std::vector<float> &p_smith, const String &p_command, const String &p_stats);
+	// One table as a C array definition "static const float NAME[N * N * F] = { ... };" (%.9g floats, a cell
+	// a line with its "// t, r" comment).
+	static String format_array(const char *p_name, int p_size, int p_floats_per_cell, const std::vector<float> &p_table);
 	static bool save_inc(const String &p_path, const String &p_text);
 
 	// Parses text written by format_inc. Returns false with r_error set when something is missing or malformed.

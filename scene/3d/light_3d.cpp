@@ -630,7 +630,7 @@ void AreaLight3D::set_area_normalize_energy(bool p_enable) {
 }
 
 void AreaLight3D::set_area_shading_method(AreaShadingMethod p_method) {
-	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method >= (int)RS::LIGHT_AREA_SHADING_MAX, vformat("AreaLight3D \"%s\": area_shading_method must be 0..%d (LTC, LTC Polynomial, MRP, Stochastic, Auto); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADING_MAX - 1, (int)p_method));
+	ERR_FAIL_COND_MSG((int)p_method < 0 || (int)p_method >= (int)RS::LIGHT_AREA_SHADING_MAX, vformat("AreaLight3D \"%s\": area_shading_method must be 0..%d (LTC, LTC Polynomial, MRP, Stochastic, Auto, LTC 2-Lobe); got %d. The old value is kept.", get_name().c_str(), (int)RS::LIGHT_AREA_SHADING_MAX - 1, (int)p_method));
 	area_shading_method = p_method;
 	if (get_light().is_valid() && RS::get_singleton()) {
 		RS::get_singleton()->light_area_set_shading_method(get_light(), RS::LightAreaShadingMethod(p_method));
@@ -744,7 +744,7 @@ void AreaLight3D::_bind_methods() {
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_range", PROPERTY_HINT_RANGE, "0,4096,0.001,or_greater,exp,suffix:m"), "set_param", "get_param", PARAM_RANGE);
 	ADD_PROPERTYI(PropertyInfo(Variant::FLOAT, "area_attenuation", PROPERTY_HINT_RANGE, "0,10,0.001,or_greater"), "set_param", "get_param", PARAM_ATTENUATION);
 	ADD_PROPERTY(PropertyInfo(Variant::BOOL, "area_normalize_energy"), "set_area_normalize_energy", "is_area_normalizing_energy");
-	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC,LTC Polynomial,MRP,Stochastic,Auto"), "set_area_shading_method", "get_area_shading_method");
+	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shading_method", PROPERTY_HINT_ENUM, "LTC,LTC Polynomial,MRP,Stochastic,Auto,LTC 2-Lobe"), "set_area_shading_method", "get_area_shading_method");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_stochastic_samples", PROPERTY_HINT_RANGE, "1,256"), "set_area_stochastic_samples", "get_area_stochastic_samples");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_mode", PROPERTY_HINT_ENUM, "Fixed,PCSS Baseline,Adaptive,Heuristic"), "set_area_shadow_mode", "get_area_shadow_mode");
 	ADD_PROPERTY(PropertyInfo(Variant::INT, "area_shadow_grid", PROPERTY_HINT_RANGE, "2,9"), "set_area_shadow_grid", "get_area_shadow_grid");
@@ -759,6 +759,7 @@ void AreaLight3D::_bind_methods() {
 	BIND_ENUM_CONSTANT(AREA_SHADING_MRP);
 	BIND_ENUM_CONSTANT(AREA_SHADING_STOCHASTIC);
 	BIND_ENUM_CONSTANT(AREA_SHADING_AUTO);
+	BIND_ENUM_CONSTANT(AREA_SHADING_LTC_2LOBE);
 	BIND_ENUM_CONSTANT(AREA_SHADOW_FIXED);
 	BIND_ENUM_CONSTANT(AREA_SHADOW_PCSS_BASELINE);
 	BIND_ENUM_CONSTANT(AREA_SHADOW_ADAPTIVE);

@@ -234,6 +234,7 @@ public:
 		AREA_SHADING_MRP = RS::LIGHT_AREA_SHADING_MRP,
 		AREA_SHADING_STOCHASTIC = RS::LIGHT_AREA_SHADING_STOCHASTIC,
 		AREA_SHADING_AUTO = RS::LIGHT_AREA_SHADING_AUTO,
+		AREA_SHADING_LTC_2LOBE = RS::LIGHT_AREA_SHADING_LTC_2LOBE,
 	};
 	// The emitting shape (values equal RS::LightAreaShape); area_size means per shape: RECTANGLE x by y,
 	// DISK an ellipse of diameters x and y (both one-sided, along -Z), SPHERE diameter x, TUBE a capsule

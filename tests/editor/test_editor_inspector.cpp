@@ -118,12 +118,13 @@ TEST_CASE("[EditorInspector] AreaLight3D rows follow its ClassDB property list, 
 	CHECK(method.label == "Shading Method");
 	CHECK(method.type == Variant::INT);
 	CHECK(method.hint == PROPERTY_HINT_ENUM);
-	CHECK(method.enum_options == std::vector<String>({ "LTC", "LTC Polynomial", "MRP", "Stochastic", "Auto" }));
-	REQUIRE(method.enum_values.size() == 5);
-	// The values are the bound constants LTC..AUTO.
+	CHECK(method.enum_options == std::vector<String>({ "LTC", "LTC Polynomial", "MRP", "Stochastic", "Auto", "LTC 2-Lobe" }));
+	REQUIRE(method.enum_values.size() == 6);
+	// The values are the bound constants LTC..AUTO, then LTC_2LOBE (appended after AUTO).
 	CHECK(method.enum_values[0] == ClassDB::get_integer_constant("AreaLight3D", "AREA_SHADING_LTC"));
 	CHECK(method.enum_values[4] == ClassDB::get_integer_constant("AreaLight3D", "AREA_SHADING_AUTO"));
 	CHECK(method.enum_values[4] == (int64_t)AreaLight3D::AREA_SHADING_AUTO);
+	CHECK(method.enum_values[5] == ClassDB::get_integer_constant("AreaLight3D", "AREA_SHADING_LTC_2LOBE"));
 
 	const int color_row = inspector.find_row("light_color");
 	REQUIRE(color_row >= 0);

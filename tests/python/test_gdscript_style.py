@@ -116,7 +116,7 @@ def test_enums_and_flat_constants_on_the_classes():
 	method = ga.AreaLight3D.AreaShadingMethod
 	assert issubclass(method, enum.IntEnum)
 	assert ga.AreaLight3D.AREA_SHADING_MRP is method.MRP and int(method.MRP) == 2
-	assert [m.name for m in method] == ["LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC", "AUTO"]
+	assert [m.name for m in method] == ["LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC", "AUTO", "LTC_2LOBE"]
 	assert ga.AreaLight3D.AreaShadowMode.ADAPTIVE is ga.AreaLight3D.AREA_SHADOW_ADAPTIVE
 	assert ga.Light3D.Param.ENERGY is ga.Light3D.PARAM_ENERGY and ga.AreaLight3D.PARAM_ENERGY is ga.Light3D.PARAM_ENERGY
 	assert ga.Node.NOTIFICATION_READY == 13  # Plain (non-enum) constants are ints.
@@ -149,7 +149,7 @@ def test_bad_enum_values_name_class_property_and_value():
 	assert "AreaLight3D.area_shading_method" in str(e.value) and "2.5" in str(e.value)
 	with pytest.raises(TypeError):
 		light.area_shading_method = True
-	with pytest.raises(ValueError, match='AreaLight3D "Key": area_shading_method must be 0..4'):
+	with pytest.raises(ValueError, match='AreaLight3D "Key": area_shading_method must be 0..5'):
 		light.area_shading_method = 9  # The setter's own message (it names the node).
 	assert light.area_shading_method is ga.AreaLight3D.AREA_SHADING_LTC  # The default is kept.
 

@@ -150,7 +150,7 @@ def test_property_list_hints():
 	assert size["type_name"] == "Vector2" and size["hint"] == HINT_RANGE and "suffix:m" in size["hint_string"], size
 	method = info["area_shading_method"]
 	assert method["type_name"] == "int" and method["hint"] == HINT_ENUM
-	assert method["hint_string"].split(",") == ["LTC", "LTC Polynomial", "MRP", "Stochastic", "Auto"]
+	assert method["hint_string"].split(",") == ["LTC", "LTC Polynomial", "MRP", "Stochastic", "Auto", "LTC 2-Lobe"]
 	assert info["light_projector"]["class_name"] == "Texture2D"
 	assert "Area" in info and info["Area"]["usage"] & USAGE_MARKERS, "the inspector group marker is listed"
 	by_class = {p["name"]: p for p in ga.class_get_property_list("AreaLight3D")}
@@ -202,7 +202,7 @@ def test_values_without_an_engine_form_raise_type_error():
 @pytest.mark.parametrize("name, value, engine_message", [
 	("area_size", (float("nan"), 2), 'AreaLight3D "Key": area_size must be finite in both components (got (nan, 2)); the old value (2, 1) is kept.'),
 	("area_range", float("nan"), 'AreaLight3D "Key": area_range must be finite (not NaN or infinity) (got nan); the old value 5 is kept.'),
-	("area_shading_method", 9, 'AreaLight3D "Key": area_shading_method must be 0..4 (LTC, LTC Polynomial, MRP, Stochastic, Auto); got 9. The old value is kept.'),
+	("area_shading_method", 9, 'AreaLight3D "Key": area_shading_method must be 0..5 (LTC, LTC Polynomial, MRP, Stochastic, Auto, LTC 2-Lobe); got 9. The old value is kept.'),
 	("area_stochastic_samples", 0, 'AreaLight3D "Key": area_stochastic_samples must be 1..256; got 0. The old value is kept.'),
 	("area_shadow_grid", 1, 'AreaLight3D "Key": area_shadow_grid must be 2..9; got 1. The old value is kept.'),
 	("light_temperature", -1.0, 'AreaLight3D "Key": light_temperature must be finite and > 0 Kelvin (got -1); the old value is kept.'),

@@ -249,7 +249,7 @@ TEST_CASE("[AreaLight3D] property list order, group, hints and enum") {
 	REQUIRE(method);
 	CHECK(method->type == Variant::INT);
 	CHECK(method->hint == PROPERTY_HINT_ENUM);
-	CHECK(method->hint_string == "LTC,LTC Polynomial,MRP,Stochastic,Auto");
+	CHECK(method->hint_string == "LTC,LTC Polynomial,MRP,Stochastic,Auto,LTC 2-Lobe");
 	CHECK(find(list, "area_normalize_energy")->type == Variant::BOOL);
 
 	// Punctual-light properties that do not apply: neither shown nor saved.

@@ -75,7 +75,8 @@ TEST_CASE("[ProjectSettings] GLOBAL_DEF registers a default, overrides win and b
 
 TEST_CASE("[AreaLight3D][AUTO] AUTO is appended before the MAX sentinel and the budget setting is registered") {
 	CHECK((int)RS::LIGHT_AREA_SHADING_AUTO == 4);
-	CHECK((int)RS::LIGHT_AREA_SHADING_MAX == 5);
+	CHECK((int)RS::LIGHT_AREA_SHADING_LTC_2LOBE == 5); // Appended after AUTO, so AUTO keeps its saved value.
+	CHECK((int)RS::LIGHT_AREA_SHADING_MAX == 6);
 	CHECK((int)AreaLight3D::AREA_SHADING_AUTO == (int)RS::LIGHT_AREA_SHADING_AUTO);
 	const float budget = AreaMethodSelector::get_error_budget();
 	CHECK(ProjectSettings::get_singleton()->is_registered(AreaMethodSelector::SETTING_ERROR_BUDGET));
@@ -193,7 +194,7 @@ area_stochastic_samples = 16
 	CHECK(l2->get_area_stochastic_samples() == 16);
 	{
 		SceneTest::ErrorCatcher errors;
-		l2->set_area_shading_method(AreaLight3D::AreaShadingMethod(5)); // MAX: invalid, the old value stays.
+		l2->set_area_shading_method(AreaLight3D::AreaShadingMethod(RS::LIGHT_AREA_SHADING_MAX)); // MAX: invalid, the old value stays.
 		CHECK(l2->get_area_shading_method() == AreaLight3D::AREA_SHADING_AUTO);
 		CHECK(errors.contains("area_shading_method"));
 	}

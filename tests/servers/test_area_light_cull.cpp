@@ -192,7 +192,7 @@ TEST_CASE("[AreaLight3D][SceneCull] storage bound, validation and version of are
 		rs->light_set_param(light, RS::LIGHT_PARAM_ATTENUATION, -1.0f);
 		CHECK(errors.contains("LIGHT_PARAM_ATTENUATION"));
 		CHECK(rs->light_get_param(light, RS::LIGHT_PARAM_ATTENUATION) == doctest::Approx(1.0));
-		rs->light_area_set_shading_method(light, RS::LightAreaShadingMethod(5));
+		rs->light_area_set_shading_method(light, RS::LightAreaShadingMethod(RS::LIGHT_AREA_SHADING_MAX));
 		CHECK(rs->light_area_get_shading_method(light) == RS::LIGHT_AREA_SHADING_LTC);
 		// Area calls on a light of another type are refused.
 		RID omni = rs->omni_light_create();

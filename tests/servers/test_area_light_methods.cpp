@@ -41,6 +41,9 @@ TEST_CASE("[AreaLight3D][Methods] shading method enum, validation and area_stoch
 	CHECK((int)AreaLight3D::AREA_SHADING_LTC_POLYNOMIAL == 1);
 	CHECK((int)AreaLight3D::AREA_SHADING_MRP == 2);
 	CHECK((int)AreaLight3D::AREA_SHADING_STOCHASTIC == 3);
+	CHECK((int)AreaLight3D::AREA_SHADING_AUTO == 4);
+	CHECK((int)AreaLight3D::AREA_SHADING_LTC_2LOBE == 5); // Appended after AUTO: saved scenes keep their values.
+	CHECK((int)RS::LIGHT_AREA_SHADING_LTC_2LOBE == 5);
 	CHECK((int)RS::LIGHT_AREA_SHADING_LTC_POLYNOMIAL == 1);
 	CHECK((int)RS::LIGHT_AREA_SHADING_MRP == 2);
 	CHECK((int)RS::LIGHT_AREA_SHADING_STOCHASTIC == 3);
@@ -62,7 +65,7 @@ TEST_CASE("[AreaLight3D][Methods] shading method enum, validation and area_stoch
 		SceneTest::ErrorCatcher errors;
 		light->set("area_shading_method", -1);
 		light->set("area_shading_method", RS::LIGHT_AREA_SHADING_MAX + 1);
-		// The last valid value set by the loop above (AUTO since it was appended) is kept.
+		// The last valid value set by the loop above (LTC_2LOBE, the last appended) is kept.
 		CHECK(light->get_area_shading_method() == AreaLight3D::AreaShadingMethod(RS::LIGHT_AREA_SHADING_MAX - 1));
 		CHECK(errors.contains("area_shading_method"));
 		light->set("area_stochastic_samples", 0);

@@ -102,24 +102,24 @@ TEST_CASE("[RenderingServer] get_debug_scene_shader_sources() returns the colour
 	String error;
 	REQUIRE_MESSAGE(engine.start(GodotInstance::BACKEND_RD, &error, 8), error.c_str());
 	const std::vector<std::pair<String, String>> sources = engine.get_rendering_server()->get_debug_scene_shader_sources();
-	REQUIRE(sources.size() == 9); // base, 4 methods for rectangles, 4 methods with the shape code.
+	REQUIRE(sources.size() == 11); // base, 5 methods for rectangles, 5 methods with the shape code (AUTO has none).
 	CHECK(sources[0].first == "base.frag");
 	CHECK(sources[0].second.find("#define USE_AREA_LIGHTS") == String::npos);
-	const char *methods[4] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC" };
-	for (int m = 0; m < 4; m++) {
+	const char *methods[5] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC", "LTC_2LOBE" };
+	for (int m = 0; m < 5; m++) {
 		CAPTURE(m);
 		CHECK(sources[m + 1].first == String("area_") + methods[m] + ".frag");
 		CHECK(sources[m + 1].second.find("#define USE_AREA_LIGHTS") != String::npos);
 		CHECK(sources[m + 1].second.find(String("#define AREA_METHOD_") + methods[m] + "\n") != String::npos);
-		for (int other = 0; other < 4; other++) {
+		for (int other = 0; other < 5; other++) {
 			if (other != m) {
 				CHECK(sources[m + 1].second.find(String("#define AREA_METHOD_") + methods[other] + "\n") == String::npos);
 			}
 		}
 		CHECK(sources[m + 1].second.find("#define USE_AREA_SHAPES") == String::npos);
-		CHECK(sources[m + 5].first == String("area_") + methods[m] + "_shapes.frag");
-		CHECK(sources[m + 5].second.find(String("#define AREA_METHOD_") + methods[m] + "\n") != String::npos);
-		CHECK(sources[m + 5].second.find("#define USE_AREA_SHAPES") != String::npos);
+		CHECK(sources[m + 6].first == String("area_") + methods[m] + "_shapes.frag");
+		CHECK(sources[m + 6].second.find(String("#define AREA_METHOD_") + methods[m] + "\n") != String::npos);
+		CHECK(sources[m + 6].second.find("#define USE_AREA_SHAPES") != String::npos);
 	}
 	RD_TEST_CHECK_NO_VALIDATION_ERRORS(rd);
 }

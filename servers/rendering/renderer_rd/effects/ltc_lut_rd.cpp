@@ -9,7 +9,10 @@
 
 #include <cstring>
 
+#include "servers/rendering/renderer_rd/ltc_lut_2lobe_data.inc"
 #include "servers/rendering/renderer_rd/ltc_lut_data.inc"
+
+static_assert(LTC_LUT_2LOBE_SIZE == LTC_LUT_SIZE, "The two-lobe table shares the LUT texture's size.");
 
 uint32_t LTCLutRD::get_size() {
 	return uint32_t(LTC_LUT_SIZE);
@@ -28,11 +31,22 @@ std::vector<std::vector<uint8_t>> LTCLutRD::build_layers(Table p_table) {
 			l1[i * 4 + k] = c[4 + k];
 		}
 	}
-	std::vector<std::vector<uint8_t>> layers(2);
+	std::vector<std::vector<uint8_t>> layers(LAYERS);
 	layers[0].resize(l0.size() * sizeof(float));
 	layers[1].resize(l1.size() * sizeof(float));
 	memcpy(layers[0].data(), l0.data(), layers[0].size());
 	memcpy(layers[1].data(), l1.data(), layers[1].size());
+	// Layers 2-5: the two-lobe table's four texels per cell (16 floats, ltc_lut_2lobe_data.inc).
+	for (int l = 0; l < 4; l++) {
+		std::vector<float> texels(cells * 4);
+		for (size_t i = 0; i < cells; i++) {
+			for (int k = 0; k < 4; k++) {
+				texels[i * 4 + k] = LTC_LUT_ENGINE_GGX_2LOBE[i * 16 + l * 4 + k];
+			}
+		}
+		layers[2 + l].resize(texels.size() * sizeof(float));
+		memcpy(layers[2 + l].data(), texels.data(), layers[2 + l].size());
+	}
 	return layers;
 }
 
@@ -44,7 +58,7 @@ bool LTCLutRD::initialize(Table p_table) {
 	tf.format = RD::DATA_FORMAT_R32G32B32A32_SFLOAT;
 	tf.width = LTC_LUT_SIZE;
 	tf.height = LTC_LUT_SIZE;
-	tf.array_layers = 2;
+	tf.array_layers = LAYERS;
 	tf.texture_type = RD::TEXTURE_TYPE_2D_ARRAY;
 	tf.usage_bits = RD::TEXTURE_USAGE_SAMPLING_BIT;
 	texture = rd->texture_create(tf, build_layers(p_table));

@@ -200,10 +200,10 @@ std::vector<float> RenderForwardClustered::render_target_get_data(RID p_render_t
 /* Pipelines and sets */
 
 String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) {
-	static const char *names[RS::LIGHT_AREA_SHADING_MAX] = { "AREA_METHOD_LTC", "AREA_METHOD_LTC_POLYNOMIAL", "AREA_METHOD_MRP", "AREA_METHOD_STOCHASTIC" };
+	static const char *names[RS::LIGHT_AREA_SHADING_MAX] = { "AREA_METHOD_LTC", "AREA_METHOD_LTC_POLYNOMIAL", "AREA_METHOD_MRP", "AREA_METHOD_STOCHASTIC", nullptr, "AREA_METHOD_LTC_2LOBE" };
 	String defines;
 	for (int m = 0; m < RS::LIGHT_AREA_SHADING_MAX; m++) {
-		if ((p_area_methods >> m) & 1u) {
+		if (((p_area_methods >> m) & 1u) && names[m]) {
 			defines += String("#define ") + names[m] + "\n";
 		}
 	}
@@ -225,7 +225,7 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 std::vector<std::pair<String, String>> RenderForwardClustered::get_debug_scene_shader_sources() const {
 	std::vector<std::pair<String, String>> sources;
 	sources.push_back({ "base.frag", scene_shader.get_stage_source(RenderingDevice::SHADER_STAGE_FRAGMENT, SCENE_SHADER_COLOR) });
-	static const char *names[] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC" };
+	static const char *names[] = { "LTC", "LTC_POLYNOMIAL", "MRP", "STOCHASTIC", "AUTO", "LTC_2LOBE" };
 	for (int m = 0; m < RS::LIGHT_AREA_SHADING_MAX; m++) {
 		if (m == RS::LIGHT_AREA_SHADING_AUTO) {
 			continue; // A policy, not shader code: it picks one of the others.

@@ -8,6 +8,7 @@
 /* use, so code of an unused method is never compiled):                   */
 /*   AREA_METHOD_LTC             area_light_ltc_inc.glsl (LUT)            */
 /*   AREA_METHOD_LTC_POLYNOMIAL  area_light_ltc_inc.glsl (polynomial)     */
+/*   AREA_METHOD_LTC_2LOBE       area_light_ltc_inc.glsl (two lobes)      */
 /*   AREA_METHOD_MRP             area_light_mrp_inc.glsl (thesis 5.3)     */
 /*   AREA_METHOD_STOCHASTIC      area_light_mc_inc.glsl (thesis 5.2)      */
 /*   USE_AREA_SHAPES             area_light_shapes_inc.glsl: disk, sphere */
@@ -61,6 +62,12 @@ void light_process_area_method(AreaLightData p_light, vec3 p_vertex, vec3 N, vec
 #ifdef AREA_METHOD_LTC_POLYNOMIAL
 	if (method == AREA_SHADING_LTC_POLYNOMIAL) {
 		light_process_area_ltc(p_light, p_vertex, N, V, p_roughness, p_f0, p_f90, p_specular_enabled, true, r_diffuse, r_specular);
+		return;
+	}
+#endif
+#ifdef AREA_METHOD_LTC_2LOBE
+	if (method == AREA_SHADING_LTC_2LOBE) {
+		light_process_area_ltc_2lobe(p_light, p_vertex, N, V, p_roughness, p_f0, p_f90, p_specular_enabled, r_diffuse, r_specular);
 		return;
 	}
 #endif

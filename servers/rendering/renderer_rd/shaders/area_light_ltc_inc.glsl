@@ -61,6 +61,9 @@
 /*   The LUT fetch is compiled unless only AREA_METHOD_LTC_POLYNOMIAL is  */
 /*     defined (with both AREA_METHOD_LTC and AREA_METHOD_LTC_POLYNOMIAL, */
 /*     p_polynomial picks at run time).                                   */
+/*   AREA_METHOD_LTC_2LOBE: the two-lobe LTC (issue #18,                  */
+/*     modules/ltc_fit/ltc_two_lobe.h), light_process_area_ltc_2lobe,     */
+/*     reading layers 2-5 of the LUT texture; compiled only with it.      */
 /* Entry points: light_process_area_ltc(..., bool p_polynomial, ...) and  */
 /* light_process_area(...) (= the LUT path, for existing callers).        */
 /*                                                                        */
@@ -79,7 +82,7 @@
 #if defined(AREA_METHOD_LTC_POLYNOMIAL)
 #define AREA_LTC_HAS_POLYNOMIAL
 #endif
-#if !defined(AREA_METHOD_LTC_POLYNOMIAL) || defined(AREA_METHOD_LTC)
+#if !defined(AREA_METHOD_LTC_POLYNOMIAL) || defined(AREA_METHOD_LTC) || defined(AREA_METHOD_LTC_2LOBE)
 #define AREA_LTC_HAS_LUT
 #endif
 
@@ -207,37 +210,57 @@ float ltc_polygon_form_factor(vec3 p_q[4]) {
 //   branch; its image under M^-1 is exactly z_o >= 0, so clipping there is the same clip).
 // Fast path: a rectangle wholly above the receiver's plane (every corner z > 0, the common case) is not
 // clipped at all: its four corners are the diffuse polygon, and M^-1 of them the specular one.
+// ltc_rect_clip is that shared clip (r_n < 3: wholly below the receiver's plane, nothing is lit; the
+// two-lobe LTC maps its result by both lobes' M^-1), ltc_specular_integral one lobe's integral over it.
 // r_specular is left 0 unless p_specular_enabled. r_specular_vector: the specular polygon's vector form
 // factor in the cosine space, turned to z >= 0 (its direction mapped by M is the mean direction of the
 // lobe over the light), 0 where r_specular is 0.
-void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, out float r_diffuse, out float r_specular, out vec3 r_specular_vector) {
-	r_diffuse = 0.0;
+void ltc_rect_clip(vec3 p_q[4], out int r_n, out vec3 c0, out vec3 c1, out vec3 c2, out vec3 c3, out vec3 c4, out vec3 c5) {
+	r_n = 4;
+	c0 = p_q[0];
+	c1 = p_q[1];
+	c2 = p_q[2];
+	c3 = p_q[3];
+	c4 = p_q[3];
+	c5 = p_q[3];
+	if (!(min(min(p_q[0].z, p_q[1].z), min(p_q[2].z, p_q[3].z)) > 0.0)) {
+		ltc_clip_polygon(4, p_q[0], p_q[1], p_q[2], p_q[3], p_q[3], r_n, c0, c1, c2, c3, c4, c5);
+	}
+}
+
+// The specular integral of one LTC (p_m_inv) over the polygon p_n, c0..c4 that ltc_rect_clip left
+// (at least 3 vertices, z >= 0): r_specular and r_specular_vector as ltc_rect_form_factors gives them.
+void ltc_specular_integral(int p_n, vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 c4, mat3 p_m_inv, out float r_specular, out vec3 r_specular_vector) {
 	r_specular = 0.0;
 	r_specular_vector = vec3(0.0);
-	int n = 4;
-	vec3 c0 = p_q[0], c1 = p_q[1], c2 = p_q[2], c3 = p_q[3], c4 = p_q[3], c5 = p_q[3];
-	if (!(min(min(p_q[0].z, p_q[1].z), min(p_q[2].z, p_q[3].z)) > 0.0)) {
-		ltc_clip_polygon(4, p_q[0], p_q[1], p_q[2], p_q[3], p_q[3], n, c0, c1, c2, c3, c4, c5);
-		if (n < 3) {
-			return; // Wholly below the receiver's plane: neither lobe sees it.
-		}
-	}
-	r_diffuse = ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5);
-	if (!p_specular_enabled) {
-		return;
-	}
 	vec3 s0 = p_m_inv * c0, s1 = p_m_inv * c1, s2 = p_m_inv * c2, s3 = p_m_inv * c3, s4 = p_m_inv * c4;
 	// Slots past n hold a copy of a corner (fast path) or 0 (after a clip): neither turns z_min negative.
 	float z_min = min(min(min(s0.z, s1.z), min(s2.z, s3.z)), s4.z);
-	int m = n;
+	int m = p_n;
 	vec3 d0 = s0, d1 = s1, d2 = s2, d3 = s3, d4 = s4, d5 = s4;
 	if (z_min < 0.0) {
-		ltc_clip_polygon(n, s0, s1, s2, s3, s4, m, d0, d1, d2, d3, d4, d5);
+		ltc_clip_polygon(p_n, s0, s1, s2, s3, s4, m, d0, d1, d2, d3, d4, d5);
 	}
 	if (m >= 3) {
 		vec3 v = ltc_polygon_vector(m, d0, d1, d2, d3, d4, d5);
 		r_specular_vector = v.z < 0.0 ? -v : v;
 		r_specular = r_specular_vector.z * (0.5 / M_PI);
+	}
+}
+
+void ltc_rect_form_factors(vec3 p_q[4], bool p_specular_enabled, mat3 p_m_inv, out float r_diffuse, out float r_specular, out vec3 r_specular_vector) {
+	r_diffuse = 0.0;
+	r_specular = 0.0;
+	r_specular_vector = vec3(0.0);
+	int n;
+	vec3 c0, c1, c2, c3, c4, c5;
+	ltc_rect_clip(p_q, n, c0, c1, c2, c3, c4, c5);
+	if (n < 3) {
+		return; // Wholly below the receiver's plane: neither lobe sees it.
+	}
+	r_diffuse = ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5);
+	if (p_specular_enabled) {
+		ltc_specular_integral(n, c0, c1, c2, c3, c4, p_m_inv, r_specular, r_specular_vector);
 	}
 }
 
@@ -345,17 +368,9 @@ void ltc_fetch_polynomial(float p_roughness, float p_NoV, out vec4 r_t0, out vec
 
 #endif // AREA_LTC_HAS_POLYNOMIAL
 
-// Adds one area light shaded with LTC. Vectors in view space; N, V unit; p_vertex the shading point.
-// r_diffuse accumulates irradiance-weighted diffuse BRDF without albedo (as light_compute does),
-// r_specular reflected specular radiance. p_polynomial: take the LTC matrix from the polynomials
-// instead of the LUT (only where both are compiled; otherwise the compiled one is used).
-void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, bool p_polynomial, inout vec3 r_diffuse, inout vec3 r_specular) {
-	AreaRectSetup lr;
-	if (!area_light_rect_begin(p_light, p_vertex, lr)) {
-		return;
-	}
-
-	// Frame of the LUT fit (ltc_lut_data.inc): z = N, x = normalize(V - N NoV), y = z cross x.
+// The light's rectangle in the frame of the LUT fit (ltc_lut_data.inc): z = N, x = normalize(V - N NoV),
+// y = z cross x. Returns NoV.
+float ltc_rect_in_frame(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, out vec3 r_q[4]) {
 	float NoV = dot(N, V);
 	vec3 tx = V - N * NoV;
 	if (dot(tx, tx) < 1e-10) {
@@ -370,11 +385,34 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	vec3 base = p_light.position - p_vertex;
 	vec3 hx = p_light.half_axis_x;
 	vec3 hy = p_light.half_axis_y;
+	r_q[0] = local_from_view * (base - hx - hy);
+	r_q[1] = local_from_view * (base + hx - hy);
+	r_q[2] = local_from_view * (base + hx + hy);
+	r_q[3] = local_from_view * (base - hx + hy);
+	return NoV;
+}
+
+// M^-1 of the stored M = [[a, 0, b], [0, c, 0], [d, 0, e]] (row-major; thesis eqs. 5.7-5.8), p_t0 =
+// (a, b, c, d), p_e = e. a e - b d > 0 in every cell (ltc_lut_data.inc, ltc_lut_2lobe_data.inc) and in the
+// guarded polynomials, so s is finite. We stay in the fitter's frame, so the Godot-frame conjugation of
+// eq. 5.9 is not needed. GLSL matrices are column-major: columns of M^-1.
+mat3 ltc_inverse(vec4 p_t0, float p_e) {
+	float s = 1.0 / (p_t0.x * p_e - p_t0.y * p_t0.w);
+	return mat3(vec3(s * p_e, 0.0, -s * p_t0.w), vec3(0.0, 1.0 / p_t0.z, 0.0), vec3(-s * p_t0.y, 0.0, s * p_t0.x));
+}
+
+// Adds one area light shaded with LTC. Vectors in view space; N, V unit; p_vertex the shading point.
+// r_diffuse accumulates irradiance-weighted diffuse BRDF without albedo (as light_compute does),
+// r_specular reflected specular radiance. p_polynomial: take the LTC matrix from the polynomials
+// instead of the LUT (only where both are compiled; otherwise the compiled one is used).
+void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, bool p_polynomial, inout vec3 r_diffuse, inout vec3 r_specular) {
+	AreaRectSetup lr;
+	if (!area_light_rect_begin(p_light, p_vertex, lr)) {
+		return;
+	}
+
 	vec3 q[4];
-	q[0] = local_from_view * (base - hx - hy);
-	q[1] = local_from_view * (base + hx - hy);
-	q[2] = local_from_view * (base + hx + hy);
-	q[3] = local_from_view * (base - hx + hy);
+	float NoV = ltc_rect_in_frame(p_light, p_vertex, N, V, q);
 
 	vec4 t0 = vec4(1.0, 0.0, 1.0, 0.0); // a, b, c, d
 	vec4 t1 = vec4(1.0, 0.0, 0.0, 0.0); // e, fn, fg, 0
@@ -391,17 +429,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 		ltc_fetch_lut(p_roughness, NoV, t0, t1);
 #endif
 	}
-	float a = t0.x;
-	float b = t0.y;
-	float c = t0.z;
-	float d = t0.w;
-	float e = t1.x;
-	// Thesis eqs. 5.7-5.8: M = [[a, 0, b], [0, c, 0], [d, 0, e]] (row-major), inverted at run time.
-	// We stay in the fitter's frame (above), so the Godot-frame conjugation of eq. 5.9 is not needed.
-	// a e - b d > 0 in every cell (ltc_lut_data.inc) and in the guarded polynomials, so s is finite.
-	float s = 1.0 / (a * e - b * d);
-	// GLSL matrices are column-major: columns of M^-1.
-	mat3 m_inv = mat3(vec3(s * e, 0.0, -s * d), vec3(0.0, 1.0 / c, 0.0), vec3(-s * b, 0.0, s * a));
+	mat3 m_inv = ltc_inverse(t0, t1.x);
 
 	// Diffuse: the exact Lambert integral, (1/pi) L_e integral cos = L_e FF (albedo applied later);
 	// specular: the LTC's integral over the same clipped polygon mapped by M^-1.
@@ -423,6 +451,63 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 		r_specular += lr.radiance * p_light.specular_amount * spec * F * tex;
 	}
 }
+
+#ifdef AREA_METHOD_LTC_2LOBE
+// The two-lobe LTC (issue #18; the model and its fit: modules/ltc_fit/ltc_two_lobe.h). The lobe is
+// w1 D_M1 + w2 D_M2: the rectangle is clipped once (ltc_rect_clip), mapped by both M^-1 and integrated
+// twice; each lobe's integral gets the Fresnel weight of its own lit part (ltc_polygon_fresnel with
+// that lobe's matrix and the shared fn, fg). Layers 2-5 of ltc_lut_texture hold the table
+// (ltc_lut_2lobe_data.inc): (a1, b1, c1, d1), (e1, fn, fg, w1), (a2, b2, c2, d2), (e2, w2, 0, 0).
+void ltc_fetch_lut_2lobe(float p_roughness, float p_NoV, out vec4 r_t0, out vec4 r_t1, out vec4 r_t2, out vec4 r_t3) {
+	vec2 uv = vec2(clamp(p_roughness, 0.0, 1.0), sqrt(1.0 - clamp(p_NoV, 0.0, 1.0)));
+	uv = uv * ((LTC_LUT_SIZE - 1.0) / LTC_LUT_SIZE) + 0.5 / LTC_LUT_SIZE;
+	r_t0 = textureLod(sampler2DArray(ltc_lut_texture, ltc_lut_sampler), vec3(uv, 2.0), 0.0);
+	r_t1 = textureLod(sampler2DArray(ltc_lut_texture, ltc_lut_sampler), vec3(uv, 3.0), 0.0);
+	r_t2 = textureLod(sampler2DArray(ltc_lut_texture, ltc_lut_sampler), vec3(uv, 4.0), 0.0);
+	r_t3 = textureLod(sampler2DArray(ltc_lut_texture, ltc_lut_sampler), vec3(uv, 5.0), 0.0);
+}
+
+// light_process_area_ltc (same arguments and units) with the two-lobe table.
+void light_process_area_ltc_2lobe(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V, float p_roughness, vec3 p_f0, float p_f90, bool p_specular_enabled, inout vec3 r_diffuse, inout vec3 r_specular) {
+	AreaRectSetup lr;
+	if (!area_light_rect_begin(p_light, p_vertex, lr)) {
+		return;
+	}
+	vec3 q[4];
+	float NoV = ltc_rect_in_frame(p_light, p_vertex, N, V, q);
+	int n;
+	vec3 c0, c1, c2, c3, c4, c5;
+	ltc_rect_clip(q, n, c0, c1, c2, c3, c4, c5);
+	if (n < 3) {
+		return; // Wholly below the receiver's plane.
+	}
+	r_diffuse += lr.radiance * ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5) * area_texture_ltc(p_light, q, true);
+	if (!p_specular_enabled) {
+		return;
+	}
+	vec4 t0, t1, t2, t3;
+	ltc_fetch_lut_2lobe(p_roughness, NoV, t0, t1, t2, t3);
+	vec3 v = vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV);
+	vec3 spec = vec3(0.0);
+	for (int lobe = 0; lobe < 2; lobe++) {
+		vec4 m0 = lobe == 0 ? t0 : t2;
+		vec4 m1 = lobe == 0 ? t1 : vec4(t3.x, t1.y, t1.z, t3.y); // (e, fn, fg, w)
+		mat3 m_inv = ltc_inverse(m0, m1.x);
+		float integral;
+		vec3 vector;
+		ltc_specular_integral(n, c0, c1, c2, c3, c4, m_inv, integral, vector);
+		vec3 qs[4];
+#ifdef AREA_LIGHT_TEXTURE
+		for (int i = 0; i < 4; i++) {
+			qs[i] = m_inv * q[i];
+		}
+#endif
+		vec2 fresnel = ltc_polygon_fresnel(v, m0, m1, vector, integral);
+		spec += (m1.w * integral) * (p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y) * area_texture_ltc(p_light, qs, false);
+	}
+	r_specular += lr.radiance * p_light.specular_amount * spec;
+}
+#endif // AREA_METHOD_LTC_2LOBE
 
 #ifdef AREA_LTC_HAS_LUT
 // The LUT entry point (existing callers): light_process_area_ltc without the polynomials.

@@ -177,7 +177,7 @@ bool area_tube_facing_rectangle(AreaLightData p_light, vec3 p_to_vertex, vec3 p_
 
 #endif // AREA_LIGHT_SHAPES_INC_GLSL
 
-#if defined(AREA_METHOD_LTC) || defined(AREA_METHOD_LTC_POLYNOMIAL)
+#if defined(AREA_METHOD_LTC) || defined(AREA_METHOD_LTC_POLYNOMIAL) || defined(AREA_METHOD_LTC_2LOBE)
 #include "area_light_shapes_ltc_inc.glsl"
 #endif
 #ifdef AREA_METHOD_MRP
@@ -206,8 +206,9 @@ void light_process_area_shape(AreaLightData p_light, uint p_method, vec3 p_verte
 		return;
 	}
 	vec3 radiance = p_light.color * window;
-#if defined(AREA_METHOD_LTC) || defined(AREA_METHOD_LTC_POLYNOMIAL)
-	if (p_method == AREA_SHADING_LTC || p_method == AREA_SHADING_LTC_POLYNOMIAL) {
+#if defined(AREA_METHOD_LTC) || defined(AREA_METHOD_LTC_POLYNOMIAL) || defined(AREA_METHOD_LTC_2LOBE)
+	// LTC_2LOBE: the shapes keep the one-lobe LUT (the two-lobe table is fitted to rectangles' integrals).
+	if (p_method == AREA_SHADING_LTC || p_method == AREA_SHADING_LTC_POLYNOMIAL || p_method == AREA_SHADING_LTC_2LOBE) {
 		light_process_area_shape_ltc(p_light, shape, radiance, p_vertex, N, V, p_roughness, p_f0, p_f90, p_specular_enabled, p_method == AREA_SHADING_LTC_POLYNOMIAL, r_diffuse, r_specular);
 		return;
 	}

@@ -40,6 +40,7 @@ struct LightData { // Byte offsets (std430).
 #define AREA_SHADING_LTC_POLYNOMIAL 1u
 #define AREA_SHADING_MRP 2u
 #define AREA_SHADING_STOCHASTIC 3u
+#define AREA_SHADING_LTC_2LOBE 5u // 4 is AUTO, resolved on the CPU.
 
 // Must match RS::LightAreaShape (bits 24-31 of AreaLightData::shading_method).
 #define AREA_SHAPE_RECTANGLE 0u

@@ -90,7 +90,7 @@ layout(set = 0, binding = 5, std430) restrict readonly buffer AreaLights {
 }
 area_lights;
 
-layout(set = 0, binding = 6) uniform texture2DArray ltc_lut_texture; // LTCLutRD: layer 0 (a, b, c, d), layer 1 (e, fn, fg, 0).
+layout(set = 0, binding = 6) uniform texture2DArray ltc_lut_texture; // LTCLutRD: layer 0 (a, b, c, d), layer 1 (e, fn, fg, 0); 2-5 LTC_2LOBE.
 layout(set = 0, binding = 7) uniform sampler ltc_lut_sampler; // Linear, clamp to edge.
 #endif
 
