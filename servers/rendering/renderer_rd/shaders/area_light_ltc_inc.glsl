@@ -445,7 +445,7 @@ void light_process_area_ltc(AreaLightData p_light, vec3 p_vertex, vec3 N, vec3 V
 	}
 	// Texture (area_light_texture_inc.glsl; vec3(1.0) and no work without AREA_LIGHT_TEXTURE): one fetch
 	// for both lobes, weighted by their radiance.
-	vec3 tex = area_texture_ltc(p_light, q, mat3(vec3(a, 0.0, d), vec3(0.0, c, 0.0), vec3(b, 0.0, e)), spec_vector, diffuse, spec * p_light.specular_amount * F);
+	vec3 tex = area_texture_ltc(p_light, q, mat3(vec3(t0.x, 0.0, t0.w), vec3(0.0, t0.z, 0.0), vec3(t0.y, 0.0, t1.x)), spec_vector, diffuse, spec * p_light.specular_amount * F);
 	r_diffuse += lr.radiance * diffuse * tex;
 	if (p_specular_enabled) {
 		r_specular += lr.radiance * p_light.specular_amount * spec * F * tex;
@@ -481,31 +481,38 @@ void light_process_area_ltc_2lobe(AreaLightData p_light, vec3 p_vertex, vec3 N, 
 	if (n < 3) {
 		return; // Wholly below the receiver's plane.
 	}
-	r_diffuse += lr.radiance * ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5) * area_texture_ltc(p_light, q, true);
-	if (!p_specular_enabled) {
-		return;
-	}
-	vec4 t0, t1, t2, t3;
-	ltc_fetch_lut_2lobe(p_roughness, NoV, t0, t1, t2, t3);
-	vec3 v = vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV);
+	float diffuse = ltc_polygon_integral(n, c0, c1, c2, c3, c4, c5);
 	vec3 spec = vec3(0.0);
-	for (int lobe = 0; lobe < 2; lobe++) {
-		vec4 m0 = lobe == 0 ? t0 : t2;
-		vec4 m1 = lobe == 0 ? t1 : vec4(t3.x, t1.y, t1.z, t3.y); // (e, fn, fg, w)
-		mat3 m_inv = ltc_inverse(m0, m1.x);
-		float integral;
-		vec3 vector;
-		ltc_specular_integral(n, c0, c1, c2, c3, c4, m_inv, integral, vector);
-		vec3 qs[4];
-#ifdef AREA_LIGHT_TEXTURE
-		for (int i = 0; i < 4; i++) {
-			qs[i] = m_inv * q[i];
+	// The texture (area_light_texture_inc.glsl, vec3(1.0) without AREA_LIGHT_TEXTURE): one fetch for the
+	// diffuse lobe and the brighter specular lobe (its M and vector form factor), weighted by their radiance.
+	mat3 tex_m = mat3(1.0);
+	vec3 tex_vector = vec3(0.0);
+	if (p_specular_enabled) {
+		vec4 t0, t1, t2, t3;
+		ltc_fetch_lut_2lobe(p_roughness, NoV, t0, t1, t2, t3);
+		vec3 v = vec3(sqrt(max(1.0 - NoV * NoV, 0.0)), 0.0, NoV);
+		float brightest = -1.0;
+		for (int lobe = 0; lobe < 2; lobe++) {
+			vec4 m0 = lobe == 0 ? t0 : t2;
+			vec4 m1 = lobe == 0 ? t1 : vec4(t3.x, t1.y, t1.z, t3.y); // (e, fn, fg, w)
+			mat3 m_inv = ltc_inverse(m0, m1.x);
+			float integral;
+			vec3 vector;
+			ltc_specular_integral(n, c0, c1, c2, c3, c4, m_inv, integral, vector);
+			vec2 fresnel = ltc_polygon_fresnel(v, m0, m1, vector, integral);
+			vec3 lobe_spec = (m1.w * integral) * (p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y);
+			spec += lobe_spec;
+			float weight = dot(lobe_spec, vec3(1.0));
+			if (weight > brightest) {
+				brightest = weight;
+				tex_m = mat3(vec3(m0.x, 0.0, m0.w), vec3(0.0, m0.z, 0.0), vec3(m0.y, 0.0, m1.x));
+				tex_vector = vector;
+			}
 		}
-#endif
-		vec2 fresnel = ltc_polygon_fresnel(v, m0, m1, vector, integral);
-		spec += (m1.w * integral) * (p_f0 * fresnel.x + (vec3(p_f90) - p_f0) * fresnel.y) * area_texture_ltc(p_light, qs, false);
 	}
-	r_specular += lr.radiance * p_light.specular_amount * spec;
+	vec3 tex = area_texture_ltc(p_light, q, tex_m, tex_vector, diffuse, spec * p_light.specular_amount);
+	r_diffuse += lr.radiance * diffuse * tex;
+	r_specular += lr.radiance * p_light.specular_amount * spec * tex;
 }
 #endif // AREA_METHOD_LTC_2LOBE
 
