@@ -383,7 +383,14 @@ bool RenderForwardClustered::_ensure_scene_sets(uint32_t p_area_methods) {
 		const RID sun_atlas = (p_area_methods & SCENE_VERSION_DIRECTIONAL_SHADOWS) ? directional_shadows.get_atlas_texture() : RID();
 		const RID sky_radiance = (p_area_methods & SCENE_VERSION_SKY_REFLECTION) ? sky.get_radiance_texture() : RID();
 		const RID texture_atlas = (p_area_methods & AREA_VERSION_TEXTURE) ? light_storage->get_area_light_atlas().get_texture() : RID();
-		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer && av.scene_set_shadow_atlas == shadow_atlas && av.scene_set_directional_buffer == directional_buffer && av.scene_set_sky_buffer == sky_buffer && av.scene_set_directional_shadow_atlas == sun_atlas && av.scene_set_sky_radiance == sky_radiance && av.scene_set_area_light_atlas == texture_atlas;
+		// One statement per input, so each feature's comparison is its own line (patches/README.md).
+		bool area_ok = av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set) && av.scene_set_cluster_buffer == cluster_buffer;
+		area_ok = area_ok && av.scene_set_shadow_atlas == shadow_atlas;
+		area_ok = area_ok && av.scene_set_directional_buffer == directional_buffer;
+		area_ok = area_ok && av.scene_set_sky_buffer == sky_buffer;
+		area_ok = area_ok && av.scene_set_directional_shadow_atlas == sun_atlas;
+		area_ok = area_ok && av.scene_set_sky_radiance == sky_radiance;
+		area_ok = area_ok && av.scene_set_area_light_atlas == texture_atlas;
 		if (!area_ok) {
 			if (av.scene_set.is_valid() && rd->uniform_set_is_valid(av.scene_set)) {
 				rd->free(av.scene_set);
