@@ -518,6 +518,15 @@ public:
 					continue; // Part of a section kept as text.
 				}
 				String raw = _trim_right(stream.text.substr(_value_start(stream.text, start), stream.pos - _value_start(stream.text, start)));
+				if (!defining_sub_resource.empty()) {
+					// A value kept as text still holds the resources it names (keep_raw): one naming the
+					// sub_resource it belongs to would be a reference cycle, never freed.
+					for (const String &id : _referenced_ids(raw, "SubResource")) {
+						if (id == defining_sub_resource) {
+							return fail(line, vformat("%s: SubResource(\"%s\") refers to the sub_resource it is a property of.", assign.c_str(), id.c_str()));
+						}
+					}
+				}
 				apply_property(target, assign, value, unsupported, raw, line);
 				continue;
 			}

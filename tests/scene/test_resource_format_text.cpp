@@ -470,6 +470,12 @@ TEST_CASE("[SceneTree][TSCN] Malformed: a sub_resource naming itself is an error
 	// load_error() also checks that no test resource is left alive.
 	String err = load_error("[gd_scene format=3]\n\n[sub_resource type=\"TscnTestMaterial\" id=\"M\"]\nnext = SubResource(\"M\")\n\n[node name=\"Root\" type=\"TscnTestNode\"]\n");
 	CHECK_MESSAGE(err.find("bad.tscn:4: SubResource(\"M\") refers to the sub_resource it is a property of") == 0, err.c_str());
+	// The same inside a value kept as text (an Array, a constructor we do not model): the kept text holds
+	// the resources it names (seed regress_sub_resource_self_reference_kept_text.tscn, LeakSanitizer).
+	err = load_error("[gd_scene format=3]\n\n[sub_resource type=\"TscnTestMaterial\" id=\"M\"]\nextra = [SubResource(\"M\")]\n\n[node name=\"Root\" type=\"TscnTestNode\"]\n");
+	CHECK_MESSAGE(err.find("bad.tscn:4: extra: SubResource(\"M\") refers to the sub_resource it is a property of") == 0, err.c_str());
+	err = load_error("[gd_scene format=3]\n\n[sub_resource type=\"TscnTestMaterial\" id=\"M\"]\nnsform = Transform2D(1, 0, 0,\n next = SubResource(\"M\"))\n\n[node name=\"Root\" type=\"TscnTestNode\"]\n");
+	CHECK_MESSAGE(err.find("bad.tscn:4: nsform: SubResource(\"M\") refers to the sub_resource it is a property of") == 0, err.c_str());
 }
 
 TEST_CASE("[SceneTree][TSCN] Malformed: an empty node type is an error, for the root and for a child") {
