@@ -245,6 +245,12 @@ def parse_hunks(base_blob, target_blob):
 				for block in split_blocks(piece_added):
 					add_structured(split, piece_index, block, None)
 				continue
+			if not piece_added and piece_count > 1 and all(line.startswith(b"#include ") for line in piece_removed):
+				# Removed #includes, one piece each (as added ones are): a pin can then drop the one a
+				# feature replaces while the base code still needs the others.
+				for i, line in enumerate(piece_removed):
+					split.append([piece_index + i, 1, [], match_text([line]), None])
+				continue
 			entry = [piece_index, piece_count, piece_added, match_text(piece_added if piece_added else piece_removed), None]
 			candidates = [e for e in range(first_new, len(split)) if split[e][2]]
 			if not piece_added and candidates and piece_count <= 3:
