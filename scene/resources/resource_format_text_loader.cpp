@@ -44,6 +44,16 @@ public:
 		return false;
 	}
 
+	// Tag values use a resolver that only checks ids (instance=ExtResource("id")).
+	bool resolve_tag_reference(const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
+		if (p_kind != "ExtResource" || !ext_resources.count(p_id)) {
+			r_error = vformat("%s(\"%s\") is not a declared ext_resource.", p_kind.c_str(), p_id.c_str());
+			return false;
+		}
+		r_value = p_id;
+		return true;
+	}
+
 	bool resolve_reference(const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
 		if (p_kind == "SubResource") {
 			if (!defining_sub_resource.empty() && p_id == defining_sub_resource) {
@@ -216,7 +226,20 @@ public:
 		return out;
 	}
 
-	bool orphan = false; // Set by handle_node_tag for a section kept as text.
+	bool orphan = false; // Set by handle_node_tag for a [node] whose parent is not loaded yet.
+	// A [node] section whose parent is not loaded when it is read: retried after the last section
+	// (Godot expects a parent first, but a file may name one declared below), else kept as text when
+	// an instance may make that parent (resolve_deferred_nodes()).
+	struct DeferredNode {
+		size_t start = 0; // The section's text: [start, end) of stream.text.
+		size_t end = 0;
+		int start_line = 1; // stream.line at start.
+		int tag_line = 1;
+		String name;
+		String parent_path;
+	};
+	std::vector<DeferredNode> deferred_nodes;
+	DeferredNode deferring; // Set with orphan.
 
 	// True when p_path starts at a node that came from an instanced scene (or a placeholder).
 	bool under_instance(const String &p_path) const {
@@ -257,12 +280,11 @@ public:
 		if (has_parent) {
 			parent = parent_path == "." ? root : root->get_node_or_null(parent_path);
 			if (!parent) {
-				// Godot allows sections under nodes an instance makes (a glTF's skeleton...). When
-				// the instance has no such node, or the parent is missing, keep the section as text.
-				if (!under_instance(parent_path)) {
-					return fail(line, vformat("Parent node \"%s\" of node \"%s\" does not exist.", parent_path.c_str(), name.c_str()));
-				}
-				problem(line, "orphan:" + parent_path, vformat("Parent node \"%s\" of node \"%s\" is not in the instanced scene as loaded here; the section is kept as text and written back on save.", parent_path.c_str(), name.c_str()));
+				// Declared further down, or made by an instance: decided after the last section.
+				deferring = DeferredNode();
+				deferring.tag_line = line;
+				deferring.name = name;
+				deferring.parent_path = parent_path;
 				orphan = true;
 				return true;
 			}
@@ -411,6 +433,114 @@ public:
 		return _trim_right(stream.text.substr(s, p_end - s));
 	}
 
+	// The text of a section kept as it is, for the saver; the sub_resources it names are saved with it.
+	String keep_section_text(size_t p_start, size_t p_end) {
+		String text = section_text(p_start, p_end);
+		for (const String &id : _referenced_ids(text, "SubResource")) {
+			auto it = sub_resources.find(id);
+			if (it != sub_resources.end()) {
+				scene_data.section_refs.push_back(it->second);
+			}
+		}
+		return text;
+	}
+
+	// The first position from p_pos that is not a blank or part of a ';' comment.
+	size_t skip_blanks(size_t p_pos) const {
+		size_t p = p_pos;
+		while (p < stream.text.size()) {
+			char c = stream.text[p];
+			if (c == ';') {
+				while (p < stream.text.size() && stream.text[p] != '\n') {
+					p++;
+				}
+			} else if ((unsigned char)c <= 32) {
+				p++;
+			} else {
+				break;
+			}
+		}
+		return p;
+	}
+
+	// Reads a deferred [node] section again, now that its parent is loaded.
+	bool load_deferred_node(const DeferredNode &p_node) {
+		const size_t saved_pos = stream.pos;
+		const int saved_line = stream.line;
+		stream.pos = p_node.start;
+		stream.line = p_node.start_line;
+		VariantParser::Tag tag;
+		String err;
+		VariantParser::ResourceFunc tag_func = [this](const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
+			return resolve_tag_reference(p_kind, p_id, r_value, r_error);
+		};
+		VariantParser::ResourceFunc res_func = [this](const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
+			return resolve_reference(p_kind, p_id, r_value, r_error);
+		};
+		const size_t p0 = stream.pos;
+		if (!VariantParser::parse_tag(stream, tag, err, tag_func)) {
+			return fail(stream.line, err);
+		}
+		Object *target = nullptr;
+		if (!handle_node_tag(tag, section_text(p0, stream.pos), target)) {
+			return false;
+		}
+		while (target && skip_blanks(stream.pos) < p_node.end) {
+			const size_t start = stream.pos;
+			String assign;
+			Variant value;
+			String unsupported;
+			bool eof = false;
+			if (!VariantParser::parse_tag_assign_eof(stream, tag, assign, value, err, res_func, &eof, &unsupported)) {
+				return fail(stream.line, err);
+			}
+			if (eof || assign.empty()) {
+				break;
+			}
+			String raw = _trim_right(stream.text.substr(_value_start(stream.text, start), stream.pos - _value_start(stream.text, start)));
+			apply_property(target, assign, value, unsupported, raw, tag.line);
+		}
+		stream.pos = saved_pos;
+		stream.line = saved_line;
+		return true;
+	}
+
+	// The [node] sections read before their parent: each is loaded under the parent once that exists
+	// (a warning: Godot expects the parent first); one whose parent an instance may make (a glTF's
+	// skeleton...) and does not is kept as text and written back on save; any other is an error.
+	bool resolve_deferred_nodes() {
+		bool progress = true;
+		while (progress && !deferred_nodes.empty()) {
+			progress = false;
+			for (size_t i = 0; i < deferred_nodes.size();) {
+				const DeferredNode node = deferred_nodes[i];
+				if (!root->get_node_or_null(node.parent_path)) {
+					i++;
+					continue;
+				}
+				deferred_nodes.erase(deferred_nodes.begin() + i);
+				orphan = false;
+				if (!load_deferred_node(node)) {
+					return false;
+				}
+				if (orphan) {
+					return fail(node.tag_line, vformat("Could not add node \"%s\" to \"%s\".", node.name.c_str(), node.parent_path.c_str()));
+				}
+				problem(node.tag_line, "late:" + node.parent_path + "/" + node.name, vformat("Node \"%s\" comes before its parent \"%s\" in the file (Godot expects the parent first): loaded under it, and saved after it.", node.name.c_str(), node.parent_path.c_str()));
+				progress = true;
+			}
+		}
+		for (const DeferredNode &node : deferred_nodes) {
+			if (!under_instance(node.parent_path)) {
+				return fail(node.tag_line, vformat("Parent node \"%s\" of node \"%s\" does not exist.", node.parent_path.c_str(), node.name.c_str()));
+			}
+			problem(node.tag_line, "orphan:" + node.parent_path, vformat("Parent node \"%s\" of node \"%s\" is not in the instanced scene as loaded here; the section is kept as text and written back on save.", node.parent_path.c_str(), node.name.c_str()));
+			scene_data.orphan_sections.push_back(keep_section_text(node.start, node.end));
+		}
+		deferred_nodes.clear();
+		return true;
+	}
+
 	bool run() {
 		// A text scene holds no binary data; a NUL byte would also cut the header text kept for the save
 		// (found by fuzz_resource_format_text).
@@ -421,14 +551,8 @@ public:
 		VariantParser::ResourceFunc res_func = [this](const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
 			return resolve_reference(p_kind, p_id, r_value, r_error);
 		};
-		// Tag values use a resolver that only checks ids (instance=ExtResource("id")).
 		VariantParser::ResourceFunc tag_func = [this](const String &p_kind, const String &p_id, Variant &r_value, String &r_error) {
-			if (p_kind != "ExtResource" || !ext_resources.count(p_id)) {
-				r_error = vformat("%s(\"%s\") is not a declared ext_resource.", p_kind.c_str(), p_id.c_str());
-				return false;
-			}
-			r_value = p_id;
-			return true;
+			return resolve_tag_reference(p_kind, p_id, r_value, r_error);
 		};
 
 		VariantParser::Tag tag;
@@ -452,18 +576,19 @@ public:
 
 		Object *target = nullptr;
 		String section; // Name of the current section; empty before the first.
-		size_t tail_start = String::npos; // Start of a section kept as text.
+		size_t tail_start = String::npos; // Start of a section kept as text (or deferred).
+		int tail_line = 1;
 		bool orphan_start = false;
 		auto close_tail = [&](size_t p_end) {
 			if (tail_start != String::npos) {
-				String text = section_text(tail_start, p_end);
-				for (const String &id : _referenced_ids(text, "SubResource")) {
-					auto it = sub_resources.find(id);
-					if (it != sub_resources.end()) {
-						scene_data.section_refs.push_back(it->second); // Saved with the text that names it.
-					}
+				if (orphan_start) {
+					deferring.start = tail_start;
+					deferring.end = p_end;
+					deferring.start_line = tail_line;
+					deferred_nodes.push_back(deferring);
+				} else {
+					scene_data.tail_sections.push_back(keep_section_text(tail_start, p_end));
 				}
-				(orphan_start ? scene_data.orphan_sections : scene_data.tail_sections).push_back(text);
 				tail_start = String::npos;
 				orphan_start = false;
 			}
@@ -476,21 +601,10 @@ public:
 			err.clear();
 			bool is_tag = false;
 			size_t start = stream.pos;
+			int start_line = stream.line;
 			{
 				// Peek: a tag starts with '[' after blanks/comments. Tags need the id-only resolver.
-				size_t p = stream.pos;
-				while (p < stream.text.size()) {
-					char c = stream.text[p];
-					if (c == ';') {
-						while (p < stream.text.size() && stream.text[p] != '\n') {
-							p++;
-						}
-					} else if ((unsigned char)c <= 32) {
-						p++;
-					} else {
-						break;
-					}
-				}
+				const size_t p = skip_blanks(stream.pos);
 				is_tag = p < stream.text.size() && stream.text[p] == '[';
 			}
 			if (is_tag || stream.pos >= stream.text.size()) {
@@ -549,7 +663,8 @@ public:
 					return false;
 				}
 				if (orphan) {
-					tail_start = start; // Kept with its properties, written after the nodes.
+					tail_start = start; // Read again (or kept as text) after the last section.
+					tail_line = start_line;
 					orphan_start = true;
 				}
 			} else if (tag.name == "resource" && resource_mode) {
@@ -569,6 +684,9 @@ public:
 			}
 		}
 		close_tail(stream.pos);
+		if (!resolve_deferred_nodes()) {
+			return false;
+		}
 		if (resource_mode) {
 			if (main_resource.is_null()) {
 				return fail(stream.line, "The resource file has no [resource] section.");
