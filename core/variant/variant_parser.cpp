@@ -736,6 +736,10 @@ bool VariantParser::parse_tag_assign_eof(Stream &p_stream, Tag &r_tag, String &r
 	return true;
 }
 
+bool VariantParser::parse_string_literal(Stream &p_stream, String &r_str, String &r_error) {
+	return _lex_string(p_stream, r_str, r_error);
+}
+
 bool VariantParser::parse_string(const String &p_text, Variant &r_value, String *r_error, const ResourceFunc &p_res) {
 	Stream s(p_text);
 	String err;

@@ -68,6 +68,8 @@ public:
 	// Convenience: the whole text must be one value. Errors come back as
 	// "line N: message".
 	static bool parse_string(const String &p_text, Variant &r_value, String *r_error = nullptr, const ResourceFunc &p_res = nullptr);
+	// A quoted string's text with its escapes resolved, read from just after the opening quote.
+	static bool parse_string_literal(Stream &p_stream, String &r_str, String &r_error);
 };
 
 class VariantWriter {

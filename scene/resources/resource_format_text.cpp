@@ -8,6 +8,7 @@
 
 #include "core/io/file_io.h"
 #include "core/object/class_db.h"
+#include "core/variant/variant_parser.h"
 #include "scene/main/missing_node.h"
 #include "scene/main/node.h"
 #include "scene/resources/resource_format_text_internal.h"
@@ -245,17 +246,38 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 
 // The ids named by SubResource("id") / ExtResource("id") in raw text.
 std::vector<String> _referenced_ids(const String &p_text, const char *p_kind) {
+	// As the parser reads them: blanks (any byte up to ' ') may stand between the name, '(' and the
+	// quoted id, and the id's escapes are resolved (found by fuzz_resource_format_text: a control
+	// character before the quote hid a reference, and the saved file named a sub_resource it lacked).
 	std::vector<String> ids;
-	String needle = String(p_kind) + "(\"";
+	const String kind = p_kind;
+	auto skip_blanks = [&](size_t p_pos) {
+		while (p_pos < p_text.size() && (unsigned char)p_text[p_pos] <= 32) {
+			p_pos++;
+		}
+		return p_pos;
+	};
+	VariantParser::Stream stream; // Copies the text only when it names one.
 	size_t p = 0;
-	while ((p = p_text.find(needle, p)) != String::npos) {
-		p += needle.size();
-		size_t e = p_text.find('"', p);
-		if (e == String::npos) {
+	while ((p = p_text.find(kind, p)) != String::npos) {
+		p = skip_blanks(p + kind.size());
+		if (p >= p_text.size() || p_text[p] != '(') {
+			continue;
+		}
+		p = skip_blanks(p + 1);
+		if (p >= p_text.size() || p_text[p] != '"') {
+			continue;
+		}
+		if (stream.text.empty()) {
+			stream.text = p_text;
+		}
+		stream.pos = p + 1;
+		String id, error;
+		if (!VariantParser::parse_string_literal(stream, id, error)) {
 			break;
 		}
-		ids.push_back(p_text.substr(p, e - p));
-		p = e;
+		ids.push_back(id);
+		p = stream.pos;
 	}
 	return ids;
 }

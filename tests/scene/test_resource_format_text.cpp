@@ -478,6 +478,26 @@ TEST_CASE("[SceneTree][TSCN] Malformed: a sub_resource naming itself is an error
 	CHECK_MESSAGE(err.find("bad.tscn:4: nsform: SubResource(\"M\") refers to the sub_resource it is a property of") == 0, err.c_str());
 }
 
+TEST_CASE("[SceneTree][TSCN] A value kept as text keeps the sub_resources it names, blanks before the id or not") {
+	register_tscn_test_types();
+	// Found by fuzz_resource_format_text (seed regress_kept_text_reference_after_control_char.tscn): a
+	// control character between SubResource( and the quote hid the reference from the saver, so the
+	// saved file named a sub_resource it no longer declared and did not load.
+	for (const char *gap : { "", " ", "\x04", " \t\x01 " }) {
+		const String text = String("[gd_scene format=3]\n\n[sub_resource type=\"TscnTestMaterial\" id=\"M\"]\n\n[node name=\"Root\" type=\"TscnTestNode\"]\nextra = [SubResource(") + gap + "\"M\")]\n";
+		String error;
+		Node *root = ResourceFormatText::load_scene_from_string(text, "kept.tscn", &error);
+		REQUIRE_MESSAGE(root != nullptr, error.c_str());
+		const String saved = ResourceFormatText::save_scene_to_string(root);
+		delete root;
+		CHECK_MESSAGE(saved.find("[sub_resource type=\"TscnTestMaterial\" id=\"M\"]") != String::npos, saved.c_str());
+		Node *again = ResourceFormatText::load_scene_from_string(saved, "kept.tscn", &error);
+		REQUIRE_MESSAGE(again != nullptr, error.c_str());
+		CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
+		delete again;
+	}
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: an empty node type is an error, for the root and for a child") {
 	register_tscn_test_types();
 	// Found by fuzz_resource_format_text (save(load(x)) did not load; seed
