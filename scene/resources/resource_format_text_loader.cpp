@@ -602,12 +602,14 @@ public:
 			bool is_tag = false;
 			size_t start = stream.pos;
 			int start_line = stream.line;
-			{
-				// Peek: a tag starts with '[' after blanks/comments. Tags need the id-only resolver.
-				const size_t p = skip_blanks(stream.pos);
-				is_tag = p < stream.text.size() && stream.text[p] == '[';
-			}
-			if (is_tag || stream.pos >= stream.text.size()) {
+			// Peek: a tag starts with '[' after blanks/comments. Tags need the id-only resolver. A section
+			// kept as text ends before the blanks and comments that follow it: a comment belongs to the
+			// section after it (found by fuzz_resource_format_text: a comment closing the file went with
+			// a kept section, which the saver then wrote before other sections, where the next load gave
+			// the comment to the section after it).
+			const size_t next = skip_blanks(stream.pos);
+			is_tag = next < stream.text.size() && stream.text[next] == '[';
+			if (is_tag || next >= stream.text.size()) {
 				close_tail(stream.pos);
 			}
 			if (!VariantParser::parse_tag_assign_eof(stream, tag, assign, value, err, is_tag ? tag_func : res_func, &eof, &unsupported)) {

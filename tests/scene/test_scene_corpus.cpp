@@ -419,6 +419,18 @@ omni_range = 5.0
 	Node *bad = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n\n[node name=\"R\" type=\"Node6D\"]\n\n[node name=\"A\" type=\"Node3D\" parent=\"P/Q\"]\n\n[node name=\"P\" type=\"Node3D\" parent=\".\"]\n", "pq.tscn", &error);
 	CHECK(bad == nullptr);
 	CHECK(error.find("pq.tscn:5: Parent node \"P/Q\" of node \"A\" does not exist.") == 0);
+	// A comment closing the file is not part of the section kept as text before it (found by the fuzzer:
+	// the saver wrote that section before the unknown one, and the next load gave the comment to that).
+	const String kept = "[gd_scene format=3]\n\n[node name=\"R\" type=\"Node6D\"]\n\n[unknown_section a=1]\n\n[node name=\"K\" type=\"Node3D\" parent=\"Made/By/It\"]\nvisible = false\n; the end\n";
+	Node *first = ResourceFormatText::load_scene_from_string(kept, "kept.tscn", &error);
+	REQUIRE_MESSAGE(first != nullptr, error.c_str());
+	const String kept_saved = ResourceFormatText::save_scene_to_string(first);
+	delete first;
+	CHECK(kept_saved.find("[node name=\"K\"") < kept_saved.find("[unknown_section"));
+	Node *second = ResourceFormatText::load_scene_from_string(kept_saved, "kept.tscn", &error);
+	REQUIRE_MESSAGE(second != nullptr, error.c_str());
+	CHECK(ResourceFormatText::save_scene_to_string(second) == kept_saved);
+	delete second;
 }
 
 } // namespace TestSceneCorpus
