@@ -125,11 +125,11 @@ $(cd "$wt" && git grep -l -F "#include \"$header\"" -- '*.cpp' || true)"
 			keep=1
 			continue
 		fi
-		tests=$(grep -E '^\+\+\+ b/tests/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' | sort -u | sed 's|.*/|*|' | paste -sd, -)
+		tests=$(grep -E '^\+\+\+ b/tests/.*\.cpp$' "$root/$series/$name" | sed 's|^+++ b/||' | sort -u | sed 's|.*/|*|' | paste -sd, - || true)
 		result="built"
 		if [ -n "$tests" ]; then
 			if (cd "$wt" && GODOT_AREA_VALIDATION=1 GODOT_AREA_DEVICE=llvmpipe ./bin/godot-area-tests -sf="$tests" >"$tmp/test_$count.log" 2>&1); then
-				result="built, $(grep -a '^\[doctest\] test cases' "$tmp/test_$count.log" | tail -1)"
+				result="built, $(grep -a '^\[doctest\] test cases' "$tmp/test_$count.log" | tail -1 || true)"
 			else
 				echo "tests fail after $name (-sf=$tests):" >&2
 				grep -a -m10 -E 'ERROR|FAILED|error' "$tmp/test_$count.log" >&2 || true
