@@ -467,6 +467,8 @@ public:
 	bool load_deferred_node(const DeferredNode &p_node) {
 		const size_t saved_pos = stream.pos;
 		const int saved_line = stream.line;
+		const String saved_defining = defining_sub_resource; // The file may end in a [sub_resource].
+		defining_sub_resource = String();
 		stream.pos = p_node.start;
 		stream.line = p_node.start_line;
 		VariantParser::Tag tag;
@@ -502,6 +504,7 @@ public:
 		}
 		stream.pos = saved_pos;
 		stream.line = saved_line;
+		defining_sub_resource = saved_defining;
 		return true;
 	}
 

@@ -419,6 +419,14 @@ omni_range = 5.0
 	Node *bad = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n\n[node name=\"R\" type=\"Node6D\"]\n\n[node name=\"A\" type=\"Node3D\" parent=\"P/Q\"]\n\n[node name=\"P\" type=\"Node3D\" parent=\".\"]\n", "pq.tscn", &error);
 	CHECK(bad == nullptr);
 	CHECK(error.find("pq.tscn:5: Parent node \"P/Q\" of node \"A\" does not exist.") == 0);
+	// Read again after the last section, a node may name a sub_resource declared below it, even when
+	// that sub_resource is the file's last section.
+	Node *late_res = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n\n[node name=\"R\" type=\"Node3D\"]\n\n[node name=\"A\" type=\"MeshInstance3D\" parent=\"B\"]\nmesh = SubResource(\"M\")\n\n[node name=\"B\" type=\"Node3D\" parent=\".\"]\n\n[sub_resource type=\"BoxMesh\" id=\"M\"]\n", "late_res.tscn", &error);
+	REQUIRE_MESSAGE(late_res != nullptr, error.c_str());
+	Node *a = late_res->get_node_or_null("B/A");
+	REQUIRE(a != nullptr);
+	CHECK(a->get("mesh").get_type() == Variant::OBJECT);
+	delete late_res;
 	// A comment closing the file is not part of the section kept as text before it (found by the fuzzer:
 	// the saver wrote that section before the unknown one, and the next load gave the comment to that).
 	const String kept = "[gd_scene format=3]\n\n[node name=\"R\" type=\"Node6D\"]\n\n[unknown_section a=1]\n\n[node name=\"K\" type=\"Node3D\" parent=\"Made/By/It\"]\nvisible = false\n; the end\n";
