@@ -189,6 +189,11 @@ std::vector<std::pair<String, String>> _split_tag(const String &p_raw) {
 		return out;
 	}
 	p++;
+	// Blanks may stand between '[' and the tag's name, as the tag parser reads it (found by
+	// fuzz_resource_format_text: "[\x05ext_resource type=..." was split with the name as the first key).
+	while (p < p_raw.size() && _is_blank(p_raw[p])) {
+		p++;
+	}
 	while (p < p_raw.size() && !_is_blank(p_raw[p]) && p_raw[p] != ']') {
 		p++;
 	}
