@@ -577,7 +577,9 @@ TEST_CASE("[SceneTree][TSCN] A header field right after a quoted value is its ow
 	delete again;
 	// And between '[' and the tag's name (seed regress_control_char_after_bracket.tscn: the split took
 	// the name for the first key and wrote [ext_resource ext_resource="PackedScene" ...]).
-	root = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n[\x05" "ext_resource type=\"PackedScene\" path=\"nowhere.tscn\" id=\"1_x\"]\n[\x01\tnode name=\"R\" type=\"TscnTestNode\" unique_id=7]\n", "field.tscn", &error);
+	root = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n[\x05"
+													  "ext_resource type=\"PackedScene\" path=\"nowhere.tscn\" id=\"1_x\"]\n[\x01\tnode name=\"R\" type=\"TscnTestNode\" unique_id=7]\n",
+			"field.tscn", &error);
 	REQUIRE_MESSAGE(root, error.c_str());
 	const String saved_b = ResourceFormatText::save_scene_to_string(root);
 	delete root;
