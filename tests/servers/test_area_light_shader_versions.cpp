@@ -29,8 +29,9 @@ TEST_CASE("[AreaLight3D][Shadows] area shadow defines of the area version key") 
 	CHECK(RenderForwardClustered::get_area_method_defines(ltc | RenderForwardClustered::AREA_VERSION_SHADOWS_PCF) == "#define AREA_METHOD_LTC\n#define AREA_SHADOWS_PCF\n");
 	CHECK(RenderForwardClustered::get_area_method_defines(ltc | RenderForwardClustered::AREA_VERSION_SHADOWS_PCSS) == "#define AREA_METHOD_LTC\n#define AREA_SHADOWS_PCSS\n");
 	CHECK(RenderForwardClustered::get_area_method_defines(ltc | RenderForwardClustered::AREA_VERSION_SHADOWS_PCF | RenderForwardClustered::AREA_VERSION_SHADOWS_NEAR) == "#define AREA_METHOD_LTC\n#define AREA_SHADOWS_PCF\n#define AREA_SHADOWS_NEAR_LAYER\n");
+	CHECK(RenderForwardClustered::get_area_method_defines(ltc | RenderForwardClustered::AREA_VERSION_SHADOWS_PCF | RenderForwardClustered::AREA_VERSION_SHADOWS_TREE) == "#define AREA_METHOD_LTC\n#define AREA_SHADOWS_PCF\n#define AREA_SHADOWS_TREE\n");
 	// The shadow bits lie above every method bit.
-	CHECK((RenderForwardClustered::AREA_VERSION_METHOD_BITS & (RenderForwardClustered::AREA_VERSION_SHADOWS_PCF | RenderForwardClustered::AREA_VERSION_SHADOWS_PCSS | RenderForwardClustered::AREA_VERSION_SHADOWS_NEAR)) == 0u);
+	CHECK((RenderForwardClustered::AREA_VERSION_METHOD_BITS & (RenderForwardClustered::AREA_VERSION_SHADOWS_PCF | RenderForwardClustered::AREA_VERSION_SHADOWS_PCSS | RenderForwardClustered::AREA_VERSION_SHADOWS_NEAR | RenderForwardClustered::AREA_VERSION_SHADOWS_TREE)) == 0u);
 }
 
 TEST_CASE("[AreaLight3D][Shadows] the near-layer step is compiled in only for a light with a caster close to it") {

@@ -216,6 +216,9 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 	if (p_area_methods & AREA_VERSION_SHADOWS_NEAR) {
 		defines += "#define AREA_SHADOWS_NEAR_LAYER\n";
 	}
+	if (p_area_methods & AREA_VERSION_SHADOWS_TREE) {
+		defines += "#define AREA_SHADOWS_TREE\n";
+	}
 	if (p_area_methods & AREA_VERSION_SHAPES) {
 		defines += "#define USE_AREA_SHAPES\n";
 	}
@@ -256,6 +259,7 @@ uint32_t RenderForwardClustered::_get_area_shadow_version_bits() const {
 		}
 		bits |= (data[i].mode & 0xFFu) == uint32_t(RS::LIGHT_AREA_SHADOW_PCSS_BASELINE) ? AREA_VERSION_SHADOWS_PCSS : AREA_VERSION_SHADOWS_PCF;
 		bits |= (data[i].mode & AreaShadowRendererRD::FLAG_NEAR_LAYER) ? AREA_VERSION_SHADOWS_NEAR : 0u;
+		bits |= (data[i].mode & 0xFFu) == uint32_t(RS::LIGHT_AREA_SHADOW_ADAPTIVE) ? AREA_VERSION_SHADOWS_TREE : 0u; // Only ADAPTIVE packs tree points.
 	}
 	return bits;
 }

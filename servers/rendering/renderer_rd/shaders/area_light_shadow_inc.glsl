@@ -44,11 +44,14 @@
 // Lookups compiled in: AREA_SHADOWS_PCF (grid modes) and/or AREA_SHADOWS_PCSS (PCSS baseline), set by the
 // area version key of RenderForwardClustered from the lights that have maps; with neither, all of them.
 // AREA_SHADOWS_NEAR_LAYER: the per-sample filter's near-layer step (area_shadow_filtered()), when some light
-// has AREA_SHADOW_FLAG_NEAR_LAYER.
+// has AREA_SHADOW_FLAG_NEAR_LAYER; AREA_SHADOWS_TREE: the ADAPTIVE trees' points (AREA_SHADOW_TREE_MAP), when
+// some light is ADAPTIVE. A SIMD rasterizer (llvmpipe) runs untaken branches too: each cost every shadowed
+// frame of the FIXED default 4-8 % (doc/shadows.md "The default").
 #if !defined(AREA_SHADOWS_PCF) && !defined(AREA_SHADOWS_PCSS)
 #define AREA_SHADOWS_PCF
 #define AREA_SHADOWS_PCSS
 #define AREA_SHADOWS_NEAR_LAYER
+#define AREA_SHADOWS_TREE
 #endif
 
 struct AreaShadowData { // std430, 448 bytes.
@@ -81,10 +84,12 @@ layout(set = 0, binding = 15) uniform sampler area_shadow_compare_sampler; // Li
 #define AREA_SHADOW_TREE_MAP 0x80000000u
 
 vec2 area_shadow_map_uv(uint p_packed) {
+#ifdef AREA_SHADOWS_TREE
 	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
 		uint index = (p_packed >> 12u) & 0x7Fu;
 		return vec2(float(index % 9u), float(index / 9u)) * 0.125;
 	}
+#endif
 	float den = float((p_packed >> 20u) & 0xFu);
 	if (den == 0.0) {
 		return vec2(0.5);
@@ -117,12 +122,14 @@ void area_shadow_tree_cell(uint p_packed, out float r_weight, out vec2 r_lo, out
 // Quadrature weight of a map: a tree point's share of the light (area_shadow_tree_cell()), else the
 // trapezoid rule of a regular grid.
 float area_shadow_map_weight(uint p_packed, vec2 p_uv) {
+#ifdef AREA_SHADOWS_TREE
 	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
 		float w;
 		vec2 lo, hi;
 		area_shadow_tree_cell(p_packed, w, lo, hi);
 		return w;
 	}
+#endif
 	vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(p_uv - 0.5), vec2(0.4999)))); // Trapezoid rule.
 	return edge.x * edge.y;
 }
@@ -271,12 +278,15 @@ float area_shadow_pcf(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal, in
 void area_shadow_cell(uint p_packed, vec2 p_uv, vec2 p_half_size, out vec2 r_lo, out vec2 r_hi) {
 	vec2 lo = vec2(0.0);
 	vec2 hi = vec2(1.0);
+#ifdef AREA_SHADOWS_TREE
 	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
 		float w;
 		area_shadow_tree_cell(p_packed, w, lo, hi);
 		lo += p_uv;
 		hi += p_uv;
-	} else {
+	} else
+#endif
+	{
 		float den = float((p_packed >> 20u) & 0xFu);
 		if (den > 0.0) {
 			float c = 1.0 / den;
