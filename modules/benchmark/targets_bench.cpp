@@ -394,6 +394,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 				// The S2 rows with the fixed PCF switch the per-sample penumbra filter off.
 				rs->area_shadow_filter_set_mode(c.sample_filter_off ? RS::AREA_SHADOW_FILTER_PCF : RS::AREA_SHADOW_FILTER_PENUMBRA);
 				rs->draw(); // Discarded.
+				// Frames in flight: wait for the discarded frame before the window opens, so that the window
+				// holds the measured frame alone (it held the rasteriser's work on both, 2 x the GPU time).
+				rs->get_frame_profile();
 				const double cpu0 = process_cpu_ms();
 				rs->draw();
 				// Frames in flight: draw() no longer waits for its own frame; reading the profile does, so the
@@ -478,7 +481,9 @@ bool TargetsBench::run(const Options &p_options, std::vector<Result> *r_results,
 			}
 			ratio("S1", "one 25-map shadowed area light / unshadowed", "SHADOW_25", "SHADOW_OFF", 1.25, true);
 			for (const char *name : { "SHADOW_4", "SHADOW_9", "SHADOW_25", "SHADOW_81", "SHADOW_4_PCF", "SHADOW_9_PCF", "SHADOW_25_PCF" }) {
-				ratio("S2", vformat("%s / the PCSS baseline", name), name, "SHADOW_PCSS", 1.5, String(name) == "SHADOW_4");
+				// Scored: the default grid (issue 19: the default's frame <= 1.5 x the PCSS baseline's).
+				const int default_maps = RS::LIGHT_AREA_SHADOW_GRID_DEFAULT * RS::LIGHT_AREA_SHADOW_GRID_DEFAULT;
+				ratio("S2", vformat("%s / the PCSS baseline", name), name, "SHADOW_PCSS", 1.5, String(name) == vformat("SHADOW_%d", default_maps));
 			}
 			const int demo_index = find("DEMO");
 			if (demo_index >= 0) {

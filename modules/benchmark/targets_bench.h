@@ -9,7 +9,9 @@
 /* scenario with its own viewport; one viewport is active at a time and  */
 /* the configurations are interleaved frame by frame: per round, each     */
 /* configuration draws one frame that is thrown away (first frame after   */
-/* a switch) and one that is measured. Two clocks per measured frame:     */
+/* a switch; waited for before the next one, so with frames in flight    */
+/* none of its work falls in the measured window) and one that is         */
+/* measured. Two clocks per measured frame:                               */
 /*   gpu  the sum of the frame's RD timestamp passes (on lavapipe this    */
 /*        is wall clock);                                                 */
 /*   cpu  process CPU time (CLOCK_PROCESS_CPUTIME_ID) around draw() and   */
@@ -28,6 +30,8 @@
 /*   P5 area-light pairs (pixel, light) listed by the clusters / pairs    */
 /*      the light lights (debug view, counted on the read-back image);   */
 /*   S1 one 25-map (FIXED 5 x 5) shadowed area light / unshadowed;        */
+/*   S2 the same light with 4 / 9 / 25 / 81 maps / its PCSS baseline;     */
+/*      scored: the default grid (issue #19: <= 1.5);                     */
 /*   L2 the two-lobe LTC (LTC_2LOBE) / LTC, 16/64 lights (issue #18:      */
 /*      <= 1.7);                                                          */
 /*   C1 cluster build / opaque pass GPU time, the embedded demo scene.    */

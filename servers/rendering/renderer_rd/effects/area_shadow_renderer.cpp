@@ -373,6 +373,18 @@ static void _hash_transform(uint64_t &r_hash, const Transform3D &p_t) {
 	_hash_bytes(r_hash, f, sizeof(f));
 }
 
+bool AreaShadowRendererRD::caster_in_near_layer(const Transform3D &p_world_from_light, const Vector3 &p_half_extent, float p_reach, const AABB &p_caster) {
+	// The caster's box in light space (a box around the rotated box: never nearer than the caster is).
+	const AABB local = p_world_from_light.affine_inverse().xform(p_caster);
+	const Vector3 lo = local.position;
+	const Vector3 hi = local.position + local.size;
+	Vector3 gap;
+	for (int a = 0; a < 3; a++) {
+		gap[a] = std::max(std::max(lo[a] - p_half_extent[a], -p_half_extent[a] - hi[a]), 0.0f);
+	}
+	return gap.length() < near_layer_reach(p_reach);
+}
+
 void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vector<uint32_t> &p_area_sources, const Transform3D &p_view_from_world, const Projection &p_clip_from_world, RID p_owner) {
 	ERR_FAIL_COND_MSG(!initialized, "AreaShadowRendererRD::prepare: not initialized.");
 	AtlasInstance &inst = _get_atlas_instance(p_owner.get_id());
@@ -519,6 +531,17 @@ void AreaShadowRendererRD::prepare(const RenderSceneData &p_data, const std::vec
 		d.normal_bias = light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_NORMAL_BIAS);
 		d.pcf_radius = std::min(std::max(light_storage->light_get_param(li.light, RS::LIGHT_PARAM_SHADOW_BLUR) * 2.0f, 0.0f), 8.0f);
 		d.mode = uint32_t(mode) | (sample_filter ? FLAG_SAMPLE_FILTER : 0u) | (lf.all_around ? FLAG_ALL_AROUND : 0u);
+		if (sample_filter && mode != RS::LIGHT_AREA_SHADOW_PCSS_BASELINE) {
+			// The near-layer step only where a caster can be in the near layer (a window's bars in front of
+			// the light): elsewhere its code is left out of the shader version.
+			const Vector3 half_extent = lf.all_around ? Vector3(lf.half_length + lf.radius, lf.radius, lf.radius) : Vector3(area_size.x, area_size.y, 0.0f) * 0.5f;
+			for (const RenderSceneData::GeometryInstance *gi : lf.casters) {
+				if (caster_in_near_layer(lf.world_from_light, half_extent, lf.reach, gi->aabb)) {
+					d.mode |= FLAG_NEAR_LAYER;
+					break;
+				}
+			}
+		}
 		frame_lights[lf.key] = lf;
 	}
 	if (surface_fallbacks != surface_warned) {

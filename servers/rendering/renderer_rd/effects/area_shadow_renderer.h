@@ -63,6 +63,17 @@ public:
 	// Sphere or tube: sample points on the surface, each map in front of its point (get_surface_sample());
 	// AreaShadowData::half_size holds the capsule's half length and radius.
 	static constexpr uint32_t FLAG_ALL_AROUND = 0x200;
+	// Some caster is within near_layer_reach() of the light's sample points: the filter's near-layer step
+	// can find a blocker there (RenderForwardClustered::AREA_VERSION_SHADOWS_NEAR compiles it in).
+	static constexpr uint32_t FLAG_NEAR_LAYER = 0x400;
+	// Distance from the light within which a blocker can be in the near layer: the shader's near cut,
+	// d_blocker < d_receiver / (1 + AREA_SHADOW_MAX_K), at the farthest receiver (p_reach), with 25 % spare
+	// for the normal offset.
+	static float near_layer_reach(float p_reach) { return 1.25f * p_reach / (1.0f + NEAR_LAYER_MAX_K); }
+	static constexpr float NEAR_LAYER_MAX_K = 8.0f; // AREA_SHADOW_MAX_K in area_light_shadow_inc.glsl.
+	// True when a caster's world box p_caster lies within near_layer_reach() of the light's emitting extent
+	// (the box of its sample points, light space: p_half_extent about the origin).
+	static bool caster_in_near_layer(const Transform3D &p_world_from_light, const Vector3 &p_half_extent, float p_reach, const AABB &p_caster);
 	// Smallest grid of a sphere or tube light: a 2 x 2 grid's points are the two poles, a 3 x 3's lie on one
 	// great circle, so some receivers would face none of them.
 	static constexpr uint32_t MIN_SURFACE_GRID = 5;

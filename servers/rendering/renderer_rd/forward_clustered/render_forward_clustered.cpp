@@ -213,6 +213,12 @@ String RenderForwardClustered::get_area_method_defines(uint32_t p_area_methods) 
 	if (p_area_methods & AREA_VERSION_SHADOWS_PCSS) {
 		defines += "#define AREA_SHADOWS_PCSS\n";
 	}
+	if (p_area_methods & AREA_VERSION_SHADOWS_NEAR) {
+		defines += "#define AREA_SHADOWS_NEAR_LAYER\n";
+	}
+	if (p_area_methods & AREA_VERSION_SHADOWS_TREE) {
+		defines += "#define AREA_SHADOWS_TREE\n";
+	}
 	if (p_area_methods & AREA_VERSION_SHAPES) {
 		defines += "#define USE_AREA_SHAPES\n";
 	}
@@ -252,6 +258,8 @@ uint32_t RenderForwardClustered::_get_area_shadow_version_bits() const {
 			continue; // Unshadowed (the shader's visibility is 1 without a lookup).
 		}
 		bits |= (data[i].mode & 0xFFu) == uint32_t(RS::LIGHT_AREA_SHADOW_PCSS_BASELINE) ? AREA_VERSION_SHADOWS_PCSS : AREA_VERSION_SHADOWS_PCF;
+		bits |= (data[i].mode & AreaShadowRendererRD::FLAG_NEAR_LAYER) ? AREA_VERSION_SHADOWS_NEAR : 0u;
+		bits |= (data[i].mode & 0xFFu) == uint32_t(RS::LIGHT_AREA_SHADOW_ADAPTIVE) ? AREA_VERSION_SHADOWS_TREE : 0u; // Only ADAPTIVE packs tree points.
 	}
 	return bits;
 }
@@ -292,7 +300,7 @@ String RenderForwardClustered::get_scene_version_defines(uint32_t p_key) {
 }
 
 RID RenderForwardClustered::_get_version_shader(uint32_t p_key, SceneShaderVariant p_variant) {
-	const uint32_t area_bits = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE;
+	const uint32_t area_bits = AREA_VERSION_ALL_BITS;
 	const uint32_t valid_bits = area_bits | SCENE_VERSION_FEATURE_BITS;
 	const bool has_area = (p_key & AREA_VERSION_METHOD_BITS) != 0;
 	ERR_FAIL_COND_V_MSG((p_key & ~valid_bits) != 0 || (!has_area && (p_key & area_bits) != 0), RID(),

@@ -269,6 +269,14 @@ public:
 	// HEURISTIC, ADAPTIVE); PCSS: some light has its PCSS_BASELINE map. Neither: no shadow code at all.
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCF = 1u << 8;
 	static constexpr uint32_t AREA_VERSION_SHADOWS_PCSS = 1u << 9;
+	// "#define AREA_SHADOWS_NEAR_LAYER\n": some grid-mode light has a caster close enough to its sample points
+	// for the filter's near-layer step (AreaShadowRendererRD::FLAG_NEAR_LAYER). Without it the step's code is
+	// not compiled: a SIMD rasterizer (llvmpipe) paid 7-10 % of every shadowed frame for it untaken.
+	static constexpr uint32_t AREA_VERSION_SHADOWS_NEAR = 1u << 17;
+	// "#define AREA_SHADOWS_TREE\n": some light is ADAPTIVE (its maps are tree points with their own cells,
+	// AreaShadowRendererRD::pack_tree_map()); a view of grid lights compiles no tree code (it cost the FIXED
+	// default 4 % of its shadowed frame on llvmpipe).
+	static constexpr uint32_t AREA_VERSION_SHADOWS_TREE = 1u << 18;
 	// USE_AREA_SHAPES: some area light of the view is a disk, sphere or tube (area_light_shapes_inc.glsl);
 	// a view of rectangles only compiles no shape code.
 	static constexpr uint32_t AREA_VERSION_SHAPES = 1u << 16;
@@ -277,7 +285,7 @@ public:
 	static constexpr uint32_t AREA_VERSION_TEXTURE = 1u << 13;
 	static constexpr uint32_t AREA_VERSION_METHOD_BITS = (1u << RS::LIGHT_AREA_SHADING_MAX) - 1u;
 	// Every bit that only area-light code reads (methods, area shadows, shapes, area_texture).
-	static constexpr uint32_t AREA_VERSION_ALL_BITS = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE;
+	static constexpr uint32_t AREA_VERSION_ALL_BITS = AREA_VERSION_METHOD_BITS | AREA_VERSION_SHADOWS_PCF | AREA_VERSION_SHADOWS_PCSS | AREA_VERSION_SHADOWS_NEAR | AREA_VERSION_SHADOWS_TREE | AREA_VERSION_SHAPES | AREA_VERSION_TEXTURE;
 	static_assert(RS::LIGHT_AREA_SHADING_MAX <= 8, "The area version key keeps the shading methods in bits 0-7.");
 	// The AREA_METHOD_* defines of a method mask ("#define AREA_METHOD_LTC\n..."), as given to ShaderRD; with
 	// AREA_VERSION_SHADOWS_PCF / _PCSS also "#define AREA_SHADOWS_PCF\n" / "#define AREA_SHADOWS_PCSS\n".

@@ -30,6 +30,7 @@
 #define AREA_SHADOW_MODE_MASK 0xFFu
 #define AREA_SHADOW_FLAG_SAMPLE_FILTER 0x100u // mode bit: per-sample penumbra filter (else the fixed PCF).
 #define AREA_SHADOW_FLAG_ALL_AROUND 0x200u // mode bit: sphere or tube, sample points on its surface (half_size: half length, radius).
+#define AREA_SHADOW_FLAG_NEAR_LAYER 0x400u // mode bit: a caster is close enough for the near layer (read by the C++ version key).
 // Blocker search reach: blockers nearer the sample than d_receiver / (1 + this) are searched only partly.
 #define AREA_SHADOW_SEARCH_K 2.0
 #define AREA_SHADOW_MAX_K 8.0
@@ -41,10 +42,16 @@
 #define AREA_SHADOW_NEAR_DEPTH 1.5
 
 // Lookups compiled in: AREA_SHADOWS_PCF (grid modes) and/or AREA_SHADOWS_PCSS (PCSS baseline), set by the
-// area version key of RenderForwardClustered from the lights that have maps; with neither, both.
+// area version key of RenderForwardClustered from the lights that have maps; with neither, all of them.
+// AREA_SHADOWS_NEAR_LAYER: the per-sample filter's near-layer step (area_shadow_filtered()), when some light
+// has AREA_SHADOW_FLAG_NEAR_LAYER; AREA_SHADOWS_TREE: the ADAPTIVE trees' points (AREA_SHADOW_TREE_MAP), when
+// some light is ADAPTIVE. A SIMD rasterizer (llvmpipe) runs untaken branches too: each cost every shadowed
+// frame of the FIXED default 4-8 % (doc/shadows.md "The default").
 #if !defined(AREA_SHADOWS_PCF) && !defined(AREA_SHADOWS_PCSS)
 #define AREA_SHADOWS_PCF
 #define AREA_SHADOWS_PCSS
+#define AREA_SHADOWS_NEAR_LAYER
+#define AREA_SHADOWS_TREE
 #endif
 
 struct AreaShadowData { // std430, 448 bytes.
@@ -77,10 +84,12 @@ layout(set = 0, binding = 15) uniform sampler area_shadow_compare_sampler; // Li
 #define AREA_SHADOW_TREE_MAP 0x80000000u
 
 vec2 area_shadow_map_uv(uint p_packed) {
+#ifdef AREA_SHADOWS_TREE
 	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
 		uint index = (p_packed >> 12u) & 0x7Fu;
 		return vec2(float(index % 9u), float(index / 9u)) * 0.125;
 	}
+#endif
 	float den = float((p_packed >> 20u) & 0xFu);
 	if (den == 0.0) {
 		return vec2(0.5);
@@ -113,12 +122,14 @@ void area_shadow_tree_cell(uint p_packed, out float r_weight, out vec2 r_lo, out
 // Quadrature weight of a map: a tree point's share of the light (area_shadow_tree_cell()), else the
 // trapezoid rule of a regular grid.
 float area_shadow_map_weight(uint p_packed, vec2 p_uv) {
+#ifdef AREA_SHADOWS_TREE
 	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
 		float w;
 		vec2 lo, hi;
 		area_shadow_tree_cell(p_packed, w, lo, hi);
 		return w;
 	}
+#endif
 	vec2 edge = mix(vec2(1.0), vec2(0.5), vec2(greaterThan(abs(p_uv - 0.5), vec2(0.4999)))); // Trapezoid rule.
 	return edge.x * edge.y;
 }
@@ -267,12 +278,15 @@ float area_shadow_pcf(uint p_light, uint p_packed, vec3 p_pos, vec3 p_normal, in
 void area_shadow_cell(uint p_packed, vec2 p_uv, vec2 p_half_size, out vec2 r_lo, out vec2 r_hi) {
 	vec2 lo = vec2(0.0);
 	vec2 hi = vec2(1.0);
+#ifdef AREA_SHADOWS_TREE
 	if ((p_packed & AREA_SHADOW_TREE_MAP) != 0u) {
 		float w;
 		area_shadow_tree_cell(p_packed, w, lo, hi);
 		lo += p_uv;
 		hi += p_uv;
-	} else {
+	} else
+#endif
+	{
 		float den = float((p_packed >> 20u) & 0xFu);
 		if (den > 0.0) {
 			float c = 1.0 / den;
@@ -352,6 +366,9 @@ void area_shadow_blocker_search(uint p_light, uint p_packed, vec3 p_v, vec3 p_no
 // in front of the light is), blocked by surfaces up to p_near.y; the march then ignores those surfaces. The
 // near step uses the whole cell (the march's offsets are p_facing times it) and the direction to p + k delta
 // itself, not slid onto the receiver: the test is exact for any receiver orientation.
+// The near layer's code is compiled only with AREA_SHADOWS_NEAR_LAYER (some light of the view has a caster
+// close enough to it, AreaShadowRendererRD::FLAG_NEAR_LAYER): a SIMD rasterizer (llvmpipe) runs untaken
+// branches too, and the untaken step cost every shadowed frame 7-10 % (doc/shadows.md "The default").
 float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal, vec2 p_lo, vec2 p_hi, float p_facing, vec2 p_shift, vec2 p_ratio, vec2 p_near, float p_min_k, int p_taps, float p_bias_texels, float p_texel_per_m) {
 	float scale = area_shadows.data[p_light].depth_scale;
 	float atlas_texel = area_shadows.data[p_light].atlas_texel;
@@ -363,12 +380,14 @@ float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal,
 			vec2 cell_delta = mix(p_lo, p_hi, f);
 			vec2 delta = cell_delta * p_facing;
 			float tap = 1.0;
+#ifdef AREA_SHADOWS_NEAR_LAYER
 			if (p_near.x > 0.0) {
 				vec3 x = p_v + vec3(cell_delta * (1.0 / p_near.x - 1.0), 0.0);
 				if (x.z < 0.0) {
 					tap = textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel, length(x) * p_near.y * scale), 0.0);
 				}
 			}
+#endif
 			for (int m = 0; m < AREA_SHADOW_MARCH_STEPS; m++) {
 				// Step m covers ratios up to its end (a surface anywhere before it blocks).
 				float t0 = float(m) / float(AREA_SHADOW_MARCH_STEPS);
@@ -384,9 +403,11 @@ float area_shadow_filtered(uint p_light, uint p_packed, vec3 p_v, vec3 p_normal,
 				float receiver = (d * r_end - d * p_texel_per_m * p_bias_texels) * scale;
 				vec2 pixel = area_shadow_atlas_pixel(p_light, p_packed, x) * atlas_texel;
 				float step_lit = textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(pixel, receiver), 0.0);
+#ifdef AREA_SHADOWS_NEAR_LAYER
 				if (p_near.x > 0.0) { // Texels of the near layer do not block here (the near step judged them).
 					step_lit = min(step_lit + 1.0 - textureLod(sampler2DShadow(area_shadow_atlas, area_shadow_compare_sampler), vec3(pixel, d * p_near.y * scale), 0.0), 1.0);
 				}
+#endif
 				tap = min(tap, step_lit);
 			}
 			lit += tap;
@@ -501,10 +522,12 @@ float area_shadow_sample_filtered(uint p_light, uint p_count, vec3 p_pos, vec3 p
 	// AREA_SHADOW_NEAR_DEPTH times its distance (a bar's thickness), at most to the march's first ratio.
 	float near_cut = 1.0 / (1.0 + AREA_SHADOW_MAX_K);
 	vec2 near = vec2(0.0);
+#ifdef AREA_SHADOWS_NEAR_LAYER
 	if (ratio.x < near_cut) {
 		near.x = max(ratio.x, 1.0 / (1.0 + AREA_SHADOW_NEAR_MAX_K));
 		near.y = min(near.x * AREA_SHADOW_NEAR_DEPTH, near_cut);
 	}
+#endif
 	ratio = clamp(ratio, vec2(near_cut), vec2(1.0));
 	float min_blur = area_shadows.data[p_light].pcf_radius;
 	float visibility = 0.0;
