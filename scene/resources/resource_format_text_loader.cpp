@@ -617,10 +617,17 @@ public:
 			}
 			if (!VariantParser::parse_tag_assign_eof(stream, tag, assign, value, err, is_tag ? tag_func : res_func, &eof, &unsupported)) {
 				if (tail_start != String::npos && !is_tag) {
-					// A property of a kept section that we cannot parse: keep the text.
-					while (stream.pos < stream.text.size() && stream.text[stream.pos] != '\n') {
-						stream.pos++;
+					// A property of a kept section that we cannot parse: its line is kept as text and reading
+					// goes on with the next line, however far the parser read (an unclosed '[' reads on into
+					// the next lines). So a kept section ends where it ends whatever follows it in the file,
+					// as the saver writes it elsewhere (found by fuzz_resource_format_text: a failed value
+					// swallowed a broken tag line in one place and not in the other).
+					size_t p = next;
+					stream.line = start_line + (int)std::count(stream.text.begin() + start, stream.text.begin() + p, '\n');
+					while (p < stream.text.size() && stream.text[p] != '\n') {
+						p++;
 					}
+					stream.pos = p;
 					continue;
 				}
 				return fail(stream.line, err);

@@ -498,6 +498,29 @@ TEST_CASE("[SceneTree][TSCN] A value kept as text keeps the sub_resources it nam
 	}
 }
 
+TEST_CASE("[SceneTree][TSCN] A value that fails in a section kept as text costs its own line, not the next section") {
+	register_tscn_test_types();
+	// An unclosed '[' reads on into the next lines; the kept section used to swallow the [node] after it
+	// (the node was lost into kept text), and where the save moved the section the next load differed
+	// (found by fuzz_resource_format_text, seed regress_kept_value_reads_into_next_tag.tscn).
+	const String text = "[gd_scene format=3]\n\n[node name=\"R\" type=\"TscnTestNode\"]\n\n[unknown_section a=1]\nx = [1,\n[node name=\"A\" type=\"TscnTestNode\" parent=\".\"]\n";
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(text, "kept.tscn", &error);
+	REQUIRE_MESSAGE(root != nullptr, error.c_str());
+	CHECK(root->get_node_or_null("A") != nullptr);
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	delete root;
+	CHECK_MESSAGE(saved.find("x = [1,") != String::npos, saved.c_str());
+	Node *again = ResourceFormatText::load_scene_from_string(saved, "kept.tscn", &error);
+	REQUIRE_MESSAGE(again != nullptr, error.c_str());
+	CHECK(again->get_node_or_null("A") != nullptr);
+	CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
+	delete again;
+	// A broken tag line after such a value is an error at its own line, wherever the section stands.
+	String err = load_error(text + "\n[unknown_section b=2]\nx = [2,\n[node\xdc\xdc]\n");
+	CHECK_MESSAGE(err.find("bad.tscn:11:") == 0, err.c_str());
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: an empty node type is an error, for the root and for a child") {
 	register_tscn_test_types();
 	// Found by fuzz_resource_format_text (save(load(x)) did not load; seed
