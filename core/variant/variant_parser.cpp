@@ -818,6 +818,23 @@ String VariantWriter::escape_string(const String &p_string) {
 	return out + "\"";
 }
 
+String VariantWriter::escape_tag_string(const String &p_string) {
+	String out = "\"";
+	for (char c : p_string) {
+		if (c == '\n') {
+			out += "\\n";
+		} else if (c == '\r') {
+			out += "\\r";
+		} else {
+			if (c == '"' || c == '\\') {
+				out += '\\';
+			}
+			out += c;
+		}
+	}
+	return out + "\"";
+}
+
 String VariantWriter::write_to_string(const Variant &p_value, const ObjectEncoder &p_encoder) {
 	switch (p_value.get_type()) {
 		case Variant::NIL:

@@ -84,6 +84,7 @@ public:
 	// Godot's real_t properties are), and always has a '.' or exponent.
 	static String write_to_string(const Variant &p_value, const ObjectEncoder &p_encoder = nullptr);
 	static String escape_string(const String &p_string); // Adds quotes.
+	static String escape_tag_string(const String &p_string); // escape_string with line breaks as \n, \r: a header is one line.
 	static String float_to_string(double p_value); // "1.5", "2.0", "inf", "inf_neg", "nan".
 	static String real_to_string(double p_value); // Component form: "1", "0.5".
 };

@@ -344,11 +344,11 @@ String ResourceFormatText::save_scene_to_string(const Node *p_root) {
 		if (!e.fields.empty()) {
 			out += "[ext_resource" + _write_fields(e.fields) + "]\n";
 		} else {
-			out += "[ext_resource type=" + VariantWriter::escape_string(e.type) + " path=" + VariantWriter::escape_string(e.path) + " id=" + VariantWriter::escape_string(e.id) + "]\n";
+			out += "[ext_resource type=" + VariantWriter::escape_tag_string(e.type) + " path=" + VariantWriter::escape_tag_string(e.path) + " id=" + VariantWriter::escape_tag_string(e.id) + "]\n";
 		}
 	}
 	for (const Ref<Resource> &res : state.sub_list) {
-		out += "\n[sub_resource type=" + VariantWriter::escape_string(SaveState::class_of(res.ptr())) + " id=" + VariantWriter::escape_string(state.sub_ids[res.ptr()]);
+		out += "\n[sub_resource type=" + VariantWriter::escape_tag_string(SaveState::class_of(res.ptr())) + " id=" + VariantWriter::escape_tag_string(state.sub_ids[res.ptr()]);
 		if (const TextSceneData *d = _data_or_null(res.ptr())) {
 			out += _write_fields(d->header_fields);
 		}
@@ -363,21 +363,21 @@ String ResourceFormatText::save_scene_to_string(const Node *p_root) {
 		if (o.override_only && props.empty() && !(d && d->override_section)) {
 			continue; // An instanced node nothing changed.
 		}
-		out += "\n[node name=" + VariantWriter::escape_string(n->get_name());
+		out += "\n[node name=" + VariantWriter::escape_tag_string(n->get_name());
 		bool is_instance = d && !d->inherited && !d->instance_path.empty();
 		String type = SaveState::class_of(n);
 		if (!o.override_only && !is_instance && !type.empty()) {
-			out += " type=" + VariantWriter::escape_string(type);
+			out += " type=" + VariantWriter::escape_tag_string(type);
 		}
 		if (n != p_root) {
 			String parent = n->get_parent() == p_root ? String(".") : _relative_path(p_root, n->get_parent());
-			out += " parent=" + VariantWriter::escape_string(parent);
+			out += " parent=" + VariantWriter::escape_tag_string(parent);
 		}
 		if (d) {
 			out += _write_fields(d->header_fields);
 		}
 		if (is_instance) {
-			out += " instance=ExtResource(" + VariantWriter::escape_string(state.ext_id_for(d->instance_path, "PackedScene")) + ")";
+			out += " instance=ExtResource(" + VariantWriter::escape_tag_string(state.ext_id_for(d->instance_path, "PackedScene")) + ")";
 		}
 		out += "]\n" + props;
 	}

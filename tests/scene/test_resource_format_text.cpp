@@ -521,6 +521,24 @@ TEST_CASE("[SceneTree][TSCN] A value that fails in a section kept as text costs 
 	CHECK_MESSAGE(err.find("bad.tscn:11:") == 0, err.c_str());
 }
 
+TEST_CASE("[SceneTree][TSCN] A line break in a header's string is written escaped: a header is one line") {
+	register_tscn_test_types();
+	// Found by fuzz_resource_format_text (seed regress_line_break_in_header_string.tscn): type="Pl\neMesh"
+	// made a placeholder whose class held a line break, written raw, and the header no longer loaded.
+	const String text = "[gd_scene format=3]\n\n[sub_resource type=\"Pl\\neMesh\" id=\"M\"]\n\n[node name=\"R\" type=\"TscnTestNode\"]\nextra = [SubResource(\"M\")]\n\n[node name=\"C\" type=\"Od\\nd\" parent=\".\"]\n";
+	String error;
+	Node *root = ResourceFormatText::load_scene_from_string(text, "esc.tscn", &error);
+	REQUIRE_MESSAGE(root != nullptr, error.c_str());
+	const String saved = ResourceFormatText::save_scene_to_string(root);
+	delete root;
+	CHECK_MESSAGE(saved.find("[sub_resource type=\"Pl\\neMesh\"") != String::npos, saved.c_str());
+	CHECK_MESSAGE(saved.find("type=\"Od\\nd\"") != String::npos, saved.c_str());
+	Node *again = ResourceFormatText::load_scene_from_string(saved, "esc.tscn", &error);
+	REQUIRE_MESSAGE(again != nullptr, error.c_str());
+	CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
+	delete again;
+}
+
 TEST_CASE("[SceneTree][TSCN] Malformed: an empty node type is an error, for the root and for a child") {
 	register_tscn_test_types();
 	// Found by fuzz_resource_format_text (save(load(x)) did not load; seed
