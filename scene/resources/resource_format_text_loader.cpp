@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <deque>
+#include <map>
 #include <sstream>
 
 using namespace ResourceFormatTextInternal;
@@ -464,7 +466,8 @@ public:
 	}
 
 	// Reads a deferred [node] section again, now that its parent is loaded.
-	bool load_deferred_node(const DeferredNode &p_node) {
+	bool load_deferred_node(const DeferredNode &p_node, Node *&r_node) {
+		r_node = nullptr;
 		const size_t saved_pos = stream.pos;
 		const int saved_line = stream.line;
 		const String saved_defining = defining_sub_resource; // The file may end in a [sub_resource].
@@ -487,6 +490,7 @@ public:
 		if (!handle_node_tag(tag, section_text(p0, stream.pos), target)) {
 			return false;
 		}
+		r_node = Object::cast_to<Node>(target);
 		while (target && skip_blanks(stream.pos) < p_node.end) {
 			const size_t start = stream.pos;
 			String assign;
@@ -510,30 +514,61 @@ public:
 
 	// The [node] sections read before their parent: each is loaded under the parent once that exists
 	// (a warning: Godot expects the parent first); one whose parent an instance may make (a glTF's
-	// skeleton...) and does not is kept as text and written back on save; any other is an error.
+	// skeleton...) and does not is kept as text and written back on save; any other is an error. Each
+	// waits on its parent's path and is woken when a node at or above that path is loaded, so a file
+	// that declares a long chain child first loads in time linear in its sections, not quadratic.
 	bool resolve_deferred_nodes() {
-		bool progress = true;
-		while (progress && !deferred_nodes.empty()) {
-			progress = false;
-			for (size_t i = 0; i < deferred_nodes.size();) {
-				const DeferredNode node = deferred_nodes[i];
-				if (!root->get_node_or_null(node.parent_path)) {
-					i++;
-					continue;
-				}
-				deferred_nodes.erase(deferred_nodes.begin() + i);
-				orphan = false;
-				if (!load_deferred_node(node)) {
-					return false;
-				}
-				if (orphan) {
-					return fail(node.tag_line, vformat("Could not add node \"%s\" to \"%s\".", node.name.c_str(), node.parent_path.c_str()));
-				}
-				problem(node.tag_line, "late:" + node.parent_path + "/" + node.name, vformat("Node \"%s\" comes before its parent \"%s\" in the file (Godot expects the parent first): loaded under it, and saved after it.", node.name.c_str(), node.parent_path.c_str()));
-				progress = true;
+		if (deferred_nodes.empty()) {
+			return true;
+		}
+		std::map<String, std::vector<size_t>> waiting; // Parent path -> deferred sections, in file order.
+		std::deque<size_t> ready;
+		for (size_t i = 0; i < deferred_nodes.size(); i++) {
+			if (root->get_node_or_null(deferred_nodes[i].parent_path)) {
+				ready.push_back(i);
+			} else {
+				waiting[deferred_nodes[i].parent_path].push_back(i);
 			}
 		}
-		for (const DeferredNode &node : deferred_nodes) {
+		std::vector<bool> loaded(deferred_nodes.size(), false);
+		while (!ready.empty()) {
+			const DeferredNode &node = deferred_nodes[ready.front()];
+			loaded[ready.front()] = true;
+			ready.pop_front();
+			orphan = false;
+			Node *made = nullptr;
+			if (!load_deferred_node(node, made)) {
+				return false;
+			}
+			if (orphan || !made) {
+				return fail(node.tag_line, vformat("Could not add node \"%s\" to \"%s\".", node.name.c_str(), node.parent_path.c_str()));
+			}
+			problem(node.tag_line, "late:" + node.parent_path + "/" + node.name, vformat("Node \"%s\" comes before its parent \"%s\" in the file (Godot expects the parent first): loaded under it, and saved after it.", node.name.c_str(), node.parent_path.c_str()));
+			// Wake the sections waiting on this node's path, and, when it came with children (an
+			// instance), those waiting on a path below it that now exists.
+			const String path = _relative_path(root, made);
+			auto exact = waiting.find(path);
+			if (exact != waiting.end()) {
+				ready.insert(ready.end(), exact->second.begin(), exact->second.end());
+				waiting.erase(exact);
+			}
+			if (made->get_child_count() > 0) {
+				const String prefix = path + "/";
+				for (auto it = waiting.lower_bound(prefix); it != waiting.end() && it->first.compare(0, prefix.size(), prefix) == 0;) {
+					if (root->get_node_or_null(it->first)) {
+						ready.insert(ready.end(), it->second.begin(), it->second.end());
+						it = waiting.erase(it);
+					} else {
+						++it;
+					}
+				}
+			}
+		}
+		for (size_t i = 0; i < deferred_nodes.size(); i++) {
+			if (loaded[i]) {
+				continue;
+			}
+			const DeferredNode &node = deferred_nodes[i];
 			if (!under_instance(node.parent_path)) {
 				return fail(node.tag_line, vformat("Parent node \"%s\" of node \"%s\" does not exist.", node.parent_path.c_str(), node.name.c_str()));
 			}

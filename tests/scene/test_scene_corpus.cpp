@@ -23,6 +23,7 @@
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
+#include <vector>
 
 namespace TestSceneCorpus {
 
@@ -409,6 +410,22 @@ omni_range = 5.0
 	CHECK(capture.count("comes before its parent") == 0);
 	CHECK(ResourceFormatText::save_scene_to_string(again) == saved);
 	delete again;
+	// A chain declared deepest first: each waits on its parent's path and is woken when that is loaded
+	// (rechecking every waiting path after each node made a 2,000-deep chain take 100 s).
+	String chain = "[gd_scene format=3]\n\n[node name=\"R\" type=\"Node3D\"]\n";
+	String chain_path = "N0";
+	std::vector<String> chain_parents = { "." };
+	for (int i = 1; i < 64; i++) {
+		chain_parents.push_back(chain_path);
+		chain_path += "/N" + itos(i);
+	}
+	for (int i = 63; i >= 0; i--) {
+		chain += "\n[node name=\"N" + itos(i) + "\" type=\"Node3D\" parent=\"" + chain_parents[i] + "\"]\n";
+	}
+	Node *deep = ResourceFormatText::load_scene_from_string(chain, "chain.tscn", &error);
+	REQUIRE_MESSAGE(deep != nullptr, error.c_str());
+	CHECK(deep->get_node_or_null(chain_path) != nullptr);
+	delete deep;
 	// The same under a root of a known type (an error before: the parent did not exist yet).
 	Node *known = ResourceFormatText::load_scene_from_string("[gd_scene format=3]\n\n[node name=\"R\" type=\"Node3D\"]\n\n[node name=\"A\" type=\"Node3D\" parent=\"B\"]\n\n[node name=\"B\" type=\"Node3D\" parent=\".\"]\n", "known.tscn", &error);
 	REQUIRE_MESSAGE(known != nullptr, error.c_str());
